@@ -1,0 +1,99 @@
+// Baseline comparison for Tyndall's rendering tests. Header only; not part
+// of the library.
+//
+// VTK's vtkRegressionTestImage forgives per-pixel differences below a
+// threshold (after averaging and shifting), which lets soft images such as
+// clouds change visibly and still pass. Tyndall's rendering tests therefore
+// run VTK's comparison (for the standard -V/-T handling and dashboard
+// output) and also require a minimum PSNR of the whole RGB image against the
+// same baseline.
+#ifndef TyndallTestImage_h
+#define TyndallTestImage_h
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkTesting.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+namespace tyndall_test
+{
+// PSNR in dB of two 8-bit images over their first three components; -1 when
+// their sizes or component counts differ, +inf when they are identical.
+inline double PSNR(vtkImageData* a, vtkImageData* b)
+{
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  if (da[0] != db[0] || da[1] != db[1] || a->GetNumberOfScalarComponents() < 3 ||
+    b->GetNumberOfScalarComponents() < 3 || a->GetScalarType() != VTK_UNSIGNED_CHAR ||
+    b->GetScalarType() != VTK_UNSIGNED_CHAR)
+  {
+    return -1.0;
+  }
+  const int ca = a->GetNumberOfScalarComponents(), cb = b->GetNumberOfScalarComponents();
+  const auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
+  const auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
+  const size_t n = static_cast<size_t>(da[0]) * da[1];
+  double sum = 0.0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = double(pa[i * ca + c]) - double(pb[i * cb + c]);
+      sum += d * d;
+    }
+  }
+  const double mse = sum / (3.0 * n);
+  return mse == 0.0 ? std::numeric_limits<double>::infinity()
+                    : 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+// VTK's regression test plus a PSNR floor against the same baseline.
+// Returns vtkRegressionTester's result codes (FAILED, PASSED, DO_INTERACTOR).
+inline int RegressionTestWithPSNR(int argc, char* argv[], vtkRenderWindow* window, double minPSNR)
+{
+  const int vtkResult = vtkRegressionTestImage(window);
+  if (vtkResult != vtkTesting::PASSED)
+  {
+    return vtkResult;
+  }
+  vtkNew<vtkTesting> testing;
+  for (int i = 0; i < argc; ++i)
+  {
+    testing->AddArgument(argv[i]);
+  }
+  if (!testing->IsValidImageSpecified())
+  {
+    return vtkResult;
+  }
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(testing->GetValidImageFileName());
+  reader->Update();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  const double psnr = PSNR(grab->GetOutput(), reader->GetOutput());
+  std::cout << "<DartMeasurement name=\"PSNR\" type=\"numeric/double\">" << psnr
+            << "</DartMeasurement>" << std::endl;
+  std::cout << "PSNR against the baseline: " << psnr << " dB (floor " << minPSNR << " dB)"
+            << std::endl;
+  if (!(psnr >= minPSNR))
+  {
+    std::cerr << "Failed Image Test: PSNR " << psnr << " dB is below " << minPSNR << " dB"
+              << std::endl;
+    return vtkTesting::FAILED;
+  }
+  return vtkResult;
+}
+}
+
+#endif
