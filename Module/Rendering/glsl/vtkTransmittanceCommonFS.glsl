@@ -1,0 +1,148 @@
+//VTK::System::Dec
+// Tyndall: functions shared by the map-build and ray-cast fragment shaders.
+// Formulas: Documentation/rendering-model.md. The CPU twins live in
+// vtkTransmittanceMapMath (Tyndall::Core) and vtkSingleScatteringReference.
+
+#define TYNDALL_MAX_LIGHTS 8
+#define TYNDALL_MAX_COEFFICIENTS 16
+#define TYNDALL_PI 3.14159265358979
+
+// Transmittance methods (vtkTransmittanceMapMath::TransmittanceMethods).
+#define TYNDALL_NONE 0
+#define TYNDALL_BRUTE_FORCE 1
+#define TYNDALL_TFM 2
+#define TYNDALL_ADAPTIVE_TFM 3
+#define TYNDALL_ETM 4
+#define TYNDALL_ADAPTIVE_ETM 5
+
+// The medium: scalars in a 3-D texture, transfer functions in a 2-D table
+// (row 0: rgb = colour or albedo, a = extinction per unit length before the
+// density scale; row 1: rgb = emission colour).
+uniform sampler3D volumeTexture;
+uniform sampler2D transferTexture;
+uniform mat4 worldToVolume;  // world -> normalised volume space [0,1]^3
+uniform vec3 volumeTexScale; // normalised volume space -> texture coordinates
+uniform vec3 volumeTexShift;
+uniform vec2 scalarToTable; // table coordinate = value * x + y
+uniform float densityScale;
+
+// Light frusta: texel (a, b) in [0,1]^2 is the ray origin(a, b) + t dir(a, b).
+// Directional: origin = lightOrigin + a * lightAxisX + b * lightAxisY,
+// dir = lightAxisZ. Positional: origin = lightOrigin, dir =
+// normalize(lightAxisZ + (2a - 1) lightAxisX + (2b - 1) lightAxisY).
+uniform int lightPositional[TYNDALL_MAX_LIGHTS];
+uniform vec3 lightOrigin[TYNDALL_MAX_LIGHTS];
+uniform vec3 lightAxisX[TYNDALL_MAX_LIGHTS];
+uniform vec3 lightAxisY[TYNDALL_MAX_LIGHTS];
+uniform vec3 lightAxisZ[TYNDALL_MAX_LIGHTS];
+
+// Ray (world) against the volume's box: returns (t_in, t_out); t_in > t_out
+// when the ray misses. worldToVolume is affine, so t stays a world distance.
+vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
+{
+  vec3 o = (worldToVolume * vec4(origin, 1.0)).xyz;
+  vec3 d = (worldToVolume * vec4(dir, 0.0)).xyz;
+  vec3 invD = 1.0 / d; // IEEE: +-inf for zero components
+  vec3 t0 = (vec3(0.0) - o) * invD;
+  vec3 t1 = (vec3(1.0) - o) * invD;
+  vec3 tMin = min(t0, t1);
+  vec3 tMax = max(t0, t1);
+  return vec2(max(max(tMin.x, tMin.y), tMin.z), min(min(tMax.x, tMax.y), tMax.z));
+}
+
+// Extinction (density scale applied) and colour at a world point.
+float tyndallExtinction(vec3 x, out vec3 color)
+{
+  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
+  float value = texture(volumeTexture, q * volumeTexScale + volumeTexShift).r;
+  vec4 tf = texture(transferTexture, vec2(value * scalarToTable.x + scalarToTable.y, 0.25));
+  color = tf.rgb;
+  return densityScale * tf.a;
+}
+
+float tyndallExtinction(vec3 x)
+{
+  vec3 unused;
+  return tyndallExtinction(x, unused);
+}
+
+vec3 tyndallEmissionColor(vec3 x)
+{
+  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
+  float value = texture(volumeTexture, q * volumeTexScale + volumeTexShift).r;
+  return texture(transferTexture, vec2(value * scalarToTable.x + scalarToTable.y, 0.75)).rgb;
+}
+
+// The light ray of texel (a, b) of light l.
+void tyndallLightRay(int l, vec2 ab, out vec3 origin, out vec3 dir)
+{
+  if (lightPositional[l] == 0)
+  {
+    origin = lightOrigin[l] + ab.x * lightAxisX[l] + ab.y * lightAxisY[l];
+    dir = lightAxisZ[l];
+  }
+  else
+  {
+    origin = lightOrigin[l];
+    dir = normalize(lightAxisZ[l] + (2.0 * ab.x - 1.0) * lightAxisX[l] +
+      (2.0 * ab.y - 1.0) * lightAxisY[l]);
+  }
+}
+
+// Texel coordinates (a, b) of a world point in light l's map.
+vec2 tyndallLightTexel(int l, vec3 x)
+{
+  vec3 v = x - lightOrigin[l];
+  if (lightPositional[l] == 0)
+  {
+    return vec2(dot(v, lightAxisX[l]) / dot(lightAxisX[l], lightAxisX[l]),
+      dot(v, lightAxisY[l]) / dot(lightAxisY[l], lightAxisY[l]));
+  }
+  float z = dot(v, lightAxisZ[l]);
+  float ax = dot(v, lightAxisX[l]) / (z * dot(lightAxisX[l], lightAxisX[l]));
+  float ay = dot(v, lightAxisY[l]) / (z * dot(lightAxisY[l], lightAxisY[l]));
+  return vec2(0.5 * (ax + 1.0), 0.5 * (ay + 1.0));
+}
+
+// Reconstruction (vtkTransmittanceMapMath::Reconstruct).
+float tyndallReconstruct(int method, float c[TYNDALL_MAX_COEFFICIENTS], int count, vec3 bounds, float s)
+{
+  bool adaptive = method == TYNDALL_ADAPTIVE_TFM || method == TYNDALL_ADAPTIVE_ETM;
+  float u = s;
+  if (adaptive)
+  {
+    if (s <= bounds.x)
+    {
+      return 1.0;
+    }
+    if (s >= bounds.y)
+    {
+      return bounds.z;
+    }
+    u = (s - bounds.x) / max(bounds.y - bounds.x, 1e-12);
+  }
+  u = clamp(u, 0.0, 1.0);
+  if (method == TYNDALL_TFM || method == TYNDALL_ADAPTIVE_TFM)
+  {
+    float T = 0.5 * c[0];
+    for (int j = 1; j < count; ++j)
+    {
+      T += c[j] * cos(float(j) * TYNDALL_PI * u);
+    }
+    return clamp(T, 0.0, 1.0);
+  }
+  float tau = 0.5 * c[0] * u;
+  for (int j = 1; j < count; ++j)
+  {
+    float w = float(j) * TYNDALL_PI;
+    tau += c[j] * sin(w * u) / w;
+  }
+  return exp(-max(tau, 0.0));
+}
+
+// Henyey-Greenstein, normalised to 1/(4 pi) over the sphere.
+float tyndallPhaseHG(float g, float mu)
+{
+  float denom = 1.0 + g * g - 2.0 * g * mu;
+  return (1.0 - g * g) / (4.0 * TYNDALL_PI * denom * sqrt(denom));
+}

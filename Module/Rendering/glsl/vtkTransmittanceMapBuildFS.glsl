@@ -1,0 +1,110 @@
+// Tyndall: builds one light's transmittance map (appended to
+// vtkTransmittanceCommonFS.glsl). One fragment per texel: the texel's light
+// ray is marched through the volume and projected onto the TFM or ETM basis
+// (Documentation/rendering-model.md). Layer k of the output holds
+// coefficients 4k .. 4k+3; adaptive methods add a layer (s_min, s_max,
+// T_beyond, 0).
+in vec2 texCoord;
+//VTK::Output::Dec
+
+uniform int lightIndex;
+uniform int method;
+uniform int coefficientCount;
+uniform int sampleCount;
+uniform float adaptiveThreshold;
+
+float coefficients[TYNDALL_MAX_COEFFICIENTS];
+
+// Projects [sMin, sMax] of the segment [k_in, k_in + D dir] with sampleCount
+// midpoint samples; returns the transmittance at the end.
+float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool etm)
+{
+  for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
+  {
+    coefficients[j] = 0.0;
+  }
+  float rangeLength = D * (sMax - sMin);
+  float du = 1.0 / float(sampleCount);
+  float tau = 0.0;
+  for (int n = 0; n < sampleCount; ++n)
+  {
+    float u = (float(n) + 0.5) * du;
+    float sigma = tyndallExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
+    float opticalStep = sigma * rangeLength * du;
+    float value = etm ? sigma * rangeLength : exp(-(tau + 0.5 * opticalStep));
+    for (int j = 0; j < coefficientCount; ++j)
+    {
+      coefficients[j] += 2.0 * value * cos(float(j) * TYNDALL_PI * u) * du;
+    }
+    tau += opticalStep;
+  }
+  return exp(-tau);
+}
+
+void main()
+{
+  vec3 origin, dir;
+  tyndallLightRay(lightIndex, texCoord, origin, dir);
+  vec2 range = tyndallIntersectVolume(origin, dir);
+  bool etm = method == TYNDALL_ETM || method == TYNDALL_ADAPTIVE_ETM;
+  bool adaptive = method == TYNDALL_ADAPTIVE_TFM || method == TYNDALL_ADAPTIVE_ETM;
+  vec3 bounds = vec3(0.0, 1.0, 1.0);
+  if (range.x < range.y)
+  {
+    float D = range.y - range.x;
+    vec3 kIn = origin + range.x * dir;
+    if (adaptive)
+    {
+      // First march: the first sample with extinction, and where the
+      // transmittance falls below the threshold.
+      float du = 1.0 / float(sampleCount);
+      float tau = 0.0;
+      float sMin = -1.0;
+      float sMax = 1.0;
+      float tBeyond = 1.0;
+      for (int n = 0; n < sampleCount; ++n)
+      {
+        float sigma = tyndallExtinction(kIn + (float(n) + 0.5) * du * D * dir);
+        if (sMin < 0.0 && sigma > 0.0)
+        {
+          sMin = float(n) * du;
+        }
+        float opticalStep = sigma * D * du;
+        if (exp(-(tau + 0.5 * opticalStep)) < adaptiveThreshold)
+        {
+          sMax = float(n) * du;
+          break;
+        }
+        tau += opticalStep;
+      }
+      tBeyond = exp(-tau);
+      if (sMin < 0.0)
+      {
+        sMin = 0.0;
+      }
+      if (sMax <= sMin)
+      {
+        sMax = min(1.0, sMin + du);
+      }
+      bounds = vec3(sMin, sMax, tBeyond);
+      tyndallProject(kIn, dir, D, sMin, sMax, etm);
+    }
+    else
+    {
+      bounds.z = tyndallProject(kIn, dir, D, 0.0, 1.0, etm);
+    }
+  }
+  else
+  {
+    // The ray misses the volume: T = 1 everywhere.
+    for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
+    {
+      coefficients[j] = 0.0;
+    }
+    if (!etm)
+    {
+      coefficients[0] = 2.0;
+    }
+  }
+  //TYNDALL::MapOutputs
+}

@@ -1,0 +1,193 @@
+// Tyndall: camera rays (appended to vtkTransmittanceCommonFS.glsl). Marches
+// the pixel's ray through the volume up to the depth of opaque geometry and
+// integrates emission-absorption or single scattering with the light
+// transmittance of the selected method (Documentation/rendering-model.md).
+// Writes premultiplied radiance and alpha = 1 - view transmittance.
+in vec2 texCoord;
+//VTK::Output::Dec
+
+uniform mat4 ndcToWorld;
+uniform sampler2D depthTexture; // the whole window's depth
+uniform int useDepthTexture;
+
+uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
+uniform int method;
+uniform int coefficientCount;
+uniform int layersPerLight;
+uniform int mapSlices;
+uniform sampler3D mapTexture;
+uniform float stepLength;
+uniform int maxSteps;
+uniform int lightSampleCount;
+uniform int jitter;
+uniform float anisotropy;
+uniform float ambient;
+uniform float emissionScale;
+
+uniform int numberOfLights;
+uniform vec3 lightIrradiance[TYNDALL_MAX_LIGHTS];   // LightScale * intensity * colour
+uniform vec3 lightPosition[TYNDALL_MAX_LIGHTS];     // positional lights
+uniform vec3 lightDirection[TYNDALL_MAX_LIGHTS];    // direction the light travels
+uniform vec3 lightAttenuation[TYNDALL_MAX_LIGHTS];
+uniform float lightConeCosine[TYNDALL_MAX_LIGHTS];  // -2: no cone
+uniform float lightExponent[TYNDALL_MAX_LIGHTS];
+uniform int lightMethod[TYNDALL_MAX_LIGHTS];        // per light: map methods fall back to brute force
+
+vec3 unproject(vec2 ndcXY, float ndcZ)
+{
+  vec4 p = ndcToWorld * vec4(ndcXY, ndcZ, 1.0);
+  return p.xyz / p.w;
+}
+
+// Light transmittance from x towards light l (world direction toLight).
+float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
+{
+  int m = lightMethod[l];
+  if (m == TYNDALL_NONE)
+  {
+    return 1.0;
+  }
+  if (m == TYNDALL_BRUTE_FORCE)
+  {
+    vec2 range = tyndallIntersectVolume(x, toLight);
+    float tEnd = min(range.y, lightDistance);
+    if (tEnd <= 0.0)
+    {
+      return 1.0;
+    }
+    float dt = tEnd / float(lightSampleCount);
+    float tau = 0.0;
+    for (int n = 0; n < lightSampleCount; ++n)
+    {
+      tau += tyndallExtinction(x + (float(n) + 0.5) * dt * toLight) * dt;
+    }
+    return exp(-tau);
+  }
+  // Transmittance maps.
+  vec2 ab = tyndallLightTexel(l, x);
+  vec3 origin, dir;
+  tyndallLightRay(l, ab, origin, dir);
+  vec2 range = tyndallIntersectVolume(origin, dir);
+  if (range.x >= range.y)
+  {
+    return 1.0;
+  }
+  float s = (dot(x - origin, dir) - range.x) / (range.y - range.x);
+  float c[TYNDALL_MAX_COEFFICIENTS];
+  int first = l * layersPerLight;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (4 * k < coefficientCount)
+    {
+      vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
+      c[4 * k] = v.x;
+      c[4 * k + 1] = v.y;
+      c[4 * k + 2] = v.z;
+      c[4 * k + 3] = v.w;
+    }
+  }
+  vec3 bounds = vec3(0.0, 1.0, 1.0);
+  if (m == TYNDALL_ADAPTIVE_TFM || m == TYNDALL_ADAPTIVE_ETM)
+  {
+    bounds = texture(mapTexture,
+      vec3(ab, (float(first + layersPerLight - 1) + 0.5) / float(mapSlices))).xyz;
+  }
+  return tyndallReconstruct(m, c, coefficientCount, bounds, clamp(s, 0.0, 1.0));
+}
+
+// In-scattered radiance per unit sigma_s at x, for the view direction w.
+vec3 inScattering(vec3 x, vec3 w)
+{
+  vec3 sum = vec3(ambient);
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    vec3 toLight;
+    float distance = 1e30;
+    vec3 E = lightIrradiance[l];
+    if (lightPositional[l] == 0)
+    {
+      toLight = -lightDirection[l]; // directional
+    }
+    else
+    {
+      vec3 v = lightPosition[l] - x;
+      distance = length(v);
+      toLight = v / distance;
+      vec3 a = lightAttenuation[l];
+      E /= max(a.x + a.y * distance + a.z * distance * distance, 1e-12);
+      if (lightConeCosine[l] > -1.5)
+      {
+        float cosPhi = dot(-toLight, lightDirection[l]);
+        E *= cosPhi >= lightConeCosine[l] ? pow(max(cosPhi, 0.0), lightExponent[l]) : 0.0;
+      }
+    }
+    if (E.r + E.g + E.b <= 0.0)
+    {
+      continue;
+    }
+    // mu: cosine between the light's travel direction and the direction
+    // towards the camera.
+    float mu = dot(-toLight, -w);
+    sum += E * tyndallPhaseHG(anisotropy, mu) * lightTransmittance(l, x, toLight, distance);
+  }
+  return sum;
+}
+
+void main()
+{
+  vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
+  float depthNdc = 1.0;
+  if (useDepthTexture != 0)
+  {
+    depthNdc = 2.0 * texture(depthTexture, gl_FragCoord.xy / vec2(textureSize(depthTexture, 0))).r - 1.0;
+  }
+  vec3 p0 = unproject(ndc, -1.0);
+  vec3 p1 = unproject(ndc, depthNdc);
+  vec3 w = normalize(p1 - p0);
+  float tDepth = length(p1 - p0);
+  vec2 range = tyndallIntersectVolume(p0, w);
+  float tNear = max(range.x, 0.0);
+  float tFar = min(range.y, tDepth);
+  if (!(tNear < tFar))
+  {
+    discard;
+  }
+  float offset = 0.5;
+  if (jitter != 0)
+  {
+    // A fixed per-pixel hash: the same pixel gets the same offset every frame.
+    offset = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
+  }
+  vec3 radiance = vec3(0.0);
+  float Tv = 1.0;
+  float t0 = tNear;
+  for (int i = 0; i < maxSteps && t0 < tFar; ++i)
+  {
+    float dt = min(stepLength, tFar - t0);
+    vec3 x = p0 + (t0 + offset * dt) * w;
+    vec3 color;
+    float sigma = tyndallExtinction(x, color);
+    if (sigma > 0.0)
+    {
+      float stepOpacity = 1.0 - exp(-sigma * dt);
+      vec3 source; // per unit sigma_t
+      if (scatteringModel == 0)
+      {
+        source = color;
+      }
+      else
+      {
+        source = color * inScattering(x, w) + emissionScale * tyndallEmissionColor(x);
+      }
+      radiance += Tv * stepOpacity * source;
+      Tv *= 1.0 - stepOpacity;
+      if (Tv < 1e-5)
+      {
+        Tv = 0.0;
+        break;
+      }
+    }
+    t0 += dt;
+  }
+  gl_FragData[0] = vec4(radiance, 1.0 - Tv);
+}
