@@ -693,8 +693,10 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
       vtkOpenGLState::ScopedglViewport savedViewport(state);
       vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
       vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
+      vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
       state->vtkglDisable(GL_BLEND);
       state->vtkglDisable(GL_DEPTH_TEST);
+      state->vtkglDisable(GL_SCISSOR_TEST); // the renderer's viewport scissor
       state->vtkglViewport(0, 0, size, size);
       bool ok = true;
       for (int l = 0; l < numberOfLights && ok; ++l)

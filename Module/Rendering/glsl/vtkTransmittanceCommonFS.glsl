@@ -122,20 +122,31 @@ float tyndallReconstruct(int method, float c[TYNDALL_MAX_COEFFICIENTS], int coun
     u = (s - bounds.x) / max(bounds.y - bounds.x, 1e-12);
   }
   u = clamp(u, 0.0, 1.0);
+  // cos(j pi u) and sin(j pi u) by the angle-addition recurrence: one cos
+  // and one sin per reconstruction instead of one per coefficient.
+  float c1 = cos(TYNDALL_PI * u);
+  float s1 = sin(TYNDALL_PI * u);
+  float cj = 1.0;
+  float sj = 0.0;
   if (method == TYNDALL_TFM || method == TYNDALL_ADAPTIVE_TFM)
   {
     float T = 0.5 * c[0];
     for (int j = 1; j < count; ++j)
     {
-      T += c[j] * cos(float(j) * TYNDALL_PI * u);
+      float cNext = cj * c1 - sj * s1;
+      sj = sj * c1 + cj * s1;
+      cj = cNext;
+      T += c[j] * cj;
     }
     return clamp(T, 0.0, 1.0);
   }
   float tau = 0.5 * c[0] * u;
   for (int j = 1; j < count; ++j)
   {
-    float w = float(j) * TYNDALL_PI;
-    tau += c[j] * sin(w * u) / w;
+    float cNext = cj * c1 - sj * s1;
+    sj = sj * c1 + cj * s1;
+    cj = cNext;
+    tau += c[j] * sj / (float(j) * TYNDALL_PI);
   }
   return exp(-max(tau, 0.0));
 }

@@ -32,9 +32,17 @@ float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool e
     float sigma = tyndallExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
     float opticalStep = sigma * rangeLength * du;
     float value = etm ? sigma * rangeLength : exp(-(tau + 0.5 * opticalStep));
+    // cos(j pi u) by the angle-addition recurrence.
+    float c1 = cos(TYNDALL_PI * u);
+    float s1 = sin(TYNDALL_PI * u);
+    float cj = 1.0;
+    float sj = 0.0;
     for (int j = 0; j < coefficientCount; ++j)
     {
-      coefficients[j] += 2.0 * value * cos(float(j) * TYNDALL_PI * u) * du;
+      coefficients[j] += 2.0 * value * cj * du;
+      float cNext = cj * c1 - sj * s1;
+      sj = sj * c1 + cj * s1;
+      cj = cNext;
     }
     tau += opticalStep;
   }

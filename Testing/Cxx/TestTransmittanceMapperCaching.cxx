@@ -1,0 +1,143 @@
+// vtkTransmittanceVolumeMapper rebuilds its maps only when something they
+// depend on changes, never for a camera move; parameters clamp to their
+// documented ranges; releasing graphics resources and destroying the window
+// leave no OpenGL error.
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderWindow.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkTransmittanceVolumeMapper.h"
+#include "vtkVolume.h"
+#include "vtk_glew.h"
+
+#include "TyndallTestScene.h"
+
+#include <iostream>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const char* what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << std::endl;
+    ++failures;
+  }
+}
+}
+
+int TestTransmittanceMapperCaching(int, char*[])
+{
+  vtkNew<vtkTransmittanceVolumeMapper> mapper;
+  // Parameter clamping to the documented ranges.
+  mapper->SetNumberOfCoefficients(100);
+  Check(mapper->GetNumberOfCoefficients() == 16, "coefficients clamp to 16");
+  mapper->SetNumberOfCoefficients(0);
+  Check(mapper->GetNumberOfCoefficients() == 1, "coefficients clamp to 1");
+  mapper->SetScatteringAnisotropy(2.0);
+  Check(mapper->GetScatteringAnisotropy() == 0.99, "anisotropy clamps to 0.99");
+  mapper->SetScatteringAnisotropy(-5.0);
+  Check(mapper->GetScatteringAnisotropy() == -0.99, "anisotropy clamps to -0.99");
+  mapper->SetTransmittanceMapSize(1);
+  Check(mapper->GetTransmittanceMapSize() == 16, "map size clamps to 16");
+  mapper->SetTransmittanceMethod(42);
+  Check(mapper->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::ADAPTIVE_ETM,
+    "method clamps into the enumeration");
+  mapper->SetDensityScale(-1.0);
+  Check(mapper->GetDensityScale() == 0.0, "density scale clamps to 0");
+  mapper->SetAdaptiveThreshold(2.0);
+  Check(mapper->GetAdaptiveThreshold() == 0.5, "adaptive threshold clamps to 0.5");
+  mapper->SetLightSampleCount(0);
+  Check(mapper->GetLightSampleCount() == 1, "light samples clamp to 1");
+
+  mapper->SetNumberOfCoefficients(8);
+  mapper->SetScatteringAnisotropy(0.3);
+  mapper->SetDensityScale(1.0);
+  mapper->SetAdaptiveThreshold(0.01);
+  mapper->SetLightSampleCount(64);
+  mapper->SetTransmittanceMapSize(64);
+  mapper->SetInputData(tyndall_test::MakeCloud(32));
+  vtkNew<vtkTest::ErrorObserver> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+
+  auto property = tyndall_test::MakeCloudProperty();
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  auto sun = tyndall_test::MakeSun(1.0, 0.5, 0.2);
+  renderer->AddLight(sun);
+  tyndall_test::SetTestCamera(renderer);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(64, 64);
+  window->AddRenderer(renderer);
+
+  window->Render();
+  Check(mapper->GetMapBuildCount() == 1, "the first frame builds the maps");
+  int builds = mapper->GetMapBuildCount();
+  auto expect = [&](bool rebuilt, const char* what) {
+    window->Render();
+    const int now = mapper->GetMapBuildCount();
+    if (now != builds + (rebuilt ? 1 : 0))
+    {
+      std::cerr << what << ": " << now - builds << " rebuilds" << std::endl;
+    }
+    Check(now == builds + (rebuilt ? 1 : 0), what);
+    builds = now;
+  };
+
+  renderer->GetActiveCamera()->Azimuth(40.0);
+  renderer->GetActiveCamera()->Elevation(20.0);
+  renderer->ResetCameraClippingRange();
+  expect(false, "a camera move reuses the maps");
+  renderer->GetActiveCamera()->Zoom(1.3);
+  expect(false, "a zoom reuses the maps");
+  mapper->SetScatteringAnisotropy(-0.2);
+  mapper->SetAmbientIntensity(0.1);
+  expect(false, "anisotropy and ambient do not touch the maps");
+  sun->SetPosition(-1.0, 0.5, 0.2);
+  expect(true, "moving the light rebuilds");
+  sun->SetIntensity(2.0);
+  expect(false, "the light's intensity does not touch the maps");
+  mapper->SetDensityScale(2.0);
+  expect(true, "the density scale rebuilds");
+  mapper->SetNumberOfCoefficients(12);
+  expect(true, "the coefficient count rebuilds");
+  mapper->SetTransmittanceMapSize(32);
+  expect(true, "the map size rebuilds");
+  mapper->SetTransmittanceMethodToTFM();
+  expect(true, "the method rebuilds");
+  property->GetScalarOpacity()->AddPoint(4.0, 0.1);
+  expect(true, "the transfer function rebuilds");
+  volume->RotateZ(30.0);
+  expect(true, "the volume's matrix rebuilds");
+  mapper->SetInputData(tyndall_test::MakeCloud(24));
+  expect(true, "new data rebuilds");
+  auto second = tyndall_test::MakeSun(0.0, 1.0, 0.0);
+  renderer->AddLight(second);
+  expect(true, "a new light rebuilds");
+  renderer->GetActiveCamera()->Azimuth(-60.0);
+  renderer->ResetCameraClippingRange();
+  expect(false, "a camera move with two lights reuses the maps");
+  mapper->SetTransmittanceMethodToBruteForce();
+  expect(false, "brute force builds no map");
+  Check(!errors->GetError(), "no errors while rendering");
+
+  // Release, render again, destroy: no OpenGL error.
+  auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+  mapper->SetTransmittanceMethodToAdaptiveETM();
+  window->Render();
+  mapper->ReleaseGraphicsResources(window);
+  window->Render();
+  Check(mapper->GetMapBuildCount() == builds + 2, "released maps are rebuilt once");
+  glWindow->MakeCurrent();
+  const GLenum glError = glGetError();
+  Check(glError == GL_NO_ERROR, "no OpenGL error after release and re-render");
+  window->Finalize();
+  Check(!errors->GetError(), "no errors after finalizing the window");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

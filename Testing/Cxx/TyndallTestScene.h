@@ -1,0 +1,88 @@
+// Scenes shared by Tyndall's rendering tests and benchmarks. Header only;
+// not part of the library.
+#ifndef TyndallTestScene_h
+#define TyndallTestScene_h
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCosineNoise.h"
+#include "vtkCosineNoiseSource.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkVolumeProperty.h"
+
+namespace tyndall_test
+{
+// The built-in cloud (vtkCosineNoiseSource's defaults) at n^3 over [-1, 1]^3.
+inline vtkSmartPointer<vtkImageData> MakeCloud(int n)
+{
+  vtkNew<vtkCosineNoiseSource> source;
+  source->SetWholeExtent(0, n - 1, 0, n - 1, 0, n - 1);
+  source->SetSpacing(2.0 / (n - 1), 2.0 / (n - 1), 2.0 / (n - 1));
+  source->Update();
+  return source->GetOutput();
+}
+
+// A dense medium: a slab of high constant density with a noisy top, so that
+// light rays cross optical depths of several tens.
+inline vtkSmartPointer<vtkImageData> MakeDenseMedium(int n)
+{
+  vtkNew<vtkCosineNoiseSource> source;
+  source->SetWholeExtent(0, n - 1, 0, n - 1, 0, n - 1);
+  source->SetSpacing(2.0 / (n - 1), 2.0 / (n - 1), 2.0 / (n - 1));
+  source->SetEnvelopeTypeToSphere();
+  source->SetEnvelopeRadius(0.85);
+  source->SetEnvelopeFalloff(0.15);
+  source->GetNoise()->SetNumberOfOctaves(3);
+  source->GetNoise()->SetOffset(12.0);
+  source->Update();
+  return source->GetOutput();
+}
+
+// Transfer functions of a white cloud: opacity up to `peakOpacity` per
+// 0.05 world units at density 8, albedo 0.9.
+inline vtkSmartPointer<vtkVolumeProperty> MakeCloudProperty(double peakOpacity = 0.5)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(8.0, peakOpacity);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.9, 0.9, 0.9);
+  color->AddRGBPoint(8.0, 0.9, 0.9, 0.9);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetInterpolationTypeToLinear();
+  property->SetScalarOpacityUnitDistance(0.05);
+  return property;
+}
+
+// A directional scene light travelling from `from` towards the origin.
+inline vtkSmartPointer<vtkLight> MakeSun(double x, double y, double z, double intensity = 1.0)
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(x, y, z);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->SetIntensity(intensity);
+  return light;
+}
+
+// The camera of the tests: looking at the origin from +z, slightly below.
+inline void SetTestCamera(vtkRenderer* renderer, double viewAngle = 30.0)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, -0.6, 4.2);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(viewAngle);
+  renderer->ResetCameraClippingRange();
+}
+}
+
+#endif
