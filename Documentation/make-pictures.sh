@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Regenerates the pictures under Documentation/images from a build of
+# Tyndall (default: ./build). Every picture in the documentation comes from
+# here; run it after a change that alters them, look at them, commit them.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${TYNDALL_BUILD_DIR:-$root/build}"
+images="$root/Documentation/images"
+mkdir -p "$images"
+run() { xvfb-run -a -s "-screen 0 1280x1024x24" "$@"; }
+
+# The README's picture: the built-in default scene.
+run "$build/bin/tyndall-render" -o "$images/tyndall-cloud.png" -s 384 384

@@ -1,0 +1,162 @@
+// Bad input to vtkTransmittanceVolumeMapper: each case reports a clear error
+// (or a documented warning) through VTK's error mechanism and leaves the
+// rest of the render intact: an opaque actor beside the volume is still
+// drawn, and a valid volume renders again afterwards.
+#include "vtkActor.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkSphereSource.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkTransmittanceVolumeMapper.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkWindowToImageFilter.h"
+
+#include "TyndallTestScene.h"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <string>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << std::endl;
+    ++failures;
+  }
+}
+
+// Number of pixels that differ from the background colour.
+int CountForeground(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  const int n = image->GetNumberOfPoints();
+  const int c = image->GetNumberOfScalarComponents();
+  int count = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    count += (pixels[c * i] != 0 || pixels[c * i + 1] != 0 || pixels[c * i + 2] != 0) ? 1 : 0;
+  }
+  return count;
+}
+
+vtkSmartPointer<vtkImageData> MakeImage(int nx, int ny, int nz, int components, double fill)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(nx, ny, nz);
+  image->SetSpacing(0.1, 0.1, 0.1);
+  image->SetOrigin(-0.5, -0.5, -0.5);
+  if (components > 0)
+  {
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfComponents(components);
+    values->SetNumberOfTuples(static_cast<vtkIdType>(nx) * ny * nz);
+    values->Fill(fill);
+    image->GetPointData()->SetScalars(values);
+  }
+  return image;
+}
+}
+
+int TestTransmittanceMapperBadInput(int, char*[])
+{
+  vtkNew<vtkTransmittanceVolumeMapper> mapper;
+  vtkNew<vtkTest::ErrorObserver> observer;
+  mapper->AddObserver(vtkCommand::ErrorEvent, observer);
+  mapper->AddObserver(vtkCommand::WarningEvent, observer);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(tyndall_test::MakeCloudProperty());
+
+  // An opaque sphere beside the volume, which must always be drawn.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(-3.0, 0.0, 0.0);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(sphereMapper);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  renderer->AddActor(actor);
+  renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3));
+  renderer->GetActiveCamera()->SetPosition(-1.5, 0.0, 8.0);
+  renderer->GetActiveCamera()->SetFocalPoint(-1.5, 0.0, 0.0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(120, 80);
+  window->AddRenderer(renderer);
+
+  // Only the sphere: the reference count of foreground pixels.
+  volume->VisibilityOff();
+  window->Render();
+  const int sphereOnly = CountForeground(window);
+  volume->VisibilityOn();
+  Check(sphereOnly > 100, "the sphere is visible");
+
+  auto expectError = [&](vtkImageData* input, const std::string& text, const std::string& what,
+                       bool warning = false) {
+    observer->Clear();
+    mapper->SetInputData(input);
+    window->Render();
+    const bool got = warning ? observer->GetWarning() : observer->GetError();
+    const std::string message =
+      warning ? observer->GetWarningMessage() : observer->GetErrorMessage();
+    if (!got || message.find(text) == std::string::npos)
+    {
+      std::cerr << what << ": expected a message containing '" << text << "', got '" << message
+                << "'" << std::endl;
+    }
+    Check(got && message.find(text) != std::string::npos, what);
+    Check(CountForeground(window) >= sphereOnly, what + ": the rest of the render is intact");
+  };
+
+  expectError(MakeImage(8, 8, 8, 0, 0.0), "no scalars", "no scalars");
+  expectError(MakeImage(8, 8, 8, 3, 1.0), "components", "three-component scalars");
+  expectError(MakeImage(8, 8, 1, 1, 1.0), "at least 2", "one voxel thick");
+  expectError(MakeImage(0, 0, 0, 1, 1.0), "at least 2", "an empty image");
+  {
+    auto image = MakeImage(8, 8, 8, 1, std::numeric_limits<double>::quiet_NaN());
+    expectError(image, "no finite value", "only NaN scalars");
+  }
+  {
+    auto image = MakeImage(8, 8, 8, 1, 4.0);
+    auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+    values->SetValue(5, std::numeric_limits<float>::quiet_NaN());
+    values->SetValue(9, std::numeric_limits<float>::infinity());
+    expectError(image, "2 NaN or Inf", "NaN and Inf scalars are replaced, with a warning", true);
+    Check(!observer->GetError(), "NaN scalars are not an error");
+    Check(CountForeground(window) > sphereOnly, "the volume with NaN scalars is drawn");
+  }
+
+  // No lights: ambient and emission only, no error; here the volume is dark.
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  observer->Clear();
+  mapper->SetInputData(tyndall_test::MakeCloud(16));
+  window->Render();
+  Check(!observer->GetError(), "no lights is not an error");
+
+  // A valid volume renders after all that.
+  renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3));
+  observer->Clear();
+  window->Render();
+  Check(!observer->GetError() && !observer->GetWarning(), "a valid volume renders cleanly");
+  Check(CountForeground(window) > sphereOnly + 50, "the valid volume is drawn");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
