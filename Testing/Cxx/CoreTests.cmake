@@ -4,7 +4,8 @@ vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseClosedForm.cxx
   TestCosineNoiseSampleDistance.cxx
   TestCosineNoiseSource.cxx
-  TestCosineNoiseBadInput.cxx)
+  TestCosineNoiseBadInput.cxx
+  TestTransmittanceMapMath.cxx)
 vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseCloudRender.cxx)
 vtk_test_cxx_executable(TyndallCoreCxxTests tests

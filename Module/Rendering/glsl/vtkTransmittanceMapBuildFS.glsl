@@ -69,7 +69,7 @@ void main()
       float tau = 0.0;
       float sMin = -1.0;
       float sMax = 1.0;
-      float tBeyond = 1.0;
+      float crossingStep = 0.0; // optical depth of the sample that crossed
       for (int n = 0; n < sampleCount; ++n)
       {
         float sigma = tyndallExtinction(kIn + (float(n) + 0.5) * du * D * dir);
@@ -81,19 +81,22 @@ void main()
         if (exp(-(tau + 0.5 * opticalStep)) < adaptiveThreshold)
         {
           sMax = float(n) * du;
+          crossingStep = opticalStep;
           break;
         }
         tau += opticalStep;
       }
-      tBeyond = exp(-tau);
       if (sMin < 0.0)
       {
         sMin = 0.0;
       }
       if (sMax <= sMin)
       {
+        // Crossed within the first non-empty sample: s_max is its end.
         sMax = min(1.0, sMin + du);
+        tau += crossingStep;
       }
+      float tBeyond = exp(-tau);
       bounds = vec3(sMin, sMax, tBeyond);
       tyndallProject(kIn, dir, D, sMin, sMax, etm);
     }
