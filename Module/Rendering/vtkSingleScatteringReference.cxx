@@ -192,9 +192,9 @@ struct Tables
 struct LightSource
 {
   bool Positional = false;
-  double ToLight[3] = { 0.0, 0.0, 1.0 };       // directional: unit, world
-  double ToLightIndex[3] = { 0.0, 0.0, 1.0 };  // the same in index space
-  double Position[3] = { 0.0, 0.0, 0.0 };      // positional, world
+  double ToLight[3] = { 0.0, 0.0, 1.0 };        // directional: unit, world
+  double ToLightIndex[3] = { 0.0, 0.0, 1.0 };   // the same in index space
+  double Position[3] = { 0.0, 0.0, 0.0 };       // positional, world
   double SpotDirection[3] = { 0.0, 0.0, -1.0 }; // unit, from the light to its focal point
   bool Spot = false;
   double CosCone = -1.0;
@@ -264,8 +264,8 @@ public:
       for (int i = 0; i < this->S->Width; ++i)
       {
         const vtkIdType pixel = j * this->S->Width + i;
-        this->RenderPixel(i, static_cast<int>(j), this->S->Radiance + 3 * pixel,
-          this->S->Transmittance[pixel]);
+        this->RenderPixel(
+          i, static_cast<int>(j), this->S->Radiance + 3 * pixel, this->S->Transmittance[pixel]);
       }
     }
   }
@@ -477,7 +477,7 @@ private:
       std::copy(light.ToLightIndex, light.ToLightIndex + 3, dl);
     }
     // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
-    const double weight = factor * s.Phase(-Dot(l, w)) * this->LightTransmittance(p, dl, tMax);
+    const double weight = factor * s.Phase(Dot(l, w)) * this->LightTransmittance(p, dl, tMax);
     for (int c = 0; c < 3; ++c)
     {
       in[c] += light.E[c] * weight;
@@ -579,8 +579,8 @@ bool vtkSingleScatteringReference::RenderInternal(
 {
   if (width < 1 || width > kMaxImageSize || height < 1 || height > kMaxImageSize)
   {
-    vtkErrorMacro(<< "Render: the image size " << width << " x " << height
-                  << " is outside [1, " << kMaxImageSize << "] on some axis.");
+    vtkErrorMacro(<< "Render: the image size " << width << " x " << height << " is outside [1, "
+                  << kMaxImageSize << "] on some axis.");
     return false;
   }
   if (!renderer || !volume)
@@ -707,8 +707,8 @@ bool vtkSingleScatteringReference::RenderInternal(
   vtkIdType nonFinite = 0;
   switch (values->GetDataType())
   {
-    vtkTemplateMacro(ScanScalars(static_cast<const VTK_TT*>(values->GetVoidPointer(0)), expected,
-      range, nonFinite));
+    vtkTemplateMacro(ScanScalars(
+      static_cast<const VTK_TT*>(values->GetVoidPointer(0)), expected, range, nonFinite));
   }
   if (nonFinite > 0)
   {
@@ -732,8 +732,8 @@ bool vtkSingleScatteringReference::RenderInternal(
       affine = affine && std::isfinite(m[r][c]);
     }
   }
-  const double linear[9] = { m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0],
-    m[2][1], m[2][2] };
+  const double linear[9] = { m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1],
+    m[2][2] };
   const double determinant = vtkMatrix3x3::Determinant(linear);
   if (!affine || determinant == 0.0 || !std::isfinite(determinant))
   {
@@ -1029,7 +1029,7 @@ void vtkSingleScatteringReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Progress: " << this->Progress << "\n";
   os << indent << "LastStepSize: " << this->LastStepSize << "\n";
   os << indent << "LastLightStepSize: " << this->LastLightStepSize << "\n";
-  os << indent << "LastBackground: (" << this->LastBackground[0] << ", "
-     << this->LastBackground[1] << ", " << this->LastBackground[2] << ")\n";
+  os << indent << "LastBackground: (" << this->LastBackground[0] << ", " << this->LastBackground[1]
+     << ", " << this->LastBackground[2] << ")\n";
   os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
 }

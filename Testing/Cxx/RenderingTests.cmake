@@ -1,0 +1,20 @@
+# Tests of Tyndall::Rendering (included from CMakeLists.txt).
+# vtkSingleScatteringReference: numeric tests against closed forms, then its
+# baseline image (compared directly, no render window needed).
+vtk_add_test_cxx(TyndallRenderingCxxTests tests
+  NO_DATA NO_VALID NO_OUTPUT
+  TestSingleScatteringReference.cxx)
+vtk_add_test_cxx(TyndallRenderingCxxTests tests
+  TestSingleScatteringReferenceImage.cxx)
+# vtkTransmittanceVolumeMapper (needs a display).
+vtk_add_test_cxx(TyndallRenderingCxxTests tests
+  NO_DATA NO_VALID NO_OUTPUT
+  TestTransmittanceMapperCaching.cxx
+  TestTransmittanceMapperBadInput.cxx
+  TestTransmittanceMapperReference.cxx)
+vtk_add_test_cxx(TyndallRenderingCxxTests tests
+  TestTransmittanceMapperEmissionAbsorption.cxx
+  TestTransmittanceMapperScenes.cxx)
+vtk_test_cxx_executable(TyndallRenderingCxxTests tests
+  RENDERING_FACTORY
+  DISABLE_FLOATING_POINT_EXCEPTIONS)
