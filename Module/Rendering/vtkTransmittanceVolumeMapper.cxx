@@ -1,5 +1,6 @@
 #include "vtkTransmittanceVolumeMapper.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
@@ -20,6 +21,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
@@ -34,6 +36,7 @@
 // The GLSL sources, embedded at build time from glsl/*.glsl.
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
+#include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
 
 #include <algorithm>
@@ -83,6 +86,7 @@ struct LightParameters
   double ConeCosine = -2.0; // -2: not a spot light
   double Exponent = 1.0;
   int Method = 0; // per light, after fallbacks
+  bool HasFrustum = false;
   vtkNew<vtkTransmittanceLightFrustum> Frustum;
 };
 }
@@ -97,6 +101,15 @@ public:
   vtkSmartPointer<vtkTextureObject> DepthTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> MapFramebuffer;
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
+  // Occluders seen from the lights: a depth render per light, converted to
+  // distances along the map rays in one slice per light of OcclusionTexture.
+  vtkSmartPointer<vtkTextureObject> OcclusionTexture;
+  vtkSmartPointer<vtkTextureObject> LightDepthTexture;
+  vtkSmartPointer<vtkTextureObject> LightColorTexture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> OcclusionFramebuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> OcclusionQuad;
+  int OcclusionSlices = 0;
+  int OcclusionSize = 0;
   std::unique_ptr<vtkOpenGLQuadHelper> RayCastQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> MapQuad;
   std::string MapQuadSource;
@@ -123,14 +136,16 @@ public:
   void Release(vtkWindow* window)
   {
     for (auto* texture : { this->VolumeTexture.Get(), this->TransferTexture.Get(),
-           this->MapTexture.Get(), this->DepthTexture.Get() })
+           this->MapTexture.Get(), this->DepthTexture.Get(), this->OcclusionTexture.Get(),
+           this->LightDepthTexture.Get(), this->LightColorTexture.Get() })
     {
       if (texture)
       {
         texture->ReleaseGraphicsResources(window);
       }
     }
-    for (auto* framebuffer : { this->MapFramebuffer.Get(), this->DepthFramebuffer.Get() })
+    for (auto* framebuffer : { this->MapFramebuffer.Get(), this->DepthFramebuffer.Get(),
+           this->OcclusionFramebuffer.Get() })
     {
       if (framebuffer)
       {
@@ -145,12 +160,23 @@ public:
     {
       this->MapQuad->ReleaseGraphicsResources(window);
     }
+    if (this->OcclusionQuad)
+    {
+      this->OcclusionQuad->ReleaseGraphicsResources(window);
+    }
     this->VolumeTexture = nullptr;
     this->TransferTexture = nullptr;
     this->MapTexture = nullptr;
     this->DepthTexture = nullptr;
     this->MapFramebuffer = nullptr;
     this->DepthFramebuffer = nullptr;
+    this->OcclusionTexture = nullptr;
+    this->LightDepthTexture = nullptr;
+    this->LightColorTexture = nullptr;
+    this->OcclusionFramebuffer = nullptr;
+    this->OcclusionQuad.reset();
+    this->OcclusionSlices = 0;
+    this->OcclusionSize = 0;
     this->RayCastQuad.reset();
     this->MapQuad.reset();
     this->MapQuadSource.clear();
@@ -529,15 +555,13 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
           p.Exponent = light->GetExponent();
         }
       }
+      // Every light gets a frustum (maps and opaque occluders use it).
+      p.HasFrustum = p.Positional ? p.Frustum->FitPositional(p.Position, corners)
+                                  : p.Frustum->FitDirectional(p.Direction, corners);
       p.Method = this->TransmittanceMethod;
-      if (IsMapMethod(p.Method))
+      if (IsMapMethod(p.Method) && !p.HasFrustum)
       {
-        const bool fitted = p.Positional ? p.Frustum->FitPositional(p.Position, corners)
-                                         : p.Frustum->FitDirectional(p.Direction, corners);
-        if (!fitted)
-        {
-          p.Method = BRUTE_FORCE; // documented fallback: light inside the bounds
-        }
+        p.Method = BRUTE_FORCE; // documented fallback: light inside the bounds
       }
     }
     if (ignored)
@@ -582,6 +606,12 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
         axisZ[l][k] = static_cast<float>(f->GetAxisZ()[k]);
       }
     }
+    int hasFrustum[kMaxLights] = { 0 };
+    for (int l = 0; l < numberOfLights; ++l)
+    {
+      hasFrustum[l] = in.Lights[l].HasFrustum ? 1 : 0;
+    }
+    program->SetUniform1iv("lightHasFrustum", kMaxLights, hasFrustum);
     program->SetUniform1iv("lightPositional", kMaxLights, positional);
     program->SetUniform3fv("lightOrigin", kMaxLights, origin);
     program->SetUniform3fv("lightAxisX", kMaxLights, axisX);
@@ -592,7 +622,189 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   in.VolumeTexture->Activate();
   in.TransferTexture->Activate();
 
-  // 5. Transmittance maps, rebuilt only when what they depend on changed.
+  // 5. Opaque geometry seen from each light: the distance along each map
+  // ray to the first opaque surface, so that geometry shadows the medium.
+  std::vector<vtkActor*> occluders;
+  if (scattering && numberOfLights > 0)
+  {
+    vtkPropCollection* props = renderer->GetViewProps();
+    vtkCollectionSimpleIterator pit;
+    props->InitTraversal(pit);
+    while (vtkProp* prop = props->GetNextProp(pit))
+    {
+      auto* actor = vtkActor::SafeDownCast(prop);
+      if (actor && actor->GetVisibility() && actor->GetMapper() && actor->HasOpaqueGeometry())
+      {
+        occluders.push_back(actor);
+      }
+    }
+  }
+  auto buildOcclusion = [&]() -> bool {
+    const int size = this->TransmittanceMapSize;
+    if (!in.OcclusionTexture || in.OcclusionSize != size || in.OcclusionSlices != numberOfLights)
+    {
+      in.OcclusionTexture = vtkSmartPointer<vtkTextureObject>::New();
+      in.LightDepthTexture = vtkSmartPointer<vtkTextureObject>::New();
+      in.LightColorTexture = vtkSmartPointer<vtkTextureObject>::New();
+      for (auto* texture : { in.OcclusionTexture.Get(), in.LightDepthTexture.Get(),
+             in.LightColorTexture.Get() })
+      {
+        texture->SetContext(window);
+        texture->SetWrapS(vtkTextureObject::ClampToEdge);
+        texture->SetWrapT(vtkTextureObject::ClampToEdge);
+        texture->SetWrapR(vtkTextureObject::ClampToEdge);
+        texture->SetMinificationFilter(vtkTextureObject::Nearest);
+        texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      }
+      if (!in.OcclusionTexture->Create3DFromRaw(size, size, numberOfLights, 1, VTK_FLOAT, nullptr) ||
+        !in.LightDepthTexture->AllocateDepth(size, size, vtkTextureObject::Float32) ||
+        !in.LightColorTexture->Allocate2D(size, size, 4, VTK_UNSIGNED_CHAR))
+      {
+        vtkErrorMacro(<< "Could not allocate the light-space occlusion textures.");
+        in.OcclusionTexture = nullptr;
+        return false;
+      }
+      in.OcclusionSize = size;
+      in.OcclusionSlices = numberOfLights;
+      in.OcclusionFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    }
+    std::string fs = std::string(vtkTransmittanceCommonFS) + vtkTransmittanceOcclusionFS;
+    if (!in.OcclusionQuad)
+    {
+      in.OcclusionQuad.reset(new vtkOpenGLQuadHelper(window,
+        vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+    }
+    in.OcclusionFramebuffer->SetContext(window);
+    vtkCamera* viewCamera = renderer->GetActiveCamera();
+    viewCamera->Register(this);
+    vtkNew<vtkCamera> lightCamera;
+    bool ok = true;
+    state->PushFramebufferBindings();
+    {
+      vtkOpenGLState::ScopedglViewport savedViewport(state);
+      vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+      vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
+      vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+      vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+      in.OcclusionFramebuffer->Bind();
+      for (int l = 0; l < numberOfLights && ok; ++l)
+      {
+        const LightParameters& p = in.Lights[l];
+        if (!p.HasFrustum)
+        {
+          continue;
+        }
+        // World -> clip of the light's frustum (see vtkTransmittanceLightFrustum).
+        vtkTransmittanceLightFrustum* f = p.Frustum;
+        double x[3], y[3], z[3];
+        std::copy(f->GetAxisX(), f->GetAxisX() + 3, x);
+        std::copy(f->GetAxisY(), f->GetAxisY() + 3, y);
+        std::copy(f->GetAxisZ(), f->GetAxisZ() + 3, z);
+        const double lx = vtkMath::Normalize(x), ly = vtkMath::Normalize(y);
+        vtkMath::Normalize(z);
+        const double* o = f->GetOrigin();
+        double nearDistance, farDistance = 0.0, minDepth = VTK_DOUBLE_MAX;
+        for (int c = 0; c < 8; ++c)
+        {
+          const double v[3] = { corners[3 * c] - o[0], corners[3 * c + 1] - o[1],
+            corners[3 * c + 2] - o[2] };
+          farDistance = std::max(farDistance, vtkMath::Dot(v, z));
+          minDepth = std::min(minDepth, vtkMath::Dot(v, z));
+        }
+        farDistance += 0.01 * diagonal;
+        vtkNew<vtkMatrix4x4> lightClip;
+        lightClip->Zero();
+        if (!p.Positional)
+        {
+          nearDistance = -10.0 * diagonal; // occluders far towards the light count too
+          const double sz = 2.0 / (farDistance - nearDistance);
+          for (int k = 0; k < 3; ++k)
+          {
+            lightClip->SetElement(0, k, 2.0 / lx * x[k]);
+            lightClip->SetElement(1, k, 2.0 / ly * y[k]);
+            lightClip->SetElement(2, k, sz * z[k]);
+          }
+          lightClip->SetElement(0, 3, -2.0 / lx * vtkMath::Dot(o, x) - 1.0);
+          lightClip->SetElement(1, 3, -2.0 / ly * vtkMath::Dot(o, y) - 1.0);
+          lightClip->SetElement(2, 3, -sz * (vtkMath::Dot(o, z) + nearDistance) - 1.0);
+          lightClip->SetElement(3, 3, 1.0);
+        }
+        else
+        {
+          nearDistance = 1e-3 * std::max(minDepth, 1e-6 * diagonal);
+          const double a = (farDistance + nearDistance) / (farDistance - nearDistance);
+          const double b = -2.0 * farDistance * nearDistance / (farDistance - nearDistance);
+          for (int k = 0; k < 3; ++k)
+          {
+            lightClip->SetElement(0, k, x[k] / lx);
+            lightClip->SetElement(1, k, y[k] / ly);
+            lightClip->SetElement(2, k, a * z[k]);
+            lightClip->SetElement(3, k, z[k]);
+          }
+          lightClip->SetElement(0, 3, -vtkMath::Dot(o, x) / lx);
+          lightClip->SetElement(1, 3, -vtkMath::Dot(o, y) / ly);
+          lightClip->SetElement(2, 3, -a * vtkMath::Dot(o, z) + b);
+          lightClip->SetElement(3, 3, -vtkMath::Dot(o, z));
+        }
+        // A camera whose composite projection is exactly lightClip.
+        lightCamera->SetPosition(o[0], o[1], o[2]);
+        lightCamera->SetFocalPoint(o[0] + z[0], o[1] + z[1], o[2] + z[2]);
+        lightCamera->SetViewUp(y);
+        vtkNew<vtkMatrix4x4> viewInverse, projection;
+        vtkMatrix4x4::Invert(lightCamera->GetViewTransformMatrix(), viewInverse);
+        vtkMatrix4x4::Multiply4x4(lightClip, viewInverse, projection);
+        lightCamera->SetExplicitProjectionTransformMatrix(projection);
+        lightCamera->UseExplicitProjectionTransformMatrixOn();
+
+        // Depth of the opaque actors from the light.
+        in.OcclusionFramebuffer->AddColorAttachment(0, in.LightColorTexture);
+        in.OcclusionFramebuffer->AddDepthAttachment(in.LightDepthTexture);
+        in.OcclusionFramebuffer->ActivateDrawBuffers(1);
+        state->vtkglViewport(0, 0, size, size);
+        state->vtkglDisable(GL_SCISSOR_TEST);
+        state->vtkglDisable(GL_BLEND);
+        state->vtkglEnable(GL_DEPTH_TEST);
+        state->vtkglDepthMask(GL_TRUE);
+        state->vtkglClearDepth(1.0);
+        state->vtkglClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+        renderer->SetActiveCamera(lightCamera);
+        for (vtkActor* actor : occluders)
+        {
+          actor->RenderOpaqueGeometry(renderer);
+        }
+        renderer->SetActiveCamera(viewCamera);
+        in.OcclusionFramebuffer->RemoveDepthAttachment();
+
+        // Depth -> distance along the map rays, into slice l.
+        in.OcclusionFramebuffer->AddColorAttachment(0, in.OcclusionTexture, l);
+        in.OcclusionFramebuffer->ActivateDrawBuffers(1);
+        state->vtkglDisable(GL_DEPTH_TEST);
+        window->GetShaderCache()->ReadyShaderProgram(in.OcclusionQuad->Program);
+        vtkShaderProgram* program = in.OcclusionQuad->Program;
+        if (!program || !program->GetCompiled())
+        {
+          vtkErrorMacro(<< "The occlusion shader did not compile.");
+          ok = false;
+          break;
+        }
+        setCommonUniforms(program);
+        in.LightDepthTexture->Activate();
+        program->SetUniformi("lightDepth", in.LightDepthTexture->GetTextureUnit());
+        program->SetUniformi("lightIndex", l);
+        program->SetUniformf("nearDistance", static_cast<float>(nearDistance));
+        program->SetUniformf("farDistance", static_cast<float>(farDistance));
+        in.OcclusionQuad->Render();
+        in.LightDepthTexture->Deactivate();
+      }
+      in.OcclusionFramebuffer->RemoveColorAttachments(1);
+    }
+    state->PopFramebufferBindings();
+    viewCamera->UnRegister(this);
+    return ok;
+  };
+  const bool occlusion = !occluders.empty() && buildOcclusion();
+
+  // 6. Transmittance maps, rebuilt only when what they depend on changed.
   const bool needMaps = scattering && IsMapMethod(this->TransmittanceMethod) &&
     std::any_of(in.Lights.begin(), in.Lights.end(),
       [](const LightParameters& p) { return IsMapMethod(p.Method); });
@@ -736,7 +948,7 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     }
   }
 
-  // 6. The depth of opaque geometry already drawn, resolved by a blit (the
+  // 7. The depth of opaque geometry already drawn, resolved by a blit (the
   // window's frame buffer may be multisampled, which glCopyTexImage refuses).
   const int* windowSize = window->GetSize();
   if (!in.DepthTexture)
@@ -782,7 +994,7 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   state->PopFramebufferBindings();
   in.DepthTexture->Activate();
 
-  // 7. The camera rays.
+  // 8. The camera rays.
   std::string fs = std::string(vtkTransmittanceCommonFS) + vtkTransmittanceRayCastFS;
   if (!in.RayCastQuad)
   {
@@ -833,6 +1045,14 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   program->SetUniformf(
     "emissionScale", this->EmissionColor ? static_cast<float>(this->EmissionScale) : 0.0f);
   program->SetUniformi("numberOfLights", numberOfLights);
+  program->SetUniformi("useOcclusion", occlusion ? 1 : 0);
+  if (occlusion)
+  {
+    in.OcclusionTexture->Activate();
+    program->SetUniformi("occlusionTexture", in.OcclusionTexture->GetTextureUnit());
+    program->SetUniformi("occlusionSlices", in.OcclusionSlices);
+    program->SetUniformf("occlusionBias", static_cast<float>(2.0 * minWorldSpacing));
+  }
   float irradiance[kMaxLights][3] = {}, position[kMaxLights][3] = {},
         direction[kMaxLights][3] = {}, attenuation[kMaxLights][3] = {};
   float coneCosine[kMaxLights] = {}, exponent[kMaxLights] = {};
@@ -874,6 +1094,10 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   if (in.MapTexture)
   {
     in.MapTexture->Deactivate();
+  }
+  if (occlusion)
+  {
+    in.OcclusionTexture->Deactivate();
   }
   in.DepthTexture->Deactivate();
   in.VolumeTexture->Deactivate();

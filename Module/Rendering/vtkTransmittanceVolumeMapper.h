@@ -43,7 +43,11 @@
  * (GetMaximumNumberOfLights()); further lights are ignored with a warning.
  *
  * View rays stop at the depth of opaque geometry already drawn. Opaque
- * geometry does not (yet) block light inside the medium.
+ * actors also block light entering the medium: each frame with visible
+ * opaque vtkActors, their depth is rendered from every light's frustum
+ * (the TFM paper's light-space depth) and samples behind it get no light
+ * from that light, whatever the method. Lights inside the bounds (no
+ * frustum) are not blocked by geometry.
  *
  * Bad input is reported with vtkErrorMacro and leaves the rest of the
  * render intact: no input, no or multi-component scalars, fewer than 2

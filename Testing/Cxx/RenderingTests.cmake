@@ -11,7 +11,8 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestTransmittanceMapperCaching.cxx
   TestTransmittanceMapperBadInput.cxx
-  TestTransmittanceMapperReference.cxx)
+  TestTransmittanceMapperReference.cxx
+  TestTransmittanceMapperOccluder.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperEmissionAbsorption.cxx
   TestTransmittanceMapperScenes.cxx)

@@ -7,6 +7,8 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
@@ -142,6 +144,19 @@ int TestTransmittanceMapperBadInput(int, char*[])
     expectError(image, "2 NaN or Inf", "NaN and Inf scalars are replaced, with a warning", true);
     Check(!observer->GetError(), "NaN scalars are not an error");
     Check(CountForeground(window) > sphereOnly, "the volume with NaN scalars is drawn");
+  }
+
+  // Larger than the GPU's 3-D texture limit along x: downsampled, with a warning.
+  {
+    auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+    const int limit = vtkTextureObject::GetMaximumTextureSize3D(glWindow);
+    std::cout << "GL_MAX_3D_TEXTURE_SIZE " << limit << std::endl;
+    auto image = MakeImage(limit + 5, 4, 4, 1, 4.0);
+    image->SetSpacing(1.0 / limit, 0.2, 0.2);
+    expectError(image, "exceeds the GPU's 3-D texture size", "an oversized volume is downsampled",
+      true);
+    Check(!observer->GetError(), "an oversized volume is not an error");
+    Check(CountForeground(window) > sphereOnly, "the downsampled volume is drawn");
   }
 
   // No lights: ambient and emission only, no error; here the volume is dark.

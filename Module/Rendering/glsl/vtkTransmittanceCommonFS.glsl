@@ -31,6 +31,7 @@ uniform float densityScale;
 // dir = lightAxisZ. Positional: origin = lightOrigin, dir =
 // normalize(lightAxisZ + (2a - 1) lightAxisX + (2b - 1) lightAxisY).
 uniform int lightPositional[TYNDALL_MAX_LIGHTS];
+uniform int lightHasFrustum[TYNDALL_MAX_LIGHTS]; // 0: light inside the bounds
 uniform vec3 lightOrigin[TYNDALL_MAX_LIGHTS];
 uniform vec3 lightAxisX[TYNDALL_MAX_LIGHTS];
 uniform vec3 lightAxisY[TYNDALL_MAX_LIGHTS];

@@ -39,9 +39,36 @@ vec3 unproject(vec2 ndcXY, float ndcZ)
   return p.xyz / p.w;
 }
 
+uniform int useOcclusion;
+uniform sampler3D occlusionTexture; // per light: distance to opaque geometry
+uniform int occlusionSlices;
+uniform float occlusionBias;
+
+// Whether opaque geometry lies between x and light l.
+bool occluded(int l, vec3 x)
+{
+  if (useOcclusion == 0 || lightHasFrustum[l] == 0)
+  {
+    return false;
+  }
+  vec2 ab = tyndallLightTexel(l, x);
+  if (any(lessThan(ab, vec2(0.0))) || any(greaterThan(ab, vec2(1.0))))
+  {
+    return false;
+  }
+  vec3 origin, dir;
+  tyndallLightRay(l, ab, origin, dir);
+  float tOccluder = texture(occlusionTexture, vec3(ab, (float(l) + 0.5) / float(occlusionSlices))).r;
+  return dot(x - origin, dir) > tOccluder + occlusionBias;
+}
+
 // Light transmittance from x towards light l (world direction toLight).
 float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
 {
+  if (occluded(l, x))
+  {
+    return 0.0;
+  }
   int m = lightMethod[l];
   if (m == TYNDALL_NONE)
   {
