@@ -13,6 +13,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkTesting.h"
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <string>
 
 namespace tyndall_test
 {
@@ -88,8 +90,19 @@ inline int RegressionTestWithPSNR(int argc, char* argv[], vtkRenderWindow* windo
             << std::endl;
   if (!(psnr >= minPSNR))
   {
-    std::cerr << "Failed Image Test: PSNR " << psnr << " dB is below " << minPSNR << " dB"
-              << std::endl;
+    // VTK's comparison passed, so it wrote no candidate: write it here, where
+    // Documentation/testing.md says candidates are.
+    std::string name = testing->GetValidImageFileName();
+    name = name.substr(name.find_last_of("/\\") + 1);
+    const std::string candidate = std::string(testing->GetTempDirectory()) + "/" + name;
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->SetFileName(candidate.c_str());
+    writer->Write();
+    std::cout << "<DartMeasurementFile name=\"TestImage\" type=\"image/png\">" << candidate
+              << "</DartMeasurementFile>" << std::endl;
+    std::cerr << "Failed Image Test: PSNR " << psnr << " dB is below " << minPSNR
+              << " dB; candidate image: " << candidate << std::endl;
     return vtkTesting::FAILED;
   }
   return vtkResult;
