@@ -11,3 +11,7 @@ run() { xvfb-run -a -s "-screen 0 1280x1024x24" "$@"; }
 
 # The README's picture: the built-in default scene.
 run "$build/bin/tyndall-render" -o "$images/tyndall-cloud.png" -s 384 384
+
+# The method gallery: every method beside the CPU reference, cloud and dense.
+PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
+  "$root/Documentation/scripts/method_gallery.py" "$images"

@@ -1,0 +1,156 @@
+"""Renders the documentation's method gallery: every transmittance method of
+vtkTransmittanceVolumeMapper beside the CPU reference, on the built-in cloud
+and on a dense medium, with the PSNR of each against the reference.
+
+    PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \
+        Documentation/scripts/method_gallery.py Documentation/images
+"""
+
+import math
+import sys
+
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
+                                         vtkRenderWindow, vtkTextActor, vtkVolume,
+                                         vtkVolumeProperty, vtkWindowToImageFilter)
+import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
+
+from tyndall import (vtkCosineNoiseSource, vtkSingleScatteringReference,
+                     vtkTransmittanceVolumeMapper)
+
+SIZE = 192
+METHODS = ["None", "BruteForce", "TFM", "AdaptiveTFM", "ETM", "AdaptiveETM"]
+
+
+def medium(dense):
+    source = vtkCosineNoiseSource()
+    source.SetWholeExtent(0, 63, 0, 63, 0, 63)
+    source.SetSpacing(2 / 63, 2 / 63, 2 / 63)
+    if dense:
+        source.SetEnvelopeTypeToSphere()
+        source.SetEnvelopeRadius(0.85)
+        source.SetEnvelopeFalloff(0.15)
+        source.GetNoise().SetNumberOfOctaves(3)
+        source.GetNoise().SetOffset(12.0)
+    source.Update()
+    return source.GetOutput()
+
+
+def psnr(a, b):
+    sa, sb = a.GetPointData().GetScalars(), b.GetPointData().GetScalars()
+    ca, cb = sa.GetNumberOfComponents(), sb.GetNumberOfComponents()
+    total = 0.0
+    for i in range(sa.GetNumberOfTuples()):
+        for c in range(3):
+            d = sa.GetComponent(i, c) - sb.GetComponent(i, c)
+            total += d * d
+    mse = total / (3 * sa.GetNumberOfTuples())
+    return float("inf") if mse == 0 else 10 * math.log10(255 ** 2 / mse)
+
+
+def label(image, text):
+    """Draws `text` on a copy of `image` through a tiny render window."""
+    from vtkmodules.vtkRenderingCore import vtkImageActor
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(SIZE, SIZE)
+    renderer = vtkRenderer()
+    actor = vtkImageActor()
+    actor.GetMapper().SetInputData(image)
+    renderer.AddActor(actor)
+    caption = vtkTextActor()
+    caption.SetInput(text)
+    caption.GetTextProperty().SetFontSize(13)
+    caption.SetPosition(4, 4)
+    renderer.AddActor2D(caption)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    camera = renderer.GetActiveCamera()
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(SIZE / 2)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    out = vtkImageData()
+    out.DeepCopy(grab.GetOutput())
+    return out
+
+
+def row(dense):
+    data = medium(dense)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0, 0)
+    opacity.AddPoint(8, 0.9 if dense else 0.5)
+    albedo = vtkColorTransferFunction()
+    albedo.AddRGBPoint(0, 0.9, 0.9, 0.9)
+    prop = vtkVolumeProperty()
+    prop.SetScalarOpacity(opacity)
+    prop.SetColor(albedo)
+    prop.SetScalarOpacityUnitDistance(0.05)
+    mapper = vtkTransmittanceVolumeMapper()
+    mapper.SetInputData(data)
+    mapper.JitterOff()
+    mapper.SetAmbientIntensity(0.1)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    renderer = vtkRenderer()
+    renderer.AddVolume(volume)
+    renderer.SetBackground(0.2, 0.3, 0.45)
+    sun = vtkLight()
+    sun.SetLightTypeToSceneLight()
+    sun.SetPositional(False)
+    sun.SetPosition(1, 0.5, 0.3)
+    sun.SetFocalPoint(0, 0, 0)
+    renderer.AddLight(sun)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, -0.6, 4.2)
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetViewAngle(30)
+    renderer.ResetCameraClippingRange()
+    window = vtkRenderWindow()
+    window.SetMultiSamples(0)
+    window.SetOffScreenRendering(1)
+    window.SetSize(SIZE, SIZE)
+    window.AddRenderer(renderer)
+    window.Render()
+    reference = vtkSingleScatteringReference()
+    reference.SetAmbientIntensity(0.1)
+    reference.Render(renderer, volume, SIZE, SIZE)
+    cpu = vtkImageData()
+    cpu.DeepCopy(reference.Composite())
+    tiles = [label(cpu, "CPU reference")]
+    for index, name in enumerate(METHODS):
+        mapper.SetTransmittanceMethod(index)
+        window.Render()
+        grab = vtkWindowToImageFilter()
+        grab.SetInput(window)
+        grab.ReadFrontBufferOff()
+        grab.Update()
+        image = vtkImageData()
+        image.DeepCopy(grab.GetOutput())
+        tiles.append(label(image, "%s %.1f dB" % (name, psnr(image, cpu))))
+    append = vtkImageAppend()
+    append.SetAppendAxis(0)
+    for tile in tiles:
+        append.AddInputData(tile)
+    append.Update()
+    return append.GetOutput()
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else "."
+    for dense, name in ((False, "methods-cloud.png"), (True, "methods-dense.png")):
+        writer = vtkPNGWriter()
+        writer.SetInputData(row(dense))
+        writer.SetFileName(out + "/" + name)
+        writer.Write()
+        print(out + "/" + name)
+
+
+main()
