@@ -30,6 +30,7 @@
 #include <cstring>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -225,8 +226,17 @@ int main(int argc, char* argv[])
     Scene probe = MakeScene(tyndall_test::MakeCloud(8), 0.5, o);
     probe.Window->SetSize(16, 16);
     probe.Window->Render();
-    std::cout << "OpenGL: " << vtkOpenGLRenderWindow::SafeDownCast(probe.Window)->ReportCapabilities()
-              << "\n";
+    // The renderer and version lines of VTK's capability report.
+    std::istringstream report(
+      vtkOpenGLRenderWindow::SafeDownCast(probe.Window)->ReportCapabilities());
+    std::string line;
+    while (std::getline(report, line))
+    {
+      if (line.rfind("OpenGL renderer", 0) == 0 || line.rfind("OpenGL version", 0) == 0)
+      {
+        std::cout << line << "\n";
+      }
+    }
   }
 
   std::vector<double> cloudFrame, cloudPSNR, denseFrame, densePSNR;
