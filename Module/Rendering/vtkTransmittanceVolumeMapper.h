@@ -66,6 +66,7 @@
 #define vtkTransmittanceVolumeMapper_h
 
 #include "TyndallRenderingModule.h" // For export macro
+#include "vtkTransmittanceMapMath.h"   // For the method constants
 #include "vtkVolumeMapper.h"
 
 #include <memory> // For std::unique_ptr
@@ -85,15 +86,15 @@ public:
     SINGLE_SCATTERING = 1
   };
 
-  /// Values of vtkTransmittanceMapMath::TransmittanceMethods.
+  /// The methods, shared with the CPU math (vtkTransmittanceMapMath).
   enum TransmittanceMethods
   {
-    NONE = 0,
-    BRUTE_FORCE = 1,
-    TFM = 2,
-    ADAPTIVE_TFM = 3,
-    ETM = 4,
-    ADAPTIVE_ETM = 5
+    NONE = vtkTransmittanceMapMath::NONE,
+    BRUTE_FORCE = vtkTransmittanceMapMath::BRUTE_FORCE,
+    TFM = vtkTransmittanceMapMath::TFM,
+    ADAPTIVE_TFM = vtkTransmittanceMapMath::ADAPTIVE_TFM,
+    ETM = vtkTransmittanceMapMath::ETM,
+    ADAPTIVE_ETM = vtkTransmittanceMapMath::ADAPTIVE_ETM
   };
 
   ///@{
