@@ -41,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -129,6 +130,8 @@ public:
   int MapSlices = 0;
   int MapSize = 0;
   int DepthFormat = -1;
+  int SoftwareRenderer = -1; // llvmpipe: 1, other: 0, unknown: -1
+  bool WarnedLoopLimit = false;
 
   std::vector<LightParameters> Lights;
   double WorldToVolume[16];
@@ -1036,6 +1039,32 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   program->SetUniformi("layersPerLight", layers);
   program->SetUniformi("mapSlices", std::max(in.MapSlices, 1));
   const double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * minWorldSpacing;
+  // Mesa's llvmpipe (software OpenGL) stops all loops of a shader invocation
+  // after 65535 iterations in total, silently: a ray would end early. Warn
+  // when a frame can get there (counted per camera ray: its steps, plus the
+  // brute-force light marches, eight samples per iteration).
+  if (in.SoftwareRenderer < 0)
+  {
+    const char* rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    in.SoftwareRenderer = rendererName && std::strstr(rendererName, "llvmpipe") ? 1 : 0;
+  }
+  if (in.SoftwareRenderer == 1)
+  {
+    int bruteForceLights = 0;
+    for (const LightParameters& p : in.Lights)
+    {
+      bruteForceLights += p.Method == BRUTE_FORCE ? 1 : 0;
+    }
+    const double iterations =
+      (diagonal / step + 2.0) * (1.0 + bruteForceLights * std::ceil(this->LightSampleCount / 8.0));
+    if (iterations > 65535.0 && !in.WarnedLoopLimit)
+    {
+      vtkWarningMacro(<< "llvmpipe stops a shader's loops after 65535 iterations; a camera ray "
+                      << "here can need " << iterations
+                      << ". Increase SampleDistance or lower LightSampleCount, or rays end early.");
+      in.WarnedLoopLimit = true;
+    }
+  }
   program->SetUniformf("stepLength", static_cast<float>(step));
   program->SetUniformi("maxSteps", static_cast<int>(std::min(65536.0, diagonal / step + 2.0)));
   program->SetUniformi("lightSampleCount", this->LightSampleCount);

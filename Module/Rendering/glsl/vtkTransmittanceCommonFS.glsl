@@ -132,22 +132,24 @@ float tyndallReconstruct(int method, float c[TYNDALL_MAX_COEFFICIENTS], int coun
   if (method == TYNDALL_TFM || method == TYNDALL_ADAPTIVE_TFM)
   {
     float T = 0.5 * c[0];
-    for (int j = 1; j < count; ++j)
+    // Constant trip counts (unrolled; see tyndall's note on llvmpipe's loop
+    // limit in vtkTransmittanceVolumeMapper.cxx).
+    for (int j = 1; j < TYNDALL_MAX_COEFFICIENTS; ++j)
     {
       float cNext = cj * c1 - sj * s1;
       sj = sj * c1 + cj * s1;
       cj = cNext;
-      T += c[j] * cj;
+      T += j < count ? c[j] * cj : 0.0;
     }
     return clamp(T, 0.0, 1.0);
   }
   float tau = 0.5 * c[0] * u;
-  for (int j = 1; j < count; ++j)
+  for (int j = 1; j < TYNDALL_MAX_COEFFICIENTS; ++j)
   {
     float cNext = cj * c1 - sj * s1;
     sj = sj * c1 + cj * s1;
     cj = cNext;
-    tau += c[j] * sj / (float(j) * TYNDALL_PI);
+    tau += j < count ? c[j] * sj / (float(j) * TYNDALL_PI) : 0.0;
   }
   return exp(-max(tau, 0.0));
 }

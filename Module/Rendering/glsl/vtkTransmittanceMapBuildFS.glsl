@@ -37,9 +37,9 @@ float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool e
     float s1 = sin(TYNDALL_PI * u);
     float cj = 1.0;
     float sj = 0.0;
-    for (int j = 0; j < coefficientCount; ++j)
+    for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j) // constant: unrolled
     {
-      coefficients[j] += 2.0 * value * cj * du;
+      coefficients[j] += j < coefficientCount ? 2.0 * value * cj * du : 0.0;
       float cNext = cj * c1 - sj * s1;
       sj = sj * c1 + cj * s1;
       cj = cNext;

@@ -84,11 +84,21 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
     }
     float dt = tEnd / float(lightSampleCount);
     float tau = 0.0;
-    for (int n = 0; n < lightSampleCount; ++n)
+    // Eight samples per iteration: the inner loop has a constant trip count
+    // and is unrolled, so the loop runs lightSampleCount / 8 times (Mesa's
+    // llvmpipe stops a fragment's loops after 65535 iterations in all; see
+    // the mapper's warning about it).
+    for (int n = 0; n < lightSampleCount; n += 8)
     {
-      tau += tyndallExtinction(x + (float(n) + 0.5) * dt * toLight) * dt;
+      for (int k = 0; k < 8; ++k)
+      {
+        if (n + k < lightSampleCount)
+        {
+          tau += tyndallExtinction(x + (float(n + k) + 0.5) * dt * toLight);
+        }
+      }
     }
-    return exp(-tau);
+    return exp(-tau * dt);
   }
   // Transmittance maps.
   vec2 ab = tyndallLightTexel(l, x);
