@@ -240,8 +240,11 @@ bool UploadVolume(vtkTransmittanceVolumeMapper* self, vtkImageData* input,
   vtkDataArray* scalars = input->GetPointData()->GetScalars();
   int pointDims[3];
   input->GetDimensions(pointDims);
-  input->GetOrigin(origin);
   input->GetSpacing(spacing);
+  // `origin` is the physical position of the first sample: the image's
+  // origin plus its direction times the extent's start (not always 0).
+  const int* extent = input->GetExtent();
+  double firstIndex[3] = { double(extent[0]), double(extent[2]), double(extent[4]) };
   if (!scalars && input->GetCellData()->GetScalars())
   {
     // Cell scalars: the point grid of the cell centres.
@@ -249,9 +252,10 @@ bool UploadVolume(vtkTransmittanceVolumeMapper* self, vtkImageData* input,
     for (int k = 0; k < 3; ++k)
     {
       pointDims[k] = std::max(pointDims[k] - 1, 1);
-      origin[k] += 0.5 * spacing[k];
+      firstIndex[k] += 0.5;
     }
   }
+  input->TransformContinuousIndexToPhysicalPoint(firstIndex, origin);
   if (!scalars)
   {
     vtkErrorWithObjectMacro(self, << "The input has no scalars to render.");

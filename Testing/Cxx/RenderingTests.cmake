@@ -12,7 +12,8 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperCaching.cxx
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
-  TestTransmittanceMapperOccluder.cxx)
+  TestTransmittanceMapperOccluder.cxx
+  TestTransmittanceMapperGeometry.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperEmissionAbsorption.cxx
   TestTransmittanceMapperScenes.cxx)
