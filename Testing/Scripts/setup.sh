@@ -21,6 +21,10 @@ packages=(
   python3 python3-dev python3-vtk9    # Python wrapping and tests (/usr/bin/python3)
   xvfb xauth                          # a virtual X display for rendering
   libgl1-mesa-dri libglx-mesa0        # Mesa llvmpipe OpenGL
+  libopenvdb-dev libopenvdb-tools     # Tyndall::IO (OpenVDB reader/writer; vdb_print)
+  clang libclang-rt-14-dev            # libFuzzer for the reader's fuzz test (Testing/Fuzz)
+  libopenexr-dev                      # tyndall-render --exr (linear float OpenEXR output)
+  libglfw3-dev libglew-dev            # tyndall-viewer (GLFW window, GLEW)
 )
 
 install_packages() {

@@ -1,0 +1,2 @@
+unit-distance 0
+opacity 0 0

@@ -1,0 +1,2 @@
+# only colours
+color 0 1 1 1

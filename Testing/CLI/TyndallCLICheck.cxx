@@ -1,0 +1,717 @@
+// TyndallCLICheck: the checker behind the tyndall-render tests
+// (Testing/CLI/CMakeLists.txt). Subcommands:
+//
+//   run [--exit 0|nonzero|N] [--stdout-has TEXT]... [--stderr-has TEXT]...
+//       [--stderr-lacks TEXT]... [--remove FILE]... [--skip-unless PATH]...
+//       -- PROGRAM ARGS...
+//     Runs PROGRAM, checks its exit status (default 0) and that its stdout /
+//     stderr contain (or lack) the texts. --remove deletes stale outputs
+//     first.
+//   psnr IMAGE BASELINE MIN_DB [--skip-unless PATH]...
+//     PSNR of two 8-bit PNGs over RGB; fails below MIN_DB or without a
+//     baseline (the message names the candidate to review).
+//   exr EXR PNG WIDTH HEIGHT MAX_LEVELS [MIN_MAXIMUM]
+//     The EXR has WIDTH x HEIGHT finite RGB pixels whose clamp(v, 0, 1) *
+//     255 agrees with the PNG within MAX_LEVELS; with MIN_MAXIMUM, the EXR's
+//     largest value must reach it (proving unclamped float capture).
+//   nonempty PNG MIN_FRACTION [--skip-unless PATH]...
+//     At least MIN_FRACTION of the pixels differ from the corner pixel by
+//     more than 2 levels (something was drawn on the background).
+//   make-data DIR
+//     Writes the synthetic inputs of the loader tests into DIR.
+//
+// Exit status: 0 pass, 1 fail, 125 skipped (CTest SKIP_RETURN_CODE).
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMetaImageWriter.h"
+#include "vtkNIFTIImageWriter.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSphereSource.h"
+#include "vtkStructuredPointsWriter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtksys/Process.h"
+#include "vtksys/SystemTools.hxx"
+
+#ifdef TYNDALL_HAVE_OPENEXR
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#endif
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace
+{
+constexpr int Pass = 0;
+constexpr int Fail = 1;
+constexpr int Skip = 125;
+
+int Usage()
+{
+  std::cerr << "usage: TyndallCLICheck run|psnr|exr|nonempty|make-data ... (see the source)\n";
+  return Fail;
+}
+
+// Handles --skip-unless PATH pairs in args[from..]; returns true to skip.
+bool SkipUnless(const std::vector<std::string>& args, size_t from)
+{
+  for (size_t i = from; i + 1 < args.size(); ++i)
+  {
+    if (args[i] == "--skip-unless" && !vtksys::SystemTools::PathExists(args[i + 1]))
+    {
+      std::cout << "SKIP: " << args[i + 1] << " is absent\n";
+      return true;
+    }
+  }
+  return false;
+}
+
+int Run(const std::vector<std::string>& args)
+{
+  std::string exitSpec = "0";
+  std::vector<std::string> stdoutHas, stderrHas, stderrLacks, removes, skipUnless;
+  size_t i = 0;
+  for (; i < args.size() && args[i] != "--"; ++i)
+  {
+    if (i + 1 >= args.size())
+    {
+      return Usage();
+    }
+    const std::string& option = args[i];
+    const std::string& value = args[++i];
+    if (option == "--exit")
+      exitSpec = value;
+    else if (option == "--stdout-has")
+      stdoutHas.push_back(value);
+    else if (option == "--stderr-has")
+      stderrHas.push_back(value);
+    else if (option == "--stderr-lacks")
+      stderrLacks.push_back(value);
+    else if (option == "--remove")
+      removes.push_back(value);
+    else if (option == "--skip-unless")
+      skipUnless.push_back(value);
+    else
+      return Usage();
+  }
+  if (i + 1 >= args.size())
+  {
+    return Usage();
+  }
+  for (const auto& path : skipUnless)
+  {
+    if (!vtksys::SystemTools::PathExists(path))
+    {
+      std::cout << "SKIP: " << path << " is absent\n";
+      return Skip;
+    }
+  }
+  for (const auto& path : removes)
+  {
+    vtksys::SystemTools::RemoveFile(path);
+  }
+  std::vector<const char*> command;
+  for (size_t k = i + 1; k < args.size(); ++k)
+  {
+    command.push_back(args[k].c_str());
+  }
+  command.push_back(nullptr);
+
+  vtksysProcess* process = vtksysProcess_New();
+  vtksysProcess_SetCommand(process, command.data());
+  vtksysProcess_Execute(process);
+  std::string out, err;
+  char* data = nullptr;
+  int length = 0;
+  for (;;)
+  {
+    const int pipe = vtksysProcess_WaitForData(process, &data, &length, nullptr);
+    if (pipe == vtksysProcess_Pipe_STDOUT)
+      out.append(data, length);
+    else if (pipe == vtksysProcess_Pipe_STDERR)
+      err.append(data, length);
+    else
+      break;
+  }
+  vtksysProcess_WaitForExit(process, nullptr);
+  const int state = vtksysProcess_GetState(process);
+  const int exitValue = vtksysProcess_GetExitValue(process);
+  vtksysProcess_Delete(process);
+
+  std::cout << "command:";
+  for (size_t k = i + 1; k < args.size(); ++k)
+  {
+    std::cout << " " << args[k];
+  }
+  std::cout << "\n--- stdout ---\n" << out << "--- stderr ---\n" << err << "--------------\n";
+  if (state != vtksysProcess_State_Exited)
+  {
+    std::cout << "FAIL: the program did not exit normally (state " << state << ")\n";
+    return Fail;
+  }
+  std::cout << "exit status " << exitValue << "\n";
+  bool ok = true;
+  if (exitSpec == "nonzero")
+  {
+    if (exitValue == 0)
+    {
+      std::cout << "FAIL: expected a non-zero exit status\n";
+      ok = false;
+    }
+  }
+  else if (std::to_string(exitValue) != exitSpec)
+  {
+    std::cout << "FAIL: expected exit status " << exitSpec << "\n";
+    ok = false;
+  }
+  for (const auto& text : stdoutHas)
+  {
+    if (out.find(text) == std::string::npos)
+    {
+      std::cout << "FAIL: stdout lacks '" << text << "'\n";
+      ok = false;
+    }
+  }
+  for (const auto& text : stderrHas)
+  {
+    if (err.find(text) == std::string::npos)
+    {
+      std::cout << "FAIL: stderr lacks '" << text << "'\n";
+      ok = false;
+    }
+  }
+  for (const auto& text : stderrLacks)
+  {
+    if (err.find(text) != std::string::npos)
+    {
+      std::cout << "FAIL: stderr has '" << text << "'\n";
+      ok = false;
+    }
+  }
+  return ok ? Pass : Fail;
+}
+
+vtkSmartPointer<vtkImageData> ReadPNG(const std::string& path)
+{
+  vtkNew<vtkPNGReader> reader;
+  if (!vtksys::SystemTools::FileExists(path, true) || !reader->CanReadFile(path.c_str()))
+  {
+    std::cout << "FAIL: " << path << " is missing or not a PNG\n";
+    return nullptr;
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->ShallowCopy(reader->GetOutput());
+  if (!image->GetPointData()->GetScalars() ||
+    image->GetPointData()->GetScalars()->GetNumberOfComponents() < 3 ||
+    image->GetScalarType() != VTK_UNSIGNED_CHAR)
+  {
+    std::cout << "FAIL: " << path << " is not an 8-bit RGB(A) PNG\n";
+    return nullptr;
+  }
+  return image;
+}
+
+// RGB value of pixel (x, y) (y up), channel c.
+double Pixel(vtkImageData* image, int x, int y, int c)
+{
+  return image->GetScalarComponentAsDouble(x, y, 0, c);
+}
+
+int Psnr(const std::vector<std::string>& args)
+{
+  if (args.size() < 3)
+  {
+    return Usage();
+  }
+  if (SkipUnless(args, 3))
+  {
+    return Skip;
+  }
+  const std::string& candidate = args[0];
+  const std::string& baseline = args[1];
+  const double floor = std::atof(args[2].c_str());
+  auto a = ReadPNG(candidate);
+  if (!a)
+  {
+    return Fail;
+  }
+  if (!vtksys::SystemTools::FileExists(baseline, true))
+  {
+    std::cout << "FAIL: no baseline " << baseline << "; review the candidate " << candidate
+              << " and copy it there if it is right (Documentation/testing.md)\n";
+    return Fail;
+  }
+  auto b = ReadPNG(baseline);
+  if (!b)
+  {
+    return Fail;
+  }
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  if (da[0] != db[0] || da[1] != db[1])
+  {
+    std::cout << "FAIL: size " << da[0] << " x " << da[1] << " differs from the baseline's "
+              << db[0] << " x " << db[1] << "\n";
+    return Fail;
+  }
+  double sum = 0.0;
+  for (int y = 0; y < da[1]; ++y)
+  {
+    for (int x = 0; x < da[0]; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double d = Pixel(a, x, y, c) - Pixel(b, x, y, c);
+        sum += d * d;
+      }
+    }
+  }
+  const double mse = sum / (3.0 * da[0] * da[1]);
+  const double psnr =
+    mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+  std::cout << "PSNR of " << candidate << " against " << baseline << ": " << psnr << " dB (floor "
+            << floor << " dB)\n";
+  if (!(psnr >= floor))
+  {
+    std::cout << "FAIL: below the floor\n";
+    return Fail;
+  }
+  return Pass;
+}
+
+int Exr(const std::vector<std::string>& args)
+{
+#ifdef TYNDALL_HAVE_OPENEXR
+  if (args.size() < 5)
+  {
+    return Usage();
+  }
+  const std::string& exr = args[0];
+  auto png = ReadPNG(args[1]);
+  if (!png)
+  {
+    return Fail;
+  }
+  const int width = std::atoi(args[2].c_str());
+  const int height = std::atoi(args[3].c_str());
+  const double tolerance = std::atof(args[4].c_str());
+  const bool checkMaximum = args.size() > 5;
+  const double minMaximum = checkMaximum ? std::atof(args[5].c_str()) : 0.0;
+  std::vector<float> rgb;
+  int w = 0, h = 0;
+  try
+  {
+    Imf::InputFile file(exr.c_str());
+    const Imath::Box2i window = file.header().dataWindow();
+    w = window.max.x - window.min.x + 1;
+    h = window.max.y - window.min.y + 1;
+    for (const char* name : { "R", "G", "B" })
+    {
+      const Imf::Channel* channel = file.header().channels().findChannel(name);
+      if (!channel || channel->type != Imf::FLOAT)
+      {
+        std::cout << "FAIL: " << exr << " has no FLOAT channel " << name << "\n";
+        return Fail;
+      }
+    }
+    rgb.assign(static_cast<size_t>(w) * h * 3, 0.0f);
+    Imf::FrameBuffer frame;
+    char* base = reinterpret_cast<char*>(rgb.data()) -
+      (static_cast<size_t>(window.min.x) + static_cast<size_t>(window.min.y) * w) * 3 *
+        sizeof(float);
+    const size_t xs = 3 * sizeof(float), ys = xs * w;
+    frame.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
+    frame.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
+    frame.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+  }
+  catch (const std::exception& e)
+  {
+    std::cout << "FAIL: cannot read " << exr << ": " << e.what() << "\n";
+    return Fail;
+  }
+  int dims[3];
+  png->GetDimensions(dims);
+  if (w != width || h != height || dims[0] != width || dims[1] != height)
+  {
+    std::cout << "FAIL: EXR " << w << " x " << h << ", PNG " << dims[0] << " x " << dims[1]
+              << ", expected " << width << " x " << height << "\n";
+    return Fail;
+  }
+  double maxDiff = 0.0, maximum = -1.0, minimum = 1e30;
+  long above = 0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        // EXR rows run top-down, the PNG reader's bottom-up.
+        const float v = rgb[(static_cast<size_t>(y) * w + x) * 3 + c];
+        if (!std::isfinite(v))
+        {
+          std::cout << "FAIL: non-finite value at (" << x << ", " << y << ")\n";
+          return Fail;
+        }
+        maximum = std::max(maximum, static_cast<double>(v));
+        minimum = std::min(minimum, static_cast<double>(v));
+        above += v > 1.0f ? 1 : 0;
+        const double expected = std::min(1.0, std::max(0.0, static_cast<double>(v))) * 255.0;
+        maxDiff = std::max(maxDiff, std::fabs(expected - Pixel(png, x, h - 1 - y, c)));
+      }
+    }
+  }
+  std::cout << exr << ": " << w << " x " << h << ", values in [" << minimum << ", " << maximum
+            << "], " << above
+            << " channel values above 1; largest |clamp(exr) * 255 - png| = " << maxDiff
+            << " levels (tolerance " << tolerance << ")\n";
+  if (maxDiff > tolerance)
+  {
+    std::cout << "FAIL: the EXR and the PNG disagree\n";
+    return Fail;
+  }
+  if (checkMaximum && maximum < minMaximum)
+  {
+    std::cout << "FAIL: the EXR's maximum " << maximum << " is below " << minMaximum << "\n";
+    return Fail;
+  }
+  return Pass;
+#else
+  (void)args;
+  std::cout << "SKIP: built without OpenEXR\n";
+  return Skip;
+#endif
+}
+
+int NonEmpty(const std::vector<std::string>& args)
+{
+  if (args.size() < 2)
+  {
+    return Usage();
+  }
+  if (SkipUnless(args, 2))
+  {
+    return Skip;
+  }
+  auto image = ReadPNG(args[0]);
+  if (!image)
+  {
+    return Fail;
+  }
+  const double minFraction = std::atof(args[1].c_str());
+  int dims[3];
+  image->GetDimensions(dims);
+  long drawn = 0;
+  for (int y = 0; y < dims[1]; ++y)
+  {
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        if (std::fabs(Pixel(image, x, y, c) - Pixel(image, 0, 0, c)) > 2.0)
+        {
+          ++drawn;
+          break;
+        }
+      }
+    }
+  }
+  const double fraction = static_cast<double>(drawn) / (static_cast<double>(dims[0]) * dims[1]);
+  std::cout << args[0] << ": " << fraction << " of the pixels differ from the corner (minimum "
+            << minFraction << ")\n";
+  return fraction >= minFraction ? Pass : Fail;
+}
+
+// A 24 x 20 x 16 float blob, optionally with `components` components.
+vtkSmartPointer<vtkImageData> Blob(int components)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(24, 20, 16);
+  image->SetSpacing(1.0, 1.0, 1.5);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("blob");
+  values->SetNumberOfComponents(components);
+  values->SetNumberOfTuples(image->GetNumberOfPoints());
+  vtkIdType id = 0;
+  for (int k = 0; k < 16; ++k)
+  {
+    for (int j = 0; j < 20; ++j)
+    {
+      for (int i = 0; i < 24; ++i, ++id)
+      {
+        const double x = (i - 11.5) / 9.0, y = (j - 9.5) / 8.0, z = (k - 7.5) / 6.0;
+        const double r2 = x * x + y * y + z * z;
+        for (int c = 0; c < components; ++c)
+        {
+          values->SetComponent(id, c, (c + 1) * 100.0 * std::exp(-2.0 * r2));
+        }
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+bool WriteText(const std::string& path, const std::string& text)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+// A minimal DICOM Part 10 writer (explicit VR little endian, one CT slice
+// per file, int16 Hounsfield-like values): VTK 9.1 reads DICOM but cannot
+// write it, and the tests need a series.
+class DicomWriter
+{
+public:
+  void Element(uint16_t group, uint16_t element, const char* vr, std::string value)
+  {
+    const bool binary = std::strcmp(vr, "OB") == 0 || std::strcmp(vr, "OW") == 0;
+    if (value.size() % 2)
+    {
+      value += std::strcmp(vr, "UI") == 0 || binary ? '\0' : ' ';
+    }
+    this->U16(group);
+    this->U16(element);
+    this->Bytes.append(vr, 2);
+    if (binary)
+    {
+      this->U16(0);
+      this->U32(static_cast<uint32_t>(value.size()));
+    }
+    else
+    {
+      this->U16(static_cast<uint16_t>(value.size()));
+    }
+    this->Bytes += value;
+  }
+  void UnsignedShort(uint16_t group, uint16_t element, uint16_t value)
+  {
+    std::string v(2, '\0');
+    v[0] = static_cast<char>(value & 0xff);
+    v[1] = static_cast<char>(value >> 8);
+    this->Element(group, element, "US", v);
+  }
+  void U16(uint16_t v)
+  {
+    this->Bytes += static_cast<char>(v & 0xff);
+    this->Bytes += static_cast<char>(v >> 8);
+  }
+  void U32(uint32_t v)
+  {
+    this->U16(static_cast<uint16_t>(v & 0xffff));
+    this->U16(static_cast<uint16_t>(v >> 16));
+  }
+  std::string Bytes;
+};
+
+bool WriteDicomSlice(
+  const std::string& path, int slice, int columns, int rows, const std::vector<int16_t>& pixels)
+{
+  const std::string sopClass = "1.2.840.10008.5.1.4.1.1.2"; // CT Image Storage
+  const std::string instance = "1.2.826.0.1.3680043.9.7433.1." + std::to_string(slice + 1);
+  const std::string syntax = "1.2.840.10008.1.2.1"; // explicit VR little endian
+  DicomWriter meta;
+  meta.Element(0x0002, 0x0001, "OB", std::string("\0\1", 2));
+  meta.Element(0x0002, 0x0002, "UI", sopClass);
+  meta.Element(0x0002, 0x0003, "UI", instance);
+  meta.Element(0x0002, 0x0010, "UI", syntax);
+  DicomWriter data;
+  data.Element(0x0008, 0x0016, "UI", sopClass);
+  data.Element(0x0008, 0x0018, "UI", instance);
+  data.Element(0x0008, 0x0060, "CS", "CT");
+  data.Element(0x0010, 0x0010, "PN", "Tyndall^Blob");
+  data.Element(0x0018, 0x0050, "DS", "2");
+  data.Element(0x0020, 0x000D, "UI", "1.2.826.0.1.3680043.9.7433.2");
+  data.Element(0x0020, 0x000E, "UI", "1.2.826.0.1.3680043.9.7433.3");
+  data.Element(0x0020, 0x0013, "IS", std::to_string(slice + 1));
+  data.Element(0x0020, 0x0032, "DS", "0\\0\\" + std::to_string(2 * slice));
+  data.Element(0x0020, 0x0037, "DS", "1\\0\\0\\0\\1\\0");
+  data.Element(0x0020, 0x1041, "DS", std::to_string(2 * slice));
+  data.UnsignedShort(0x0028, 0x0002, 1);
+  data.Element(0x0028, 0x0004, "CS", "MONOCHROME2");
+  data.UnsignedShort(0x0028, 0x0010, static_cast<uint16_t>(rows));
+  data.UnsignedShort(0x0028, 0x0011, static_cast<uint16_t>(columns));
+  data.Element(0x0028, 0x0030, "DS", "1.5\\1.5");
+  data.UnsignedShort(0x0028, 0x0100, 16);
+  data.UnsignedShort(0x0028, 0x0101, 16);
+  data.UnsignedShort(0x0028, 0x0102, 15);
+  data.UnsignedShort(0x0028, 0x0103, 1);
+  data.Element(0x0028, 0x1052, "DS", "0");
+  data.Element(0x0028, 0x1053, "DS", "1");
+  std::string raw(pixels.size() * 2, '\0');
+  for (size_t k = 0; k < pixels.size(); ++k)
+  {
+    const uint16_t v = static_cast<uint16_t>(pixels[k]);
+    raw[2 * k] = static_cast<char>(v & 0xff);
+    raw[2 * k + 1] = static_cast<char>(v >> 8);
+  }
+  data.Element(0x7FE0, 0x0010, "OW", raw);
+
+  DicomWriter length;
+  length.Element(0x0002, 0x0000, "UL", std::string(4, '\0'));
+  const uint32_t metaLength = static_cast<uint32_t>(meta.Bytes.size());
+  for (int b = 0; b < 4; ++b)
+  {
+    length.Bytes[8 + b] = static_cast<char>((metaLength >> (8 * b)) & 0xff);
+  }
+  std::ofstream out(path, std::ios::binary);
+  out << std::string(128, '\0') << "DICM" << length.Bytes << meta.Bytes << data.Bytes;
+  return static_cast<bool>(out);
+}
+
+int MakeData(const std::vector<std::string>& args)
+{
+  if (args.size() != 1)
+  {
+    return Usage();
+  }
+  const std::string dir = args[0];
+  vtksys::SystemTools::MakeDirectory(dir);
+  vtksys::SystemTools::MakeDirectory(dir + "/empty-dir");
+  auto blob = Blob(1);
+  for (const char* name : { "/blob.nii", "/blob.nii.gz" })
+  {
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(blob);
+    writer->SetFileName((dir + name).c_str());
+    writer->Write();
+  }
+  {
+    vtkNew<vtkMetaImageWriter> writer;
+    writer->SetInputData(blob);
+    writer->SetFileName((dir + "/blob.mha").c_str());
+    writer->SetCompression(false);
+    writer->Write();
+  }
+  {
+    vtkNew<vtkStructuredPointsWriter> writer;
+    writer->SetInputData(blob);
+    writer->SetFileName((dir + "/blob.vtk").c_str());
+    writer->Write();
+  }
+  {
+    // The same blob twice: extent from 0 and origin (10, -5, 3), and an
+    // extent starting at (10, -5, 2) with origin 0: the same world points.
+    auto shifted = Blob(1);
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(shifted);
+    shifted->SetOrigin(10.0, -5.0, 3.0);
+    writer->SetFileName((dir + "/blob.vti").c_str());
+    writer->Write();
+    shifted->SetExtent(10, 33, -5, 14, 2, 17);
+    shifted->SetOrigin(0.0, 0.0, 0.0);
+    writer->SetFileName((dir + "/shifted.vti").c_str());
+    writer->Write();
+  }
+  {
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(Blob(3));
+    writer->SetFileName((dir + "/rgb.vti").c_str());
+    writer->Write();
+  }
+  {
+    // A single slice: not a volume.
+    auto flat = vtkSmartPointer<vtkImageData>::New();
+    flat->SetDimensions(16, 16, 1);
+    flat->AllocateScalars(VTK_FLOAT, 1);
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(flat);
+    writer->SetFileName((dir + "/flat.vti").c_str());
+    writer->Write();
+  }
+  {
+    auto bare = vtkSmartPointer<vtkImageData>::New();
+    bare->SetDimensions(8, 8, 8);
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(bare);
+    writer->SetFileName((dir + "/noscalars.vti").c_str());
+    writer->Write();
+  }
+  {
+    vtkNew<vtkSphereSource> sphere;
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetInputConnection(sphere->GetOutputPort());
+    writer->SetFileName((dir + "/sphere.vtk").c_str());
+    writer->Write();
+  }
+  // Corrupt files: an XML image file cut in the middle of its data, garbage
+  // behind a NIfTI name, a MetaImage header whose raw file is missing.
+  {
+    std::ifstream in(dir + "/rgb.vti", std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    WriteText(dir + "/truncated.vti", text.substr(0, text.size() / 2));
+  }
+  WriteText(dir + "/garbage.nii", std::string(2000, 'x'));
+  WriteText(dir + "/garbage.vdb", std::string(2000, 'x'));
+  WriteText(dir + "/missing-raw.mhd",
+    "ObjectType = Image\nNDims = 3\nDimSize = 8 8 8\nElementType = MET_UCHAR\n"
+    "ElementDataFile = no-such-file.raw\n");
+  WriteText(dir + "/volume.xyz", "not a volume\n");
+  // A DICOM series: 12 slices of 32 x 28 int16 "CT" (air -1000 HU around a
+  // soft-tissue ball of 40 HU with a bone core of 1200 HU), and a directory
+  // of files that are not DICOM.
+  vtksys::SystemTools::MakeDirectory(dir + "/dicom");
+  for (int k = 0; k < 12; ++k)
+  {
+    std::vector<int16_t> pixels(32 * 28);
+    for (int j = 0; j < 28; ++j)
+    {
+      for (int i = 0; i < 32; ++i)
+      {
+        const double x = (i - 15.5) * 1.5, y = (j - 13.5) * 1.5, z = (k - 5.5) * 2.0;
+        const double r = std::sqrt(x * x + y * y + z * z);
+        pixels[j * 32 + i] = static_cast<int16_t>(r < 6.0 ? 1200 : (r < 15.0 ? 40 : -1000));
+      }
+    }
+    WriteDicomSlice(dir + "/dicom/slice" + std::to_string(k) + ".dcm", k, 32, 28, pixels);
+  }
+  vtksys::SystemTools::MakeDirectory(dir + "/not-dicom");
+  WriteText(dir + "/not-dicom/notes.txt", "not DICOM\n");
+  std::cout << "wrote the loader test data into " << dir << "\n";
+  return Pass;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    return Usage();
+  }
+  const std::string mode = argv[1];
+  std::vector<std::string> args(argv + 2, argv + argc);
+  if (mode == "run")
+    return Run(args);
+  if (mode == "psnr")
+    return Psnr(args);
+  if (mode == "exr")
+    return Exr(args);
+  if (mode == "nonempty")
+    return NonEmpty(args);
+  if (mode == "make-data")
+    return MakeData(args);
+  return Usage();
+}

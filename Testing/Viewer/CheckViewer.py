@@ -1,0 +1,221 @@
+#!/usr/bin/env python3
+"""Runs tyndall-viewer and checks it (the tests in Testing/Viewer/CMakeLists.txt).
+
+  CheckViewer.py scripted --viewer EXE --script FILE --baseline PNG --output PNG
+                          [--size W H] [--min-psnr DB]
+      Runs the viewer on a script in a real GLFW window (the test runs under
+      xvfb-run), then checks that it exited with 0, that no navigation frame
+      (orbit, pan, zoom, or a drag that is not a light drag) rebuilt the
+      transmittance maps while a light move did, and that its screenshot
+      matches the baseline with a PSNR floor.
+
+  CheckViewer.py failures --viewer EXE
+      Checks that the viewer fails cleanly (non-zero exit, a message, no
+      crash) without an X display, with a bad script and with a bad input.
+
+Needs /usr/bin/python3 with Debian's VTK bindings (vtkPNGReader); no numpy.
+"""
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+# Commands that only move the camera: they must never rebuild a map.
+NAVIGATION = ("orbit", "pan", "zoom")
+
+
+def run(command, env=None, timeout=600):
+    print("running:", " ".join(command), flush=True)
+    try:
+        result = subprocess.run(command, env=env, timeout=timeout,
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                universal_newlines=True)
+    except subprocess.TimeoutExpired:
+        print("FAIL: the viewer did not finish within %d s" % timeout)
+        sys.exit(1)
+    sys.stdout.write(result.stdout)
+    sys.stdout.write("--- stderr ---\n" + result.stderr + "--------------\n")
+    sys.stdout.flush()
+    return result
+
+
+def read_png(path):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    if not reader.CanReadFile(path):
+        return None
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    scalars = image.GetPointData().GetScalars()
+    dims = image.GetDimensions()
+    components = scalars.GetNumberOfComponents()
+    try:
+        data = bytes(memoryview(scalars))
+    except TypeError:
+        data = bytes(int(scalars.GetValue(i)) for i in range(scalars.GetNumberOfValues()))
+    return dims[0], dims[1], components, data
+
+
+def psnr(a, b):
+    """PSNR in dB over the first three components; None when sizes differ."""
+    (wa, ha, ca, da), (wb, hb, cb, db) = a, b
+    if (wa, ha) != (wb, hb) or ca < 3 or cb < 3:
+        return None
+    total = 0
+    for c in range(3):
+        for x, y in zip(da[c::ca], db[c::cb]):
+            total += (x - y) * (x - y)
+    mse = total / (3.0 * wa * ha)
+    return math.inf if mse == 0 else 10.0 * math.log10(255.0 * 255.0 / mse)
+
+
+def parse_frames(stdout):
+    """The viewer's per-frame lines: frame N render-ms T map-builds B ... command TEXT."""
+    frames = []
+    for line in stdout.splitlines():
+        words = line.split()
+        if len(words) < 12 or words[0] != "frame" or "command" not in words:
+            continue
+        at = words.index("command")
+        frames.append({
+            "number": int(words[1]),
+            "ms": float(words[3]),
+            "builds": int(words[5]),
+            "command": words[at + 1:],
+        })
+    return frames
+
+
+def is_navigation(command):
+    if not command:
+        return False
+    if command[0] in NAVIGATION:
+        return True
+    # A drag is navigation unless it moves the light (ctrl or L held).
+    return command[0] == "drag" and "+ctrl" not in command[1] and "+l" not in command[1]
+
+
+def is_light(command):
+    return bool(command) and (command[0] == "light" or (
+        command[0] == "drag" and ("+ctrl" in command[1] or "+l" in command[1])))
+
+
+def scripted(args):
+    if os.path.exists(args.output):
+        os.remove(args.output)
+    os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
+    result = run([args.viewer, "--size", str(args.size[0]), str(args.size[1]),
+                  "--script", args.script,
+                  "--events", "screenshot %s; quit" % args.output])
+    failures = []
+    if result.returncode != 0:
+        failures.append("the viewer exited with %d" % result.returncode)
+
+    frames = parse_frames(result.stdout)
+    if not frames:
+        failures.append("the viewer printed no frame lines")
+    navigation, rebuilt_by_light = [], 0
+    for previous, frame in zip(frames, frames[1:]):
+        grew = frame["builds"] - previous["builds"]
+        if is_navigation(frame["command"]):
+            navigation.append(frame)
+            if grew:
+                failures.append("frame %d ('%s') rebuilt the maps %d time(s): camera moves "
+                                "must reuse them" % (frame["number"],
+                                                     " ".join(frame["command"]), grew))
+        elif is_light(frame["command"]) and grew > 0:
+            rebuilt_by_light += 1
+    if len(navigation) < 3:
+        failures.append("the script has %d navigation frames after the first; it needs 3 or "
+                        "more for the map-reuse check" % len(navigation))
+    if frames and rebuilt_by_light == 0:
+        failures.append("no light move rebuilt the maps: the build count is not live")
+    if navigation:
+        times = sorted(f["ms"] for f in navigation)
+        print("navigation frames: %d, render ms median %.1f, min %.1f, max %.1f, map builds "
+              "%d at the last" % (len(times), times[len(times) // 2], times[0], times[-1],
+                                     navigation[-1]["builds"]))
+
+    if not os.path.exists(args.output):
+        failures.append("no screenshot at %s" % args.output)
+    elif not os.path.exists(args.baseline):
+        failures.append("ImageNotFound: no baseline %s; review the candidate %s and copy it "
+                        "there (Documentation/testing.md)" % (args.baseline, args.output))
+    else:
+        candidate, baseline = read_png(args.output), read_png(args.baseline)
+        if candidate is None or baseline is None:
+            failures.append("cannot read %s or %s" % (args.output, args.baseline))
+        else:
+            value = psnr(candidate, baseline)
+            if value is None:
+                failures.append("the screenshot is %dx%d, the baseline %dx%d" % (
+                    candidate[0], candidate[1], baseline[0], baseline[1]))
+            else:
+                print('<DartMeasurement name="PSNR" type="numeric/double">%s'
+                      '</DartMeasurement>' % value)
+                print("PSNR against the baseline: %s dB (floor %s dB)" % (value, args.min_psnr))
+                if not value >= args.min_psnr:
+                    failures.append("Failed Image Test: PSNR %s dB is below %s dB; the candidate "
+                                    "is %s" % (value, args.min_psnr, args.output))
+    return failures
+
+
+def failures_mode(args):
+    failures = []
+
+    def expect_clean_failure(name, command, env, words, code=None):
+        result = run(command, env=env, timeout=120)
+        rc = result.returncode
+        if rc == 0:
+            failures.append("%s: the viewer exited with 0" % name)
+        elif rc < 0 or rc >= 128:
+            failures.append("%s: the viewer crashed (exit status %d)" % (name, rc))
+        elif code is not None and rc != code:
+            failures.append("%s: exit status %d, expected %d" % (name, rc, code))
+        for word in words:
+            if word not in result.stderr:
+                failures.append("%s: no '%s' in the message" % (name, word))
+
+    no_display = dict(os.environ)
+    no_display.pop("DISPLAY", None)
+    no_display.pop("WAYLAND_DISPLAY", None)
+    expect_clean_failure("no display", [args.viewer, "--events", "quit"], no_display,
+                         ["cannot initialise GLFW", "DISPLAY", "xvfb-run"], 1)
+    expect_clean_failure("bad script", [args.viewer, "--events", "orbit 30 10; spin 3"],
+                         None, ["command 2", "unknown command"], 2)
+    expect_clean_failure("bad argument", [args.viewer, "--events", "zoom -1"],
+                         None, ["zoom -1", "above 0"], 2)
+    missing = os.path.join(os.path.dirname(os.path.abspath(__file__)), "no-such-volume.vti")
+    expect_clean_failure("missing input", [args.viewer, missing, "--events", "quit"],
+                         None, ["no-such-volume.vti"], 1)
+    return failures
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="mode", required=True)
+    s = sub.add_parser("scripted")
+    s.add_argument("--viewer", required=True)
+    s.add_argument("--script", required=True)
+    s.add_argument("--baseline", required=True)
+    s.add_argument("--output", required=True)
+    s.add_argument("--size", nargs=2, type=int, default=[256, 256])
+    s.add_argument("--min-psnr", type=float, default=45.0)
+    f = sub.add_parser("failures")
+    f.add_argument("--viewer", required=True)
+    args = parser.parse_args()
+
+    failures = scripted(args) if args.mode == "scripted" else failures_mode(args)
+    for message in failures:
+        print("FAIL:", message)
+    if failures:
+        return 1
+    print("PASS")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
