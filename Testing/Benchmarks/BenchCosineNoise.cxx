@@ -370,7 +370,11 @@ bool SourceBenchmark(const Options& options)
   const int size = options.Quick ? 64 : 256;
   const int runs = 2;
 
-  std::printf("2. vtkCosineNoiseSource throughput (its default noise: 4 octaves, 96 waves)\n");
+  {
+    vtkNew<vtkCosineNoiseSource> defaults;
+    std::printf("2. vtkCosineNoiseSource throughput (its default noise: %d octaves, %d waves)\n",
+      defaults->GetNoise()->GetNumberOfOctaves(), defaults->GetNoise()->GetNumberOfWaves());
+  }
   std::printf("   volume: %d^3 over [-1, 1]^3 (spacing 2/%d), best of %d Modified(); Update()\n",
     size, size - 1, runs);
   std::printf("   hardware threads (std::thread::hardware_concurrency): %u\n",
