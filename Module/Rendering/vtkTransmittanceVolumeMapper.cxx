@@ -802,6 +802,7 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
         program->SetUniformf("farDistance", static_cast<float>(farDistance));
         in.OcclusionQuad->Render();
         in.LightDepthTexture->Deactivate();
+        in.OcclusionFramebuffer->RemoveColorAttachments(1); // see the map build
       }
       in.OcclusionFramebuffer->RemoveColorAttachments(1);
     }
@@ -938,6 +939,9 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
         }
         program->SetUniformi("lightIndex", l);
         in.MapQuad->Render();
+        // vtkOpenGLFramebufferObject keeps an attachment of the same texture
+        // even for another slice: detach before the next light's slices.
+        in.MapFramebuffer->RemoveColorAttachments(layers);
       }
       in.MapFramebuffer->RemoveColorAttachments(layers);
       state->PopFramebufferBindings();

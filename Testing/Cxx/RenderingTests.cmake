@@ -13,10 +13,12 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOccluder.cxx
-  TestTransmittanceMapperGeometry.cxx)
+  TestTransmittanceMapperGeometry.cxx
+  TestTransmittanceMapperManyLights.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperEmissionAbsorption.cxx
-  TestTransmittanceMapperScenes.cxx)
+  TestTransmittanceMapperScenes.cxx
+  TestTransmittanceMapperMethods.cxx)
 vtk_test_cxx_executable(TyndallRenderingCxxTests tests
   RENDERING_FACTORY
   DISABLE_FLOATING_POINT_EXCEPTIONS)
