@@ -48,6 +48,13 @@ MAP_METHODS = [(2, "TFM"), (3, "AdaptiveTFM"), (4, "ETM"), (5, "AdaptiveETM")]
 COLORS = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189)]
 
 
+def load_average():
+    try:
+        return " ".join(open("/proc/loadavg").read().split()[:3])
+    except OSError:
+        return "unknown"
+
+
 def run(command, timeout=3600):
     print("running:", " ".join(command), file=sys.stderr)
     result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
@@ -145,6 +152,8 @@ def main():
            "- Date: %s" % datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
            "- Machine: %s, %d CPU threads, %s" % (platform.machine(), os.cpu_count(),
                                                  platform.platform()),
+           "- Load average at start: %s (other work on the machine makes the timings noisy; "
+           "compare figures within one table, not across runs)" % load_average(),
            ""]
 
     # 1. Cosine noise.
