@@ -21,10 +21,10 @@
 //
 // Exit status: 0 on success, 1 when reading or rendering fails, 2 for bad
 // arguments, 125 with --skip-missing and a missing INPUT.
+#include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkDICOMImageReader.h"
 #include "vtkGPUVolumeRayCastMapper.h"
-#include "vtkAlgorithm.h"
 #include "vtkImageData.h"
 #include "vtkMetaImageReader.h"
 #include "vtkNIFTIImageReader.h"

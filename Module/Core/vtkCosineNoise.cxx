@@ -76,9 +76,8 @@ public:
     const size_t n = this->Amp.size();
     for (size_t j = 0; j < n; ++j)
     {
-      sum +=
-        this->Amp[j] * std::cos(this->Kx[j] * x[0] + this->Ky[j] * x[1] + this->Kz[j] * x[2] +
-                         this->Phase[j]);
+      sum += this->Amp[j] *
+        std::cos(this->Kx[j] * x[0] + this->Ky[j] * x[1] + this->Kz[j] * x[2] + this->Phase[j]);
     }
     return offset + sum;
   }
@@ -419,8 +418,8 @@ int vtkCosineNoise::SampleDistance(const double origin[3], const double directio
   }
   if (!std::isfinite(targetDepth) || targetDepth < 0.0)
   {
-    vtkErrorMacro(<< "SampleDistance: the target depth must be finite and >= 0, got "
-                  << targetDepth << ".");
+    vtkErrorMacro(<< "SampleDistance: the target depth must be finite and >= 0, got " << targetDepth
+                  << ".");
     return -1;
   }
   if (targetDepth == 0.0)
@@ -432,7 +431,8 @@ int vtkCosineNoise::SampleDistance(const double origin[3], const double directio
   const double offset = this->Offset;
   // Cumulative optical depth from t0, and its derivative (the extinction).
   auto depth = [&](double tt) { return scale * waves.Integrate(offset, origin, w, t0, tt); };
-  auto extinction = [&](double tt) {
+  auto extinction = [&](double tt)
+  {
     const double x[3] = { origin[0] + tt * w[0], origin[1] + tt * w[1], origin[2] + tt * w[2] };
     return scale * waves.Evaluate(offset, x);
   };

@@ -364,15 +364,15 @@ void vtkCosineNoiseSource::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Noise: " << this->Noise << "\n";
   os << indent << "WholeExtent: (" << this->WholeExtent[0] << ", " << this->WholeExtent[1] << ", "
-     << this->WholeExtent[2] << ", " << this->WholeExtent[3] << ", " << this->WholeExtent[4]
-     << ", " << this->WholeExtent[5] << ")\n";
+     << this->WholeExtent[2] << ", " << this->WholeExtent[3] << ", " << this->WholeExtent[4] << ", "
+     << this->WholeExtent[5] << ")\n";
   os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
      << this->Origin[2] << ")\n";
   os << indent << "Spacing: (" << this->Spacing[0] << ", " << this->Spacing[1] << ", "
      << this->Spacing[2] << ")\n";
   os << indent << "EnvelopeType: " << this->EnvelopeType << "\n";
-  os << indent << "EnvelopeCenter: (" << this->EnvelopeCenter[0] << ", "
-     << this->EnvelopeCenter[1] << ", " << this->EnvelopeCenter[2] << ")\n";
+  os << indent << "EnvelopeCenter: (" << this->EnvelopeCenter[0] << ", " << this->EnvelopeCenter[1]
+     << ", " << this->EnvelopeCenter[2] << ")\n";
   os << indent << "EnvelopeRadius: " << this->EnvelopeRadius << "\n";
   os << indent << "EnvelopeRadii: (" << this->EnvelopeRadii[0] << ", " << this->EnvelopeRadii[1]
      << ", " << this->EnvelopeRadii[2] << ")\n";

@@ -34,7 +34,8 @@ bool Finite(const double* v, int n)
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceLightFrustum::FitDirectional(const double direction[3], const double corners[24])
+bool vtkTransmittanceLightFrustum::FitDirectional(
+  const double direction[3], const double corners[24])
 {
   double z[3] = { direction[0], direction[1], direction[2] };
   if (!Finite(direction, 3) || !Finite(corners, 24) || !(vtkMath::Normalize(z) > 0.0))

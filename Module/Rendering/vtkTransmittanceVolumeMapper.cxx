@@ -263,8 +263,7 @@ bool UploadVolume(vtkTransmittanceVolumeMapper* self, vtkImageData* input,
   }
   if (scalars->GetNumberOfComponents() != 1)
   {
-    vtkErrorWithObjectMacro(self, << "The input's scalars have "
-                                  << scalars->GetNumberOfComponents()
+    vtkErrorWithObjectMacro(self, << "The input's scalars have " << scalars->GetNumberOfComponents()
                                   << " components; vtkTransmittanceVolumeMapper renders one.");
     return false;
   }
@@ -325,8 +324,8 @@ bool UploadVolume(vtkTransmittanceVolumeMapper* self, vtkImageData* input,
     {
       for (int x = 0; x < dims[0]; ++x, ++i)
       {
-        const vtkIdType id = (static_cast<vtkIdType>(z) * factor * pointDims[1] + y * factor) *
-            pointDims[0] +
+        const vtkIdType id =
+          (static_cast<vtkIdType>(z) * factor * pointDims[1] + y * factor) * pointDims[0] +
           x * factor;
         const double v = scalars->GetComponent(id, 0);
         if (!std::isfinite(v))
@@ -459,8 +458,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
         table[4 * i + c] = static_cast<float>(rgb[3 * i + c]);
         table[4 * (kTableSize + i) + c] = static_cast<float>(emission[3 * i + c]);
       }
-      table[4 * i + 3] =
-        static_cast<float>(vtkTransmittanceMapMath::ExtinctionFromOpacity(alpha[i], unitDistance, 1.0));
+      table[4 * i + 3] = static_cast<float>(
+        vtkTransmittanceMapMath::ExtinctionFromOpacity(alpha[i], unitDistance, 1.0));
       table[4 * (kTableSize + i) + 3] = 0.0f;
     }
     if (!in.TransferTexture)
@@ -577,10 +576,12 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     }
   }
   const int numberOfLights = static_cast<int>(in.Lights.size());
-  const int layers = (this->NumberOfCoefficients + 3) / 4 + (IsAdaptive(this->TransmittanceMethod) ? 1 : 0);
+  const int layers =
+    (this->NumberOfCoefficients + 3) / 4 + (IsAdaptive(this->TransmittanceMethod) ? 1 : 0);
 
   // Uniforms shared by both passes.
-  auto setCommonUniforms = [&](vtkShaderProgram* program) {
+  auto setCommonUniforms = [&](vtkShaderProgram* program)
+  {
     program->SetUniformi("volumeTexture", in.VolumeTexture->GetTextureUnit());
     program->SetUniformi("transferTexture", in.TransferTexture->GetTextureUnit());
     program->SetUniformMatrix4x4("worldToVolume", worldToVolumeF);
@@ -646,15 +647,16 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
       }
     }
   }
-  auto buildOcclusion = [&]() -> bool {
+  auto buildOcclusion = [&]() -> bool
+  {
     const int size = this->TransmittanceMapSize;
     if (!in.OcclusionTexture || in.OcclusionSize != size || in.OcclusionSlices != numberOfLights)
     {
       in.OcclusionTexture = vtkSmartPointer<vtkTextureObject>::New();
       in.LightDepthTexture = vtkSmartPointer<vtkTextureObject>::New();
       in.LightColorTexture = vtkSmartPointer<vtkTextureObject>::New();
-      for (auto* texture : { in.OcclusionTexture.Get(), in.LightDepthTexture.Get(),
-             in.LightColorTexture.Get() })
+      for (auto* texture :
+        { in.OcclusionTexture.Get(), in.LightDepthTexture.Get(), in.LightColorTexture.Get() })
       {
         texture->SetContext(window);
         texture->SetWrapS(vtkTextureObject::ClampToEdge);
@@ -663,7 +665,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
         texture->SetMinificationFilter(vtkTextureObject::Nearest);
         texture->SetMagnificationFilter(vtkTextureObject::Nearest);
       }
-      if (!in.OcclusionTexture->Create3DFromRaw(size, size, numberOfLights, 1, VTK_FLOAT, nullptr) ||
+      if (!in.OcclusionTexture->Create3DFromRaw(
+            size, size, numberOfLights, 1, VTK_FLOAT, nullptr) ||
         !in.LightDepthTexture->AllocateDepth(size, size, vtkTextureObject::Float32) ||
         !in.LightColorTexture->Allocate2D(size, size, 4, VTK_UNSIGNED_CHAR))
       {
@@ -678,8 +681,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     std::string fs = std::string(vtkTransmittanceCommonFS) + vtkTransmittanceOcclusionFS;
     if (!in.OcclusionQuad)
     {
-      in.OcclusionQuad.reset(new vtkOpenGLQuadHelper(window,
-        vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+      in.OcclusionQuad.reset(new vtkOpenGLQuadHelper(
+        window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
     }
     in.OcclusionFramebuffer->SetContext(window);
     vtkCamera* viewCamera = renderer->GetActiveCamera();
@@ -826,9 +829,9 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     mapKey.insert(mapKey.end(), corners, corners + 24);
     for (const LightParameters& p : in.Lights)
     {
-      mapKey.insert(mapKey.end(), { double(p.Positional), double(p.Method), p.Position[0],
-                                    p.Position[1], p.Position[2], p.Direction[0], p.Direction[1],
-                                    p.Direction[2] });
+      mapKey.insert(mapKey.end(),
+        { double(p.Positional), double(p.Method), p.Position[0], p.Position[1], p.Position[2],
+          p.Direction[0], p.Direction[1], p.Direction[2] });
     }
     if (mapKey != in.MapKey)
     {
@@ -872,8 +875,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
         else
         {
           line << "  gl_FragData[" << k << "] = vec4(coefficients[" << 4 * k << "], coefficients["
-               << 4 * k + 1 << "], coefficients[" << 4 * k + 2 << "], coefficients["
-               << 4 * k + 3 << "]);\n";
+               << 4 * k + 1 << "], coefficients[" << 4 * k + 2 << "], coefficients[" << 4 * k + 3
+               << "]);\n";
         }
         outputs += line.str();
       }
@@ -979,8 +982,9 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
       GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &bits);
     if (componentType != GL_FLOAT)
     {
-      depthFormat = bits <= 16 ? vtkTextureObject::Fixed16
-                               : (bits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32);
+      depthFormat = bits <= 16
+        ? vtkTextureObject::Fixed16
+        : (bits <= 24 ? vtkTextureObject::Fixed24 : vtkTextureObject::Fixed32);
     }
   }
   if (in.DepthTexture->GetWidth() != static_cast<unsigned int>(windowSize[0]) ||
@@ -1009,8 +1013,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   std::string fs = std::string(vtkTransmittanceCommonFS) + vtkTransmittanceRayCastFS;
   if (!in.RayCastQuad)
   {
-    in.RayCastQuad.reset(new vtkOpenGLQuadHelper(window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+    in.RayCastQuad.reset(new vtkOpenGLQuadHelper(
+      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
   }
   else
   {
@@ -1090,8 +1094,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     program->SetUniformi("occlusionSlices", in.OcclusionSlices);
     program->SetUniformf("occlusionBias", static_cast<float>(2.0 * minWorldSpacing));
   }
-  float irradiance[kMaxLights][3] = {}, position[kMaxLights][3] = {},
-        direction[kMaxLights][3] = {}, attenuation[kMaxLights][3] = {};
+  float irradiance[kMaxLights][3] = {}, position[kMaxLights][3] = {}, direction[kMaxLights][3] = {},
+        attenuation[kMaxLights][3] = {};
   float coneCosine[kMaxLights] = {}, exponent[kMaxLights] = {};
   int method[kMaxLights] = { 0 };
   for (int l = 0; l < numberOfLights; ++l)

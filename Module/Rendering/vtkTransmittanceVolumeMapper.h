@@ -65,8 +65,8 @@
 #ifndef vtkTransmittanceVolumeMapper_h
 #define vtkTransmittanceVolumeMapper_h
 
-#include "TyndallRenderingModule.h" // For export macro
-#include "vtkTransmittanceMapMath.h"   // For the method constants
+#include "TyndallRenderingModule.h"  // For export macro
+#include "vtkTransmittanceMapMath.h" // For the method constants
 #include "vtkVolumeMapper.h"
 
 #include <memory> // For std::unique_ptr

@@ -108,7 +108,8 @@ bool ParseArguments(int argc, char* argv[], Options& o)
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    auto next = [&](int& value) {
+    auto next = [&](int& value)
+    {
       if (i + 1 >= argc)
       {
         return false;
@@ -192,8 +193,8 @@ void RunMedium(const char* name, vtkImageData* data, double peakOpacity, const O
   {
     timing.Mapper->SetTransmittanceMethod(m);
     TimeFrame(timing.Window); // builds maps, compiles shaders
-    const double build = vtkTransmittanceMapMath::GetMethodName(m) &&
-        m >= vtkTransmittanceVolumeMapper::TFM
+    const double build =
+      vtkTransmittanceMapMath::GetMethodName(m) && m >= vtkTransmittanceVolumeMapper::TFM
       ? timing.Mapper->GetLastMapBuildTime()
       : 0.0;
     double best = 1e30;
@@ -207,8 +208,7 @@ void RunMedium(const char* name, vtkImageData* data, double peakOpacity, const O
     reference.Window->Render();
     psnr[m] = tyndall_test::PSNR(Grab(reference.Window), cpuImage);
     std::cout << "| " << vtkTransmittanceMapMath::GetMethodName(m) << " | " << std::setprecision(4)
-              << best << " | " << build << " | " << best / frame[0] << " | " << psnr[m]
-              << " |\n";
+              << best << " | " << build << " | " << best / frame[0] << " | " << psnr[m] << " |\n";
   }
 }
 }
@@ -245,20 +245,22 @@ int main(int argc, char* argv[])
 
   std::vector<double> cloudFrame, cloudPSNR, denseFrame, densePSNR;
   RunMedium("Built-in cloud", tyndall_test::MakeCloud(o.Resolution), 0.5, o, cloudFrame, cloudPSNR);
-  RunMedium("Dense medium", tyndall_test::MakeDenseMedium(o.Resolution), 0.9, o, denseFrame,
-    densePSNR);
+  RunMedium(
+    "Dense medium", tyndall_test::MakeDenseMedium(o.Resolution), 0.9, o, denseFrame, densePSNR);
 
   using M = vtkTransmittanceVolumeMapper;
   std::cout << "\n## Bars\n\n";
   for (int m : { M::TFM, M::ADAPTIVE_TFM, M::ETM, M::ADAPTIVE_ETM })
   {
     const double ratio = cloudFrame[m] / cloudFrame[M::NONE];
-    std::cout << "- " << vtkTransmittanceMapMath::GetMethodName(m) << " frame <= 1.5x None: "
-              << (ratio <= 1.5 ? "PASS" : "MISS") << " (" << ratio << "x)\n";
+    std::cout << "- " << vtkTransmittanceMapMath::GetMethodName(m)
+              << " frame <= 1.5x None: " << (ratio <= 1.5 ? "PASS" : "MISS") << " (" << ratio
+              << "x)\n";
   }
   const double bruteOverETM = cloudFrame[M::BRUTE_FORCE] / cloudFrame[M::ETM];
-  std::cout << "- BruteForce (" << o.LightSamples << " samples) >= 10x ETM: "
-            << (bruteOverETM >= 10.0 ? "PASS" : "MISS") << " (" << bruteOverETM << "x)\n";
+  std::cout << "- BruteForce (" << o.LightSamples
+            << " samples) >= 10x ETM: " << (bruteOverETM >= 10.0 ? "PASS" : "MISS") << " ("
+            << bruteOverETM << "x)\n";
   std::cout << "- AdaptiveETM PSNR >= 40 dB on the cloud: "
             << (cloudPSNR[M::ADAPTIVE_ETM] >= 40.0 ? "PASS" : "MISS") << " ("
             << cloudPSNR[M::ADAPTIVE_ETM] << " dB)\n";

@@ -29,13 +29,13 @@ void Check(bool ok, const std::string& what)
 // Expects exactly one error containing `text` since the last call.
 void ExpectError(vtkTest::ErrorObserver* observer, const std::string& text, const std::string& what)
 {
-  const bool ok = observer->GetError() &&
-    observer->GetErrorMessage().find(text) != std::string::npos;
+  const bool ok =
+    observer->GetError() && observer->GetErrorMessage().find(text) != std::string::npos;
   if (!ok)
   {
     std::cerr << "expected an error containing '" << text << "', got '"
-              << (observer->GetError() ? observer->GetErrorMessage() : std::string("none"))
-              << "'" << std::endl;
+              << (observer->GetError() ? observer->GetErrorMessage() : std::string("none")) << "'"
+              << std::endl;
   }
   Check(ok, what);
   observer->Clear();

@@ -41,7 +41,8 @@ void RandomUnit(std::mt19937& rng, double w[3])
 double Quadrature(vtkCosineNoise* noise, const double o[3], const double w[3], double t0, double t1,
   double tolerance, bool absolute = false)
 {
-  auto f = [&](double t) {
+  auto f = [&](double t)
+  {
     double x[3] = { o[0] + t * w[0], o[1] + t * w[1], o[2] + t * w[2] };
     const double v = noise->EvaluateFunction(x);
     return absolute ? std::abs(v) : v;
@@ -242,7 +243,8 @@ int TestCosineNoiseClosedForm(int, char*[])
       ok = ok && std::abs(noise->ComputeTransmittance(o, w, 0.0, t1) - std::exp(-depth)) < 1e-15;
       ok = ok && depth >= 0.0;
       // The clamped extinction that a ray marcher sees integrates to more.
-      auto clampedNoise = [&](double t) {
+      auto clampedNoise = [&](double t)
+      {
         double x[3] = { o[0] + t * w[0], o[1] + t * w[1], o[2] + t * w[2] };
         return std::max(0.0, noise->EvaluateFunction(x));
       };

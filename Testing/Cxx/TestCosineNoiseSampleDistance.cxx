@@ -66,8 +66,8 @@ int TestCosineNoiseSampleDistance(int, char*[])
         ++escaped;
       }
     }
-    std::cout << "monotone: " << reached << " reached, " << escaped
-              << " escaped, max depth error " << worst << "\n";
+    std::cout << "monotone: " << reached << " reached, " << escaped << " escaped, max depth error "
+              << worst << "\n";
     Check(ok, "status and range of SampleDistance");
     Check(worst < 1e-9, "SampleDistance inverts ComputeOpticalDepth to 1e-9");
     Check(reached > 2000 && escaped > 50, "both outcomes exercised");

@@ -120,14 +120,14 @@ int TestCosineNoiseSource(int, char*[])
     auto* va = vtkFloatArray::SafeDownCast(a->GetOutput()->GetPointData()->GetScalars());
     Check(va->GetRange()[1] > 0.0, "the centre of the default cloud is not empty");
     auto* vb = vtkFloatArray::SafeDownCast(b->GetOutput()->GetPointData()->GetScalars());
-    Check(std::equal(va->GetPointer(0), va->GetPointer(0) + va->GetNumberOfValues(),
-            vb->GetPointer(0)),
+    Check(
+      std::equal(va->GetPointer(0), va->GetPointer(0) + va->GetNumberOfValues(), vb->GetPointer(0)),
       "same seed, same image");
     b->GetNoise()->SetSeed(99);
     b->Update();
     vb = vtkFloatArray::SafeDownCast(b->GetOutput()->GetPointData()->GetScalars());
-    Check(!std::equal(va->GetPointer(0), va->GetPointer(0) + va->GetNumberOfValues(),
-            vb->GetPointer(0)),
+    Check(!std::equal(
+            va->GetPointer(0), va->GetPointer(0) + va->GetNumberOfValues(), vb->GetPointer(0)),
       "changing the noise's seed re-executes the source with other values");
   }
 

@@ -8,12 +8,12 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkTextureObject.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkSphereSource.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkTextureObject.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
@@ -111,8 +111,9 @@ int TestTransmittanceMapperBadInput(int, char*[])
   volume->VisibilityOn();
   Check(sphereOnly > 100, "the sphere is visible");
 
-  auto expectError = [&](vtkImageData* input, const std::string& text, const std::string& what,
-                       bool warning = false) {
+  auto expectError =
+    [&](vtkImageData* input, const std::string& text, const std::string& what, bool warning = false)
+  {
     observer->Clear();
     mapper->SetInputData(input);
     window->Render();
@@ -153,8 +154,8 @@ int TestTransmittanceMapperBadInput(int, char*[])
     std::cout << "GL_MAX_3D_TEXTURE_SIZE " << limit << std::endl;
     auto image = MakeImage(limit + 5, 4, 4, 1, 4.0);
     image->SetSpacing(1.0 / limit, 0.2, 0.2);
-    expectError(image, "exceeds the GPU's 3-D texture size", "an oversized volume is downsampled",
-      true);
+    expectError(
+      image, "exceeds the GPU's 3-D texture size", "an oversized volume is downsampled", true);
     Check(!observer->GetError(), "an oversized volume is not an error");
     Check(CountForeground(window) > sphereOnly, "the downsampled volume is drawn");
   }

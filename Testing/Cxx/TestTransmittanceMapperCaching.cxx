@@ -79,7 +79,8 @@ int TestTransmittanceMapperCaching(int, char*[])
   window->Render();
   Check(mapper->GetMapBuildCount() == 1, "the first frame builds the maps");
   int builds = mapper->GetMapBuildCount();
-  auto expect = [&](bool rebuilt, const char* what) {
+  auto expect = [&](bool rebuilt, const char* what)
+  {
     window->Render();
     const int now = mapper->GetMapBuildCount();
     if (now != builds + (rebuilt ? 1 : 0))

@@ -36,7 +36,8 @@ int TestTransmittanceMapperGeometry(int, char*[])
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->ReadFrontBufferOff();
-  auto capture = [&]() {
+  auto capture = [&]()
+  {
     window->Render();
     grab->Modified();
     grab->Update();
@@ -45,7 +46,8 @@ int TestTransmittanceMapperGeometry(int, char*[])
     return vtkSmartPointer<vtkImageData>(image);
   };
   int status = EXIT_SUCCESS;
-  auto same = [&](vtkImageData* a, vtkImageData* b, const char* what) {
+  auto same = [&](vtkImageData* a, vtkImageData* b, const char* what)
+  {
     const double psnr = tyndall_test::PSNR(a, b);
     std::cout << what << ": " << psnr << " dB" << std::endl;
     if (!(psnr >= 55.0))

@@ -101,8 +101,8 @@ int TestTransmittanceMapperManyLights(int, char*[])
   const double* spacing = cloud->GetSpacing();
   const double* origin = cloud->GetOrigin();
   cells->SetSpacing(spacing);
-  cells->SetOrigin(origin[0] - 0.5 * spacing[0], origin[1] - 0.5 * spacing[1],
-    origin[2] - 0.5 * spacing[2]);
+  cells->SetOrigin(
+    origin[0] - 0.5 * spacing[0], origin[1] - 0.5 * spacing[1], origin[2] - 0.5 * spacing[2]);
   cells->GetCellData()->SetScalars(cloud->GetPointData()->GetScalars());
   mapper->SetInputData(cells);
   window->Render();
@@ -112,8 +112,7 @@ int TestTransmittanceMapperManyLights(int, char*[])
   std::cout << "cell scalars vs point scalars: " << cellPSNR << " dB" << std::endl;
   if (!(cellPSNR >= 55.0))
   {
-    std::cerr << "FAILED: cell scalars render differently from the same point scalars"
-              << std::endl;
+    std::cerr << "FAILED: cell scalars render differently from the same point scalars" << std::endl;
     status = EXIT_FAILURE;
   }
   return status;

@@ -102,8 +102,8 @@ int TestTransmittanceMapperOccluder(int, char*[])
       std::cout << vtkTransmittanceMapMath::GetMethodName(method)
                 << (withPlate ? " with the plate" : " without the plate") << ": left " << left
                 << ", right " << right << std::endl;
-      const bool ok = right > 40.0 &&
-        (withPlate ? left < 0.35 * right : std::abs(left - right) < 0.05 * right);
+      const bool ok =
+        right > 40.0 && (withPlate ? left < 0.35 * right : std::abs(left - right) < 0.05 * right);
       if (!ok)
       {
         std::cerr << "FAILED: " << vtkTransmittanceMapMath::GetMethodName(method)

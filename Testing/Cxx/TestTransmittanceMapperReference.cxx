@@ -82,7 +82,8 @@ void Measure(vtkImageData* data, double peakOpacity, int size, double psnr[6])
 int TestTransmittanceMapperReference(int, char*[])
 {
   int status = EXIT_SUCCESS;
-  auto require = [&](double value, double floor, const char* what) {
+  auto require = [&](double value, double floor, const char* what)
+  {
     if (!(value >= floor))
     {
       std::cerr << "FAILED: " << what << ": " << value << " dB < " << floor << " dB" << std::endl;
