@@ -1,0 +1,64 @@
+# Tests of Tyndall::IO (included from CMakeLists.txt).
+vtk_add_test_cxx(TyndallIOCxxTests tests
+  NO_DATA NO_VALID
+  TestOpenVDBReaderSamples.cxx
+  TestOpenVDBReaderBadFiles.cxx
+  TestOpenVDBReaderGrids.cxx
+  TestOpenVDBReaderStreaming.cxx
+  TestOpenVDBWriterRoundTrip.cxx
+  TestOpenVDBWriterSamples.cxx
+  TestTransferFunctionPresets.cxx)
+# Rendering tests (need a display): baselines in Testing/Data/Baseline.
+vtk_add_test_cxx(TyndallIOCxxTests tests
+  TestOpenVDBSmokeRender.cxx)
+vtk_test_cxx_executable(TyndallIOCxxTests tests
+  RENDERING_FACTORY
+  DISABLE_FLOATING_POINT_EXCEPTIONS)
+# The tests compute expected values with OpenVDB's API themselves.
+target_include_directories(TyndallIOCxxTests PRIVATE "${TYNDALL_OPENVDB_INCLUDE_DIR}")
+target_link_libraries(TyndallIOCxxTests PRIVATE ${TYNDALL_OPENVDB_LINK})
+
+# Every Tyndall::IO test must finish: a hang on a bad file is a failure.
+foreach (_tyndall_io_test IN LISTS tests)
+  get_filename_component(_tyndall_io_test "${_tyndall_io_test}" NAME_WE)
+  set_tests_properties("Tyndall::IOCxx-${_tyndall_io_test}" PROPERTIES TIMEOUT 300)
+endforeach ()
+
+# The tomography examples on the shared sample volumes (they render, so they
+# need a display; they skip with 125 when ../shared/data is absent). Each
+# renders into Testing/Temporary and fails when the picture shows nothing.
+set(_tyndall_tomography_samples
+  "HeadMR|volumes/HeadMRVolume.mhd"
+  "HeadCTNrrd|volumes/headsq/quarter.nhdr"
+  "IronProtein|volumes/ironProt.vtk"
+  "Neghip|volumes/neghip.slc"
+  "Hydrogen|volumes/hydrogen.vti"
+  "SmokeVDB|vdb/smoke.vdb")
+if (TARGET tyndall-tomography-viewer)
+  foreach (_sample IN LISTS _tyndall_tomography_samples)
+    string(REPLACE "|" ";" _sample "${_sample}")
+    list(GET _sample 0 _name)
+    list(GET _sample 1 _file)
+    add_test(NAME TyndallIO-TomographyViewer-${_name}
+      COMMAND tyndall-tomography-viewer
+        --output "${CMAKE_BINARY_DIR}/Testing/Temporary/TomographyViewer-${_name}.png"
+        --size 300 300 --check --skip-missing
+        "${TYNDALL_SHARED_DATA}/${_file}")
+    set_tests_properties(TyndallIO-TomographyViewer-${_name} PROPERTIES
+      LABELS "Tyndall;IO" SKIP_RETURN_CODE 125 TIMEOUT 300)
+  endforeach ()
+endif ()
+if (TYNDALL_WRAP_PYTHON)
+  add_test(NAME TyndallIO-TomographyPython-HeadMR
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/render_tomography.py"
+      "${TYNDALL_SHARED_DATA}/volumes/HeadMRVolume.mhd"
+      --output "${CMAKE_BINARY_DIR}/Testing/Temporary/TomographyPython-HeadMR.png"
+      --size 300 300 --check --skip-missing)
+  set_tests_properties(TyndallIO-TomographyPython-HeadMR PROPERTIES
+    ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/${TYNDALL_PYTHON_DESTINATION}"
+    LABELS "Tyndall;IO;Python" SKIP_RETURN_CODE 125 TIMEOUT 300)
+endif ()
+
+# The reader's libFuzzer target and a short bounded fuzzing run (only when
+# clang with libFuzzer works here; see Testing/Fuzz/CMakeLists.txt).
+add_subdirectory("${CMAKE_SOURCE_DIR}/Testing/Fuzz" "${CMAKE_BINARY_DIR}/Testing/Fuzz")
