@@ -15,3 +15,15 @@ run "$build/bin/tyndall-render" -o "$images/tyndall-cloud.png" -s 384 384
 # The method gallery: every method beside the CPU reference, cloud and dense.
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/method_gallery.py" "$images"
+
+# The transfer-function presets, each on data it is meant for (needs
+# ../shared/data; Documentation/io.md shows them).
+data="$root/../shared/data"
+if [ -d "$data" ]; then
+  render="$build/bin/tyndall-render"
+  run "$render" "$data/volumes/headsq/quarter.nhdr" --preset CT -s 192 192 -o "$images/preset-ct.png"
+  run "$render" "$data/volumes/HeadMRVolume.mhd" --preset MR -s 192 192 -o "$images/preset-mr.png"
+  run "$render" "$data/vdb/wdas_cloud_sixteenth.vdb" --preset Cloud -s 192 192 -o "$images/preset-cloud.png"
+  run "$render" "$data/vdb/smoke.vdb" --preset Smoke -s 192 192 -o "$images/preset-smoke.png"
+  run "$render" "$data/vdb/smoke.vdb" --preset DenseSmoke -s 192 192 -o "$images/preset-densesmoke.png"
+fi
