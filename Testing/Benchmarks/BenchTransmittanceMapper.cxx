@@ -5,31 +5,65 @@
 //
 //   BenchTransmittanceMapper [--quick] [--size N] [--resolution N]
 //     [--coefficients N] [--map-size N] [--frames N] [--reference-size N]
-//     [--light-samples N]
+//     [--light-samples N] [--volume FILE [--shift S] [--preset NAME] [--y-up]]...
+//     [--export DIR]
 //
 // Defaults follow the issue's setting: a 512 x 512 image of the built-in
 // cloud at 256^3, 8 coefficients, 512^2 maps, brute force with 256 light
 // samples. PSNR is measured at --reference-size (default 128) because the
 // CPU reference is slow; the same scene at the same size for both.
+//
+// Media: the built-in cloud, a dense medium, and one more per --volume: a
+// data file (any input tyndall-render reads; the report adds a CT volume and
+// a smoke simulation), its scalars shifted by S (e.g. -1024 to turn raw CT
+// numbers into Hounsfield units; default 0), coloured by a transfer-function
+// preset (default CT) with opacities per mean voxel spacing, and seen by a
+// camera fitted to its bounds: from the front (-y) with z up (the tomography
+// convention), or with --y-up from +z with y up (simulations, OpenVDB).
+// --shift, --preset and --y-up apply to the --volume before them.
+//
+// --export DIR writes, per medium, what another renderer needs to draw the
+// same scene and be compared with the same reference: the volume
+// (<key>.vti), the CPU reference (<key>-reference.png), Tyndall's
+// AdaptiveETM and BruteForce images at the reference size, and the scene
+// (<key>-scene.json: camera, light, transfer functions, sample distance,
+// image sizes, Tyndall's figures). Documentation/scripts/
+// paraview_volumetric_shadows.py reads it.
+#include "tyndallLoadVolume.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
+#include "vtkImageShiftScale.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSingleScatteringReference.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
+#include "vtkTransferFunctionPresets.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtksys/SystemTools.hxx"
 
 #include "TyndallTestImage.h"
 #include "TyndallTestScene.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -46,6 +80,30 @@ struct Options
   int Frames = 3;
   int ReferenceSize = 128;
   int LightSamples = 256;
+  struct Volume
+  {
+    std::string Path;
+    double Shift = 0.0;
+    std::string Preset = "CT";
+    bool YUp = false;
+  };
+  std::vector<Volume> Volumes;
+  std::string Export;
+};
+
+const double kAmbient = 0.1;
+const double kBackground[3] = { 0.2, 0.3, 0.45 };
+const double kSunFrom[3] = { 1.0, 0.5, 0.3 };
+
+// One medium of the benchmark.
+struct Medium
+{
+  std::string Key;  // file names of --export
+  std::string Name; // table heading
+  vtkSmartPointer<vtkImageData> Data;
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  bool FitCamera = false; // data volumes: a camera fitted to the bounds
+  bool YUp = false;       // with FitCamera: seen from +z, y up
 };
 
 struct Scene
@@ -56,24 +114,52 @@ struct Scene
   vtkSmartPointer<vtkVolume> Volume;
 };
 
-Scene MakeScene(vtkImageData* data, double peakOpacity, const Options& options)
+double MinimumSpacing(vtkImageData* data)
+{
+  double spacing[3];
+  data->GetSpacing(spacing);
+  return std::min({ std::fabs(spacing[0]), std::fabs(spacing[1]), std::fabs(spacing[2]) });
+}
+
+Scene MakeScene(const Medium& medium, const Options& options)
 {
   Scene scene;
   scene.Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
-  scene.Mapper->SetInputData(data);
+  scene.Mapper->SetInputData(medium.Data);
   scene.Mapper->SetNumberOfCoefficients(options.Coefficients);
   scene.Mapper->SetTransmittanceMapSize(options.MapSize);
   scene.Mapper->SetLightSampleCount(options.LightSamples);
-  scene.Mapper->SetAmbientIntensity(0.1);
+  scene.Mapper->SetAmbientIntensity(kAmbient);
   scene.Mapper->JitterOff();
   scene.Volume = vtkSmartPointer<vtkVolume>::New();
   scene.Volume->SetMapper(scene.Mapper);
-  scene.Volume->SetProperty(tyndall_test::MakeCloudProperty(peakOpacity));
+  scene.Volume->SetProperty(medium.Property);
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   scene.Renderer->AddVolume(scene.Volume);
-  scene.Renderer->SetBackground(0.2, 0.3, 0.45);
-  scene.Renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3));
-  tyndall_test::SetTestCamera(scene.Renderer);
+  scene.Renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+  scene.Renderer->AddLight(tyndall_test::MakeSun(kSunFrom[0], kSunFrom[1], kSunFrom[2]));
+  if (medium.FitCamera)
+  {
+    // A view from the front (-y) with z up, or from +z with y up, fitted to
+    // the data.
+    vtkCamera* camera = scene.Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    if (medium.YUp)
+    {
+      camera->SetPosition(0.0, 0.0, 1.0);
+      camera->SetViewUp(0.0, 1.0, 0.0);
+    }
+    else
+    {
+      camera->SetPosition(0.0, -1.0, 0.0);
+      camera->SetViewUp(0.0, 0.0, 1.0);
+    }
+    scene.Renderer->ResetCamera(medium.Data->GetBounds());
+  }
+  else
+  {
+    tyndall_test::SetTestCamera(scene.Renderer);
+  }
   scene.Window = vtkSmartPointer<vtkRenderWindow>::New();
   scene.Window->SetMultiSamples(0);
   scene.Window->SetOffScreenRendering(1);
@@ -103,6 +189,15 @@ vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
   return image;
 }
 
+bool WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
 bool ParseArguments(int argc, char* argv[], Options& o)
 {
   for (int i = 1; i < argc; ++i)
@@ -116,6 +211,15 @@ bool ParseArguments(int argc, char* argv[], Options& o)
       }
       value = std::atoi(argv[++i]);
       return value > 0;
+    };
+    auto text = [&](std::string& value)
+    {
+      if (i + 1 >= argc)
+      {
+        return false;
+      }
+      value = argv[++i];
+      return !value.empty();
     };
     bool ok = true;
     if (arg == "--quick")
@@ -141,13 +245,38 @@ bool ParseArguments(int argc, char* argv[], Options& o)
       ok = next(o.ReferenceSize);
     else if (arg == "--light-samples")
       ok = next(o.LightSamples);
+    else if (arg == "--volume")
+    {
+      o.Volumes.emplace_back();
+      ok = text(o.Volumes.back().Path);
+    }
+    else if (arg == "--preset")
+      ok = !o.Volumes.empty() && text(o.Volumes.back().Preset);
+    else if (arg == "--y-up")
+      ok = !o.Volumes.empty() && (o.Volumes.back().YUp = true);
+    else if (arg == "--export")
+      ok = text(o.Export);
+    else if (arg == "--shift")
+    {
+      std::string value;
+      char* end = nullptr;
+      ok = !o.Volumes.empty() && text(value);
+      if (ok)
+      {
+        double& shift = o.Volumes.back().Shift;
+        shift = std::strtod(value.c_str(), &end);
+        ok = end && *end == '\0' && std::isfinite(shift);
+      }
+    }
     else
       ok = false;
     if (!ok)
     {
       std::cerr << "usage: BenchTransmittanceMapper [--quick] [--size N] [--resolution N] "
                    "[--coefficients N] [--map-size N] [--frames N] [--reference-size N] "
-                   "[--light-samples N]\n";
+                   "[--light-samples N] [--volume FILE [--shift S] [--preset NAME] "
+                   "[--y-up]]... [--export DIR]\n"
+                   "(--shift, --preset and --y-up follow the --volume they apply to)\n";
       return false;
     }
   }
@@ -159,22 +288,121 @@ const int kMethods[] = { vtkTransmittanceVolumeMapper::NONE,
   vtkTransmittanceVolumeMapper::ADAPTIVE_TFM, vtkTransmittanceVolumeMapper::ETM,
   vtkTransmittanceVolumeMapper::ADAPTIVE_ETM };
 
+// JSON helpers for --export.
+std::string JsonArray(const double* v, int n)
+{
+  std::ostringstream s;
+  s << std::setprecision(17) << "[";
+  for (int i = 0; i < n; ++i)
+  {
+    s << (i ? ", " : "") << v[i];
+  }
+  s << "]";
+  return s.str();
+}
+
+std::string JsonNodes(vtkPiecewiseFunction* f)
+{
+  std::ostringstream s;
+  s << "[";
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    double node[4]; // x, y, midpoint, sharpness
+    f->GetNodeValue(i, node);
+    s << (i ? ", " : "") << JsonArray(node, 4);
+  }
+  s << "]";
+  return s.str();
+}
+
+std::string JsonNodes(vtkColorTransferFunction* f)
+{
+  std::ostringstream s;
+  s << "[";
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    double node[6]; // x, r, g, b, midpoint, sharpness
+    f->GetNodeValue(i, node);
+    s << (i ? ", " : "") << JsonArray(node, 6);
+  }
+  s << "]";
+  return s.str();
+}
+
+struct Figures
+{
+  std::vector<double> Frame, Build, PSNR;
+};
+
+// Writes the scene of `medium` for another renderer (see the header).
+bool ExportScene(const Medium& medium, const Scene& scene, const Options& o, vtkImageData* cpuImage,
+  const Figures& figures, double referenceSeconds)
+{
+  const std::string base = o.Export + "/" + medium.Key;
+  vtkNew<vtkXMLImageDataWriter> volumeWriter;
+  volumeWriter->SetInputData(medium.Data);
+  volumeWriter->SetFileName((base + ".vti").c_str());
+  volumeWriter->SetDataModeToAppended();
+  volumeWriter->EncodeAppendedDataOff();
+  if (!volumeWriter->Write() || !WritePNG(cpuImage, base + "-reference.png"))
+  {
+    return false;
+  }
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  vtkVolumeProperty* property = medium.Property;
+  vtkSmartPointer<vtkLight> sun = tyndall_test::MakeSun(kSunFrom[0], kSunFrom[1], kSunFrom[2]);
+  std::ofstream json(base + "-scene.json");
+  json << std::setprecision(17) << "{\n"
+       << "  \"name\": \"" << medium.Name << "\",\n"
+       << "  \"volume\": \"" << medium.Key << ".vti\",\n"
+       << "  \"reference\": \"" << medium.Key << "-reference.png\",\n"
+       << "  \"reference_seconds\": " << referenceSeconds << ",\n"
+       << "  \"size\": " << o.Size << ",\n"
+       << "  \"reference_size\": " << o.ReferenceSize << ",\n"
+       << "  \"frames\": " << o.Frames << ",\n"
+       << "  \"background\": " << JsonArray(kBackground, 3) << ",\n"
+       << "  \"camera\": {\"position\": " << JsonArray(camera->GetPosition(), 3)
+       << ", \"focal_point\": " << JsonArray(camera->GetFocalPoint(), 3)
+       << ", \"view_up\": " << JsonArray(camera->GetViewUp(), 3)
+       << ", \"view_angle\": " << camera->GetViewAngle() << "},\n"
+       << "  \"light\": {\"position\": " << JsonArray(sun->GetPosition(), 3)
+       << ", \"focal_point\": " << JsonArray(sun->GetFocalPoint(), 3)
+       << ", \"color\": " << JsonArray(sun->GetDiffuseColor(), 3)
+       << ", \"intensity\": " << sun->GetIntensity() << ", \"positional\": false},\n"
+       << "  \"light_scale\": " << scene.Mapper->GetLightScale() << ",\n"
+       << "  \"ambient\": " << kAmbient << ",\n"
+       << "  \"anisotropy\": " << scene.Mapper->GetScatteringAnisotropy() << ",\n"
+       << "  \"sample_distance\": " << 0.5 * MinimumSpacing(medium.Data) << ",\n"
+       << "  \"scalar_opacity_unit_distance\": " << property->GetScalarOpacityUnitDistance()
+       << ",\n"
+       << "  \"opacity\": " << JsonNodes(property->GetScalarOpacity()) << ",\n"
+       << "  \"color\": " << JsonNodes(property->GetRGBTransferFunction()) << ",\n"
+       << "  \"tyndall\": {";
+  for (int m : kMethods)
+  {
+    json << (m ? ", " : "") << "\"" << vtkTransmittanceMapMath::GetMethodName(m)
+         << "\": {\"frame\": " << figures.Frame[m] << ", \"map_build\": " << figures.Build[m]
+         << ", \"psnr\": " << figures.PSNR[m] << "}";
+  }
+  json << "}\n}\n";
+  return static_cast<bool>(json);
+}
+
 // Runs every method on one medium and prints a table; returns the frame
 // times and PSNRs by method.
-void RunMedium(const char* name, vtkImageData* data, double peakOpacity, const Options& o,
-  std::vector<double>& frame, std::vector<double>& psnr)
+Figures RunMedium(const Medium& medium, const Options& o)
 {
-  std::cout << "\n## " << name << "\n\n";
+  std::cout << "\n## " << medium.Name << "\n\n";
   // The CPU reference at the reference size.
-  Scene reference = MakeScene(data, peakOpacity, o);
+  Scene reference = MakeScene(medium, o);
   reference.Window->SetSize(o.ReferenceSize, o.ReferenceSize);
   reference.Window->Render();
   vtkNew<vtkSingleScatteringReference> cpu;
-  cpu->SetAmbientIntensity(0.1);
+  cpu->SetAmbientIntensity(kAmbient);
   // Camera steps as fine as the mapper's (half a voxel); light steps of two
   // voxels keep the reference affordable at 256^3 (its light integral
   // converges as the square of the step: see TestSingleScatteringReference).
-  cpu->SetLightStepSize(4.0 / (o.Resolution - 1));
+  cpu->SetLightStepSize(2.0 * MinimumSpacing(medium.Data));
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   cpu->Render(reference.Renderer, reference.Volume, o.ReferenceSize, o.ReferenceSize);
@@ -183,33 +411,102 @@ void RunMedium(const char* name, vtkImageData* data, double peakOpacity, const O
   std::cout << "CPU reference: " << o.ReferenceSize << " x " << o.ReferenceSize << " in "
             << timer->GetElapsedTime() << " s\n\n";
 
-  Scene timing = MakeScene(data, peakOpacity, o);
+  Scene timing = MakeScene(medium, o);
   timing.Window->SetSize(o.Size, o.Size);
-  std::cout << "| method | frame (s) | map build (s) | frame / None | PSNR vs CPU (dB) |\n"
-            << "|---|---|---|---|---|\n";
-  frame.assign(6, 0.0);
-  psnr.assign(6, 0.0);
+  Figures figures;
+  figures.Frame.assign(6, 0.0);
+  figures.Build.assign(6, 0.0);
+  figures.PSNR.assign(6, 0.0);
+  std::vector<vtkSmartPointer<vtkImageData>> images(6);
   for (int m : kMethods)
   {
     timing.Mapper->SetTransmittanceMethod(m);
     TimeFrame(timing.Window); // builds maps, compiles shaders
-    const double build =
-      vtkTransmittanceMapMath::GetMethodName(m) && m >= vtkTransmittanceVolumeMapper::TFM
-      ? timing.Mapper->GetLastMapBuildTime()
-      : 0.0;
-    double best = 1e30;
+    figures.Build[m] =
+      m >= vtkTransmittanceVolumeMapper::TFM ? timing.Mapper->GetLastMapBuildTime() : 0.0;
+    double best = std::numeric_limits<double>::infinity();
     for (int f = 0; f < o.Frames; ++f)
     {
       timing.Mapper->Modified(); // a new frame, same maps
       best = std::min(best, TimeFrame(timing.Window));
     }
-    frame[m] = best;
+    figures.Frame[m] = best;
     reference.Mapper->SetTransmittanceMethod(m);
     reference.Window->Render();
-    psnr[m] = tyndall_test::PSNR(Grab(reference.Window), cpuImage);
-    std::cout << "| " << vtkTransmittanceMapMath::GetMethodName(m) << " | " << std::setprecision(4)
-              << best << " | " << build << " | " << best / frame[0] << " | " << psnr[m] << " |\n";
+    images[m] = Grab(reference.Window);
+    figures.PSNR[m] = tyndall_test::PSNR(images[m], cpuImage);
   }
+  using M = vtkTransmittanceVolumeMapper;
+  std::cout << "| method | frame (s) | map build (s) | frame / None | frame / BruteForce | "
+               "PSNR vs CPU (dB) |\n"
+            << "|---|---|---|---|---|---|\n";
+  for (int m : kMethods)
+  {
+    std::cout << "| " << vtkTransmittanceMapMath::GetMethodName(m) << " | " << std::setprecision(4)
+              << figures.Frame[m] << " | " << figures.Build[m] << " | "
+              << figures.Frame[m] / figures.Frame[M::NONE] << " | "
+              << figures.Frame[m] / figures.Frame[M::BRUTE_FORCE] << " | " << figures.PSNR[m]
+              << " |\n";
+  }
+  if (!o.Export.empty())
+  {
+    const std::string base = o.Export + "/" + medium.Key;
+    if (!ExportScene(medium, reference, o, cpuImage, figures, timer->GetElapsedTime()) ||
+      !WritePNG(images[M::ADAPTIVE_ETM], base + "-adaptive-etm.png") ||
+      !WritePNG(images[M::BRUTE_FORCE], base + "-brute-force.png"))
+    {
+      std::cerr << "BenchTransmittanceMapper: cannot write the scene to " << o.Export << "\n";
+      std::exit(EXIT_FAILURE);
+    }
+    std::cout << "\nexported: " << base << "-scene.json\n";
+  }
+  return figures;
+}
+
+// The data medium of one --volume; false (with a message) on failure.
+bool MakeDataMedium(const Options::Volume& volume, Medium& medium)
+{
+  std::string error;
+  vtkSmartPointer<vtkImageData> image = tyndallLoadVolume(volume.Path, "", error);
+  if (!image)
+  {
+    std::cerr << "BenchTransmittanceMapper: " << error << "\n";
+    return false;
+  }
+  if (volume.Shift != 0.0)
+  {
+    vtkNew<vtkImageShiftScale> shift;
+    shift->SetInputData(image);
+    shift->SetShift(volume.Shift);
+    shift->SetOutputScalarTypeToFloat();
+    shift->Update();
+    image = shift->GetOutput();
+  }
+  medium.Property = vtkSmartPointer<vtkVolumeProperty>::New();
+  medium.Property->SetInterpolationTypeToLinear();
+  if (!vtkTransferFunctionPresets::Apply(
+        volume.Preset.c_str(), medium.Property, image->GetScalarRange()))
+  {
+    std::cerr << "BenchTransmittanceMapper: cannot apply the preset '" << volume.Preset << "'\n";
+    return false;
+  }
+  double spacing[3];
+  image->GetSpacing(spacing);
+  // As tyndall-render: preset opacities are per mean voxel spacing.
+  medium.Property->SetScalarOpacityUnitDistance(
+    (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3.0);
+  int dims[3];
+  image->GetDimensions(dims);
+  const std::string file = vtksys::SystemTools::GetFilenameName(volume.Path);
+  std::ostringstream name;
+  name << "Data volume: " << file << " (" << dims[0] << " x " << dims[1] << " x " << dims[2]
+       << ", scalars shifted by " << volume.Shift << ", preset " << volume.Preset << ")";
+  medium.Key = vtksys::SystemTools::GetFilenameWithoutLastExtension(file);
+  medium.Name = name.str();
+  medium.Data = image;
+  medium.FitCamera = true;
+  medium.YUp = volume.YUp;
+  return true;
 }
 }
 
@@ -226,8 +523,34 @@ int main(int argc, char* argv[])
             << " light samples, best of " << o.Frames << " frames; PSNR at " << o.ReferenceSize
             << "^2 against vtkSingleScatteringReference; " << std::thread::hardware_concurrency()
             << " CPU threads\n";
+  std::vector<Medium> media(2);
+  media[0].Key = "cloud";
+  media[0].Name = "Built-in cloud";
+  media[0].Data = tyndall_test::MakeCloud(o.Resolution);
+  media[0].Property = tyndall_test::MakeCloudProperty(0.5);
+  media[1].Key = "dense";
+  media[1].Name = "Dense medium";
+  media[1].Data = tyndall_test::MakeDenseMedium(o.Resolution);
+  media[1].Property = tyndall_test::MakeCloudProperty(0.9);
+  for (const Options::Volume& volume : o.Volumes)
   {
-    Scene probe = MakeScene(tyndall_test::MakeCloud(8), 0.5, o);
+    Medium medium;
+    if (!MakeDataMedium(volume, medium))
+    {
+      return EXIT_FAILURE;
+    }
+    // Unique file keys for --export.
+    const std::string key = medium.Key;
+    for (int n = 2; std::any_of(
+           media.begin(), media.end(), [&](const Medium& m) { return m.Key == medium.Key; });
+         ++n)
+    {
+      medium.Key = key + "-" + std::to_string(n);
+    }
+    media.push_back(medium);
+  }
+  {
+    Scene probe = MakeScene(media[0], o);
     probe.Window->SetSize(16, 16);
     probe.Window->Render();
     // The renderer and version lines of VTK's capability report.
@@ -243,29 +566,32 @@ int main(int argc, char* argv[])
     }
   }
 
-  std::vector<double> cloudFrame, cloudPSNR, denseFrame, densePSNR;
-  RunMedium("Built-in cloud", tyndall_test::MakeCloud(o.Resolution), 0.5, o, cloudFrame, cloudPSNR);
-  RunMedium(
-    "Dense medium", tyndall_test::MakeDenseMedium(o.Resolution), 0.9, o, denseFrame, densePSNR);
+  std::vector<Figures> figures;
+  for (const Medium& medium : media)
+  {
+    figures.push_back(RunMedium(medium, o));
+  }
+  const Figures& cloud = figures[0];
+  const Figures& dense = figures[1];
 
   using M = vtkTransmittanceVolumeMapper;
   std::cout << "\n## Bars\n\n";
   for (int m : { M::TFM, M::ADAPTIVE_TFM, M::ETM, M::ADAPTIVE_ETM })
   {
-    const double ratio = cloudFrame[m] / cloudFrame[M::NONE];
+    const double ratio = cloud.Frame[m] / cloud.Frame[M::NONE];
     std::cout << "- " << vtkTransmittanceMapMath::GetMethodName(m)
               << " frame <= 1.5x None: " << (ratio <= 1.5 ? "PASS" : "MISS") << " (" << ratio
               << "x)\n";
   }
-  const double bruteOverETM = cloudFrame[M::BRUTE_FORCE] / cloudFrame[M::ETM];
+  const double bruteOverETM = cloud.Frame[M::BRUTE_FORCE] / cloud.Frame[M::ETM];
   std::cout << "- BruteForce (" << o.LightSamples
             << " samples) >= 10x ETM: " << (bruteOverETM >= 10.0 ? "PASS" : "MISS") << " ("
             << bruteOverETM << "x)\n";
   std::cout << "- AdaptiveETM PSNR >= 40 dB on the cloud: "
-            << (cloudPSNR[M::ADAPTIVE_ETM] >= 40.0 ? "PASS" : "MISS") << " ("
-            << cloudPSNR[M::ADAPTIVE_ETM] << " dB)\n";
+            << (cloud.PSNR[M::ADAPTIVE_ETM] >= 40.0 ? "PASS" : "MISS") << " ("
+            << cloud.PSNR[M::ADAPTIVE_ETM] << " dB)\n";
   std::cout << "- AdaptiveETM PSNR >= 40 dB on the dense medium: "
-            << (densePSNR[M::ADAPTIVE_ETM] >= 40.0 ? "PASS" : "MISS") << " ("
-            << densePSNR[M::ADAPTIVE_ETM] << " dB)\n";
+            << (dense.PSNR[M::ADAPTIVE_ETM] >= 40.0 ? "PASS" : "MISS") << " ("
+            << dense.PSNR[M::ADAPTIVE_ETM] << " dB)\n";
   return EXIT_SUCCESS;
 }
