@@ -187,15 +187,21 @@ def paraview_section(args, exported):
             "```", ""]
     script = os.path.join(ROOT, "Documentation", "scripts", "paraview_volumetric_shadows.py")
     env = dict(os.environ, PYTHONPATH=folder)
-    rows, pictures, version, opengl = [], [], "", ""
+    rows, pictures, version, opengl = [], [], "9.2", "unknown (no scene rendered)"
     for scene_file in exported:
         scenes = os.path.dirname(scene_file)
         with open(scene_file) as f:
             scene = json.load(f)
         key = scene["volume"][:-len(".vti")]
-        stdout, _ = run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", pvbatch, script,
-                         scene_file, scenes], env=env)
-        result = json.loads(stdout.strip().splitlines()[-1])
+        try:
+            stdout, _ = run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", pvbatch, script,
+                             scene_file, scenes], env=env)
+            result = json.loads(stdout.strip().splitlines()[-1])
+        except (RuntimeError, ValueError, IndexError, subprocess.TimeoutExpired) as error:
+            # One failed scene does not lose the rest of the report.
+            rows.append("| %s | not measured: pvbatch failed (%s) |||||||||" % (
+                scene["name"].split(" (")[0], str(error).strip().splitlines()[-1][:200]))
+            continue
         version = result["vtk_version"]
         opengl = "; ".join(line.split(":", 1)[-1].strip() for line in result["opengl"])
         reference = os.path.join(scenes, scene["reference"])

@@ -58,8 +58,13 @@ def transfer_functions(scene):
 
 def make_scene(scene, folder, size):
     reader = vtkXMLImageDataReader()
-    reader.SetFileName(os.path.join(folder, scene["volume"]))
+    path = os.path.join(folder, scene["volume"])
+    if not reader.CanReadFile(path):
+        sys.exit("paraview_volumetric_shadows.py: cannot read the volume %s" % path)
+    reader.SetFileName(path)
     reader.Update()
+    if reader.GetOutput().GetNumberOfPoints() == 0:
+        sys.exit("paraview_volumetric_shadows.py: the volume %s is empty" % path)
 
     opacity, color = transfer_functions(scene)
     prop = vtkVolumeProperty()
@@ -155,8 +160,12 @@ def main():
     if len(sys.argv) != 3:
         sys.exit("usage: pvbatch paraview_volumetric_shadows.py SCENE.json OUTDIR")
     scene_file, out_dir = sys.argv[1], sys.argv[2]
-    with open(scene_file) as f:
-        scene = json.load(f)
+    try:
+        with open(scene_file) as f:
+            scene = json.load(f)
+    except (OSError, ValueError) as error:
+        sys.exit("paraview_volumetric_shadows.py: cannot read the scene %s: %s"
+                 % (scene_file, error))
     folder = os.path.dirname(os.path.abspath(scene_file))
     key = scene["volume"][:-len(".vti")]
     result = {"vtk_version": vtkVersion.GetVTKVersion(), "key": key}
@@ -174,6 +183,8 @@ def main():
     result["image"] = os.path.join(out_dir, key + "-vtk92.png")
     writer.SetFileName(result["image"])
     writer.Write()
+    if writer.GetErrorCode() != 0:
+        sys.exit("paraview_volumetric_shadows.py: cannot write %s" % result["image"])
     renderer_string = window.ReportCapabilities().splitlines()
     result["opengl"] = [line for line in renderer_string if line.startswith("OpenGL renderer")]
     del window
