@@ -318,16 +318,20 @@ def main():
     stdout, _ = run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24",
                      os.path.join(bin_dir, "BenchTransmittanceMapper"), "--export", scenes] +
                     volumes + quick)
-    renderer = [line for line in stdout.splitlines() if line.startswith("OpenGL")]
+    settings = [line for line in stdout.splitlines()
+                if line.startswith("OpenGL") or line.startswith("image ")]
     out += ["## The mapper: frame time, map build and PSNR per method", ""] + \
-        ["- " + line for line in renderer] + [""]
+        ["- " + line for line in settings] + [""]
     out += ["Not measured (absent): %s" % path for path in missing]
     out += [""] if missing else []
     exported = [line.split(":", 1)[1].strip() for line in stdout.splitlines()
                 if line.startswith("exported:")]
     body = stdout.split("## ", 1)[-1]
-    body = "\n".join(line for line in body.splitlines() if not line.startswith("exported:"))
-    out += ["## " + body.strip(), ""]
+    # The program's sections become subsections of this one.
+    body = "\n".join("#" + line if line.startswith("## ") else line
+                     for line in ("## " + body).splitlines()
+                     if not line.startswith("exported:"))
+    out += [body.strip(), ""]
 
     # 3. Frame time against image size (cloud), None vs AdaptiveETM vs BruteForce.
     sizes = [128, 256] if args.quick else [128, 256, 384, 512]
