@@ -14,12 +14,12 @@ from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
                                          vtkRenderWindow, vtkTextActor, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
+                                         vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
 
-from tyndall import (vtkCosineNoiseSource, vtkSingleScatteringReference,
-                     vtkTransmittanceVolumeMapper)
+from tyndall import (vtkCosineNoiseSource, vtkParticipatingMediumProperty,
+                     vtkSingleScatteringReference, vtkTransmittanceVolumeMapper)
 
 SIZE = 192
 METHODS = ["None", "BruteForce", "TFM", "AdaptiveTFM", "ETM", "AdaptiveETM"]
@@ -88,14 +88,14 @@ def row(dense):
     opacity.AddPoint(8, 0.9 if dense else 0.5)
     albedo = vtkColorTransferFunction()
     albedo.AddRGBPoint(0, 0.9, 0.9, 0.9)
-    prop = vtkVolumeProperty()
+    prop = vtkParticipatingMediumProperty()
+    prop.SetAmbientIntensity(0.1)
     prop.SetScalarOpacity(opacity)
     prop.SetColor(albedo)
     prop.SetScalarOpacityUnitDistance(0.05)
     mapper = vtkTransmittanceVolumeMapper()
     mapper.SetInputData(data)
     mapper.JitterOff()
-    mapper.SetAmbientIntensity(0.1)
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -120,7 +120,6 @@ def row(dense):
     window.AddRenderer(renderer)
     window.Render()
     reference = vtkSingleScatteringReference()
-    reference.SetAmbientIntensity(0.1)
     reference.Render(renderer, volume, SIZE, SIZE)
     cpu = vtkImageData()
     cpu.DeepCopy(reference.Composite())

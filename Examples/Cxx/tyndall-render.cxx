@@ -25,6 +25,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPNGWriter.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
@@ -536,11 +537,11 @@ bool ParseArguments(int argc, char* argv[], Options& o, bool& help, std::string&
       {
         if (m == "single-scattering")
         {
-          o.Model = vtkTransmittanceVolumeMapper::SINGLE_SCATTERING;
+          o.Model = vtkParticipatingMediumProperty::SINGLE_SCATTERING;
         }
         else if (m == "emission-absorption")
         {
-          o.Model = vtkTransmittanceVolumeMapper::EMISSION_ABSORPTION;
+          o.Model = vtkParticipatingMediumProperty::EMISSION_ABSORPTION;
         }
         else
         {
@@ -992,23 +993,23 @@ std::string GuessPreset(vtkImageData* image, const double range[2])
 }
 #endif
 
-// The mapper: the default scene's settings, then the options.
+// The mapper and medium: the default scene's settings, then the options.
 void ConfigureMapper(vtkTransmittanceVolumeMapper* mapper, const Options& o, bool defaultScene,
-  const TransferFunction& tf, vtkVolumeProperty* property)
+  const TransferFunction& tf, vtkParticipatingMediumProperty* property)
 {
-  mapper->SetScatteringModelToSingleScattering();
+  property->SetScatteringModelToSingleScattering();
   mapper->SetTransmittanceMethodToAdaptiveETM();
   mapper->SetNumberOfCoefficients(8);
   mapper->SetTransmittanceMapSize(256);
-  mapper->SetScatteringAnisotropy(defaultScene ? 0.3 : 0.0);
-  mapper->SetAmbientIntensity(defaultScene ? 0.45 : 0.25);
+  property->SetScatteringAnisotropy(defaultScene ? 0.3 : 0.0);
+  property->SetAmbientIntensity(defaultScene ? 0.45 : 0.25);
   if (o.Method >= 0)
   {
     mapper->SetTransmittanceMethod(o.Method);
   }
   if (o.Model >= 0)
   {
-    mapper->SetScatteringModel(o.Model);
+    property->SetScatteringModel(o.Model);
   }
   if (o.Coefficients > 0)
   {
@@ -1024,11 +1025,11 @@ void ConfigureMapper(vtkTransmittanceVolumeMapper* mapper, const Options& o, boo
   }
   if (!std::isnan(o.Anisotropy))
   {
-    mapper->SetScatteringAnisotropy(o.Anisotropy);
+    property->SetScatteringAnisotropy(o.Anisotropy);
   }
   if (!std::isnan(o.DensityScale))
   {
-    mapper->SetDensityScale(o.DensityScale);
+    property->SetDensityScale(o.DensityScale);
   }
   if (!std::isnan(o.SampleDistance))
   {
@@ -1040,18 +1041,18 @@ void ConfigureMapper(vtkTransmittanceVolumeMapper* mapper, const Options& o, boo
   }
   if (!std::isnan(o.Ambient))
   {
-    mapper->SetAmbientIntensity(o.Ambient);
+    property->SetAmbientIntensity(o.Ambient);
   }
   if (!std::isnan(o.LightScale))
   {
-    mapper->SetLightScale(o.LightScale);
+    property->SetLightScale(o.LightScale);
   }
   if (!std::isnan(o.EmissionScale))
   {
-    mapper->SetEmissionScale(o.EmissionScale);
+    property->SetEmissionScale(o.EmissionScale);
     if (o.EmissionScale > 0.0)
     {
-      mapper->SetEmissionColor(
+      property->SetEmissionColor(
         tf.HasEmission ? tf.Emission.Get() : property->GetRGBTransferFunction());
     }
   }
@@ -1396,7 +1397,7 @@ int main(int argc, char* argv[])
       tfRange[1] = tfRange[0] + 1.0;
     }
   }
-  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkParticipatingMediumProperty> property;
   std::string tfDescription;
   if (!o.TransferFunctionFile.empty())
   {
@@ -1504,7 +1505,7 @@ int main(int argc, char* argv[])
   {
     log << "rendering " << o.Size[0] << " x " << o.Size[1] << ": "
         << mapper->GetTransmittanceMethodAsString() << ", "
-        << (mapper->GetScatteringModel() == vtkTransmittanceVolumeMapper::SINGLE_SCATTERING
+        << (property->GetScatteringModel() == vtkParticipatingMediumProperty::SINGLE_SCATTERING
                ? "single scattering"
                : "emission-absorption")
         << ", " << renderer->GetLights()->GetNumberOfItems() << " light(s)"

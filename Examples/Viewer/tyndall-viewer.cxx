@@ -28,6 +28,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
@@ -38,7 +39,6 @@
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 #include "vtksys/SystemTools.hxx"
 
 #ifdef TYNDALL_VIEWER_HAVE_LOADER
@@ -491,6 +491,7 @@ private:
   bool DefaultCloud = true;
   double Bounds[6] = { -1, 1, -1, 1, -1, 1 };
   vtkNew<vtkTransmittanceVolumeMapper> Mapper;
+  vtkSmartPointer<vtkParticipatingMediumProperty> Medium;
   vtkNew<vtkVolume> Volume;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkLight> Sun;
@@ -577,7 +578,7 @@ bool Viewer::LoadScene()
 
   vtkNew<vtkPiecewiseFunction> opacity;
   vtkNew<vtkColorTransferFunction> albedo;
-  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkParticipatingMediumProperty> property;
   if (this->DefaultCloud)
   {
     // tyndall-render's white cloud: 0.5 opacity per 0.05 units at density 8.
@@ -615,12 +616,13 @@ bool Viewer::LoadScene()
   property->SetColor(albedo);
   property->SetInterpolationTypeToLinear();
 
-  this->Mapper->SetScatteringModelToSingleScattering();
+  property->SetScatteringModelToSingleScattering();
+  property->SetScatteringAnisotropy(0.3);
+  property->SetAmbientIntensity(0.45);
+  this->Medium = property;
   this->Mapper->SetTransmittanceMethodToAdaptiveETM();
   this->Mapper->SetNumberOfCoefficients(8);
   this->Mapper->SetTransmittanceMapSize(256);
-  this->Mapper->SetScatteringAnisotropy(0.3);
-  this->Mapper->SetAmbientIntensity(0.45);
   this->Volume->SetMapper(this->Mapper);
   this->Volume->SetProperty(property);
   return true;
@@ -822,8 +824,8 @@ void Viewer::UpdateText()
   std::ostringstream os;
   os << std::fixed << this->Mapper->GetTransmittanceMethodAsString() << " | "
      << this->Mapper->GetNumberOfCoefficients() << " coefficients | g " << std::setprecision(2)
-     << this->Mapper->GetScatteringAnisotropy() << " | density " << std::setprecision(2)
-     << this->Mapper->GetDensityScale() << " | jitter "
+     << this->Medium->GetScatteringAnisotropy() << " | density " << std::setprecision(2)
+     << this->Medium->GetDensityScale() << " | jitter "
      << (this->Mapper->GetJitter() ? "on" : "off") << "\n";
   if (this->FrameNumber > 0)
   {
@@ -1082,18 +1084,18 @@ void Viewer::Key(int key)
       m->SetNumberOfCoefficients(m->GetNumberOfCoefficients() - 1);
       break;
     case 'a':
-      m->SetScatteringAnisotropy(
-        std::min(0.9, std::round(10.0 * m->GetScatteringAnisotropy() + 1.0) / 10.0));
+      this->Medium->SetScatteringAnisotropy(
+        std::min(0.9, std::round(10.0 * this->Medium->GetScatteringAnisotropy() + 1.0) / 10.0));
       break;
     case 'z':
-      m->SetScatteringAnisotropy(
-        std::max(-0.9, std::round(10.0 * m->GetScatteringAnisotropy() - 1.0) / 10.0));
+      this->Medium->SetScatteringAnisotropy(
+        std::max(-0.9, std::round(10.0 * this->Medium->GetScatteringAnisotropy() - 1.0) / 10.0));
       break;
     case 'd':
-      m->SetDensityScale(m->GetDensityScale() * 1.25);
+      this->Medium->SetDensityScale(this->Medium->GetDensityScale() * 1.25);
       break;
     case 'c':
-      m->SetDensityScale(m->GetDensityScale() / 1.25);
+      this->Medium->SetDensityScale(this->Medium->GetDensityScale() / 1.25);
       break;
     case 'j':
       m->SetJitter(!m->GetJitter());

@@ -10,22 +10,11 @@ vtkStandardNewMacro(vtkTransmittanceMapMath);
 
 namespace
 {
-constexpr int kMaxCoefficients = 16;
-
-bool IsAdaptive(int method)
-{
-  return method == vtkTransmittanceMapMath::ADAPTIVE_TFM ||
-    method == vtkTransmittanceMapMath::ADAPTIVE_ETM;
-}
+constexpr int kMaxCoefficients = vtkTransmittanceMapMath::MAXIMUM_NUMBER_OF_COEFFICIENTS;
 
 bool IsTFM(int method)
 {
   return method == vtkTransmittanceMapMath::TFM || method == vtkTransmittanceMapMath::ADAPTIVE_TFM;
-}
-
-bool IsMapMethod(int method)
-{
-  return method >= vtkTransmittanceMapMath::TFM && method <= vtkTransmittanceMapMath::ADAPTIVE_ETM;
 }
 
 // A usable extinction profile on a segment of the given length.
@@ -58,8 +47,8 @@ double SampleProfile(const double* profile, int profileSize, double s)
 // midpoint samples, projected onto coefficientCount cosines: the TFM's a_j
 // (of T_n) or the ETM's c_j (of D' sigma_n). Returns the optical depth of
 // the whole range as the march sees it.
-double MarchAndProject(bool tfm, const double* profile, int profileSize, double length, double sMin,
-  double sMax, int sampleCount, int coefficientCount, double* coefficients)
+double MarchAndProject(bool tfm, const std::function<double(double)>& profile, double length,
+  double sMin, double sMax, int sampleCount, int coefficientCount, double* coefficients)
 {
   const double du = 1.0 / sampleCount;
   const double rangeLength = length * (sMax - sMin); // D'
@@ -68,7 +57,7 @@ double MarchAndProject(bool tfm, const double* profile, int profileSize, double 
   for (int n = 0; n < sampleCount; ++n)
   {
     const double u = (n + 0.5) * du;
-    const double extinction = SampleProfile(profile, profileSize, sMin + u * (sMax - sMin));
+    const double extinction = profile(sMin + u * (sMax - sMin));
     const double stepDepth = extinction * rangeLength * du;
     const double value =
       tfm ? std::exp(-(opticalDepth + 0.5 * stepDepth)) : rangeLength * extinction;
@@ -109,13 +98,58 @@ const char* vtkTransmittanceMapMath::GetMethodName(int method)
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMapMath::IsMapMethod(int method)
+{
+  return method >= TFM && method <= ADAPTIVE_ETM;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapMath::IsAdaptiveMethod(int method)
+{
+  return method == ADAPTIVE_TFM || method == ADAPTIVE_ETM;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceMapMath::GetNumberOfMapLayers(int method, int coefficientCount)
+{
+  if (!IsMapMethod(method) || coefficientCount < 1 || coefficientCount > kMaxCoefficients)
+  {
+    return 0;
+  }
+  return (coefficientCount + COEFFICIENTS_PER_LAYER - 1) / COEFFICIENTS_PER_LAYER +
+    (IsAdaptiveMethod(method) ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceMapMath::GetBoundsLayer(int method, int coefficientCount)
+{
+  const int layers = GetNumberOfMapLayers(method, coefficientCount);
+  return IsAdaptiveMethod(method) && layers > 0 ? layers - 1 : -1;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceMapMath::Project(int method, const double* profile, int profileSize,
   double length, int sampleCount, int coefficientCount, double adaptiveThreshold,
   double* coefficients, double bounds[3])
 {
-  const bool adaptive = IsAdaptive(method);
-  if (!IsMapMethod(method) || !ValidProfile(profile, profileSize, length) || sampleCount < 1 ||
-    coefficientCount < 1 || coefficientCount > kMaxCoefficients || !coefficients || !bounds ||
+  if (!ValidProfile(profile, profileSize, length))
+  {
+    return false;
+  }
+  return Project(
+    method, [=](double s) { return SampleProfile(profile, profileSize, s); }, length, sampleCount,
+    coefficientCount, adaptiveThreshold, coefficients, bounds);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapMath::Project(int method, const std::function<double(double)>& extinction,
+  double length, int sampleCount, int coefficientCount, double adaptiveThreshold,
+  double* coefficients, double bounds[3])
+{
+  const bool adaptive = IsAdaptiveMethod(method);
+  if (!IsMapMethod(method) || !extinction || !(length > 0.0) || !std::isfinite(length) ||
+    sampleCount < 1 || coefficientCount < 1 || coefficientCount > kMaxCoefficients ||
+    !coefficients || !bounds ||
     (adaptive && !(adaptiveThreshold >= 0.0 && adaptiveThreshold < 1.0)))
   {
     return false;
@@ -125,7 +159,7 @@ bool vtkTransmittanceMapMath::Project(int method, const double* profile, int pro
   if (!adaptive)
   {
     const double opticalDepth = MarchAndProject(
-      tfm, profile, profileSize, length, 0.0, 1.0, sampleCount, coefficientCount, coefficients);
+      tfm, extinction, length, 0.0, 1.0, sampleCount, coefficientCount, coefficients);
     bounds[0] = 0.0;
     bounds[1] = 1.0;
     bounds[2] = std::exp(-opticalDepth);
@@ -140,9 +174,9 @@ bool vtkTransmittanceMapMath::Project(int method, const double* profile, int pro
   double opticalDepth = 0.0; // sum_{m<n} sigma_m D du
   for (int n = 0; n < sampleCount; ++n)
   {
-    const double extinction = SampleProfile(profile, profileSize, (n + 0.5) * du);
-    const double stepDepth = extinction * length * du;
-    if (firstExtinct < 0 && extinction > 0.0)
+    const double sigma = extinction((n + 0.5) * du);
+    const double stepDepth = sigma * length * du;
+    if (firstExtinct < 0 && sigma > 0.0)
     {
       firstExtinct = n;
     }
@@ -170,8 +204,7 @@ bool vtkTransmittanceMapMath::Project(int method, const double* profile, int pro
   const double transmittanceBeyond = std::exp(-opticalDepth);
 
   // Second march over the tight range.
-  MarchAndProject(
-    tfm, profile, profileSize, length, sMin, sMax, sampleCount, coefficientCount, coefficients);
+  MarchAndProject(tfm, extinction, length, sMin, sMax, sampleCount, coefficientCount, coefficients);
   bounds[0] = sMin;
   bounds[1] = sMax;
   bounds[2] = transmittanceBeyond;
@@ -182,7 +215,7 @@ bool vtkTransmittanceMapMath::Project(int method, const double* profile, int pro
 double vtkTransmittanceMapMath::Reconstruct(
   int method, const double* coefficients, int coefficientCount, const double bounds[3], double s)
 {
-  const bool adaptive = IsAdaptive(method);
+  const bool adaptive = IsAdaptiveMethod(method);
   if (!IsMapMethod(method) || !coefficients || coefficientCount < 1 ||
     coefficientCount > kMaxCoefficients || std::isnan(s) || (adaptive && !bounds))
   {

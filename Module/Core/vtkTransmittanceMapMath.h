@@ -69,6 +69,8 @@
 #include "TyndallCoreModule.h" // For export macro
 #include "vtkObject.h"
 
+#include <functional> // For std::function
+
 class TYNDALLCORE_EXPORT vtkTransmittanceMapMath : public vtkObject
 {
 public:
@@ -98,9 +100,42 @@ public:
   static const char* GetMethodName(int method);
 
   /**
+   * The limits and layout of a map, one definition for the CPU math, the
+   * mapper and (injected as #defines) its shaders: at most
+   * MAXIMUM_NUMBER_OF_COEFFICIENTS coefficients per texel, stored
+   * COEFFICIENTS_PER_LAYER to an RGBA layer.
+   */
+  enum MapLimits
+  {
+    MAXIMUM_NUMBER_OF_COEFFICIENTS = 16,
+    COEFFICIENTS_PER_LAYER = 4
+  };
+
+  /**
    * Largest number of coefficients a map stores per texel.
    */
-  static int GetMaximumNumberOfCoefficients() { return 16; }
+  static int GetMaximumNumberOfCoefficients() { return MAXIMUM_NUMBER_OF_COEFFICIENTS; }
+
+  ///@{
+  /**
+   * Whether a method builds maps (TFM, ADAPTIVE_TFM, ETM, ADAPTIVE_ETM), and
+   * whether it is one of the adaptive ones.
+   */
+  static bool IsMapMethod(int method);
+  static bool IsAdaptiveMethod(int method);
+  ///@}
+
+  ///@{
+  /**
+   * The layout of one light's map: ceil(coefficientCount / 4) RGBA layers of
+   * coefficients (four per layer, in order), plus, for the adaptive methods,
+   * one layer (s_min, s_max, T_beyond, 0) at GetBoundsLayer(), the last.
+   * GetNumberOfMapLayers() is 0 and GetBoundsLayer() -1 when there is none
+   * (not a map method, count outside [1, 16]).
+   */
+  static int GetNumberOfMapLayers(int method, int coefficientCount);
+  static int GetBoundsLayer(int method, int coefficientCount);
+  ///@}
 
   /**
    * Projects one light ray. profile holds profileSize (>= 2) finite,
@@ -117,6 +152,19 @@ public:
     int sampleCount, int coefficientCount, double adaptiveThreshold, double* coefficients,
     double bounds[3]) VTK_SIZEHINT(profile, profileSize)
     VTK_SIZEHINT(coefficients, coefficientCount);
+
+#ifndef __VTK_WRAP__
+  /**
+   * Project() for any extinction along the segment: `extinction(s)` is
+   * sigma_t (per world unit, finite, >= 0) at s in [0, 1] of a segment of
+   * world length `length`. The march samples it exactly where the shaders
+   * do, so this is the CPU twin of a map texel given the medium along the
+   * texel's ray. Not wrapped.
+   */
+  static bool Project(int method, const std::function<double(double)>& extinction, double length,
+    int sampleCount, int coefficientCount, double adaptiveThreshold, double* coefficients,
+    double bounds[3]);
+#endif
 
   /**
    * Transmittance at s from the coefficients and bounds that Project()

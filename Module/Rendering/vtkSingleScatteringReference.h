@@ -4,15 +4,17 @@
  *
  * vtkSingleScatteringReference renders one vtkVolume, seen by a vtkRenderer's
  * active camera and lit by the renderer's lights, with exactly the formulas of
- * Documentation/rendering-model.md: extinction from VTK's opacity semantics,
- * albedo (or emitted colour) from the colour transfer function, the
- * Henyey-Greenstein phase function normalised to 1/(4 pi), light irradiance
- * E = LightScale * Intensity * DiffuseColor with VTK's attenuation and spot
- * cone, unshadowed ambient, optional emission, and shadows (the light
- * transmittance T_l) computed by brute-force marching towards each light.
- * It is slow and accurate: double precision throughout, fine steps, no
- * transmittance maps. It is the oracle of Tyndall's tests and can be used to
- * make offline reference images.
+ * Documentation/rendering-model.md, in double precision with fine steps and
+ * no transmittance maps: the light transmittance T_l is marched towards each
+ * light at every sample. It is the oracle of Tyndall's tests and can make
+ * offline reference images.
+ *
+ * It reads the scene exactly as vtkTransmittanceVolumeMapper does (one
+ * internal reader, vtkTyndallScene): the medium from the volume (its mapper's
+ * input and scalar selection, its matrix, its vtkParticipatingMediumProperty
+ * or plain vtkVolumeProperty) and the renderer's lights; so a scene set up
+ * for the mapper renders here with no extra settings. This class holds only
+ * the integrator's settings: the step sizes and early termination.
  *
  * Render() returns an image of width x height pixels (row 0 is the bottom
  * row, like VTK images and screen captures) with two point-data arrays:
@@ -27,45 +29,22 @@
  * the mapper's ONE, ONE_MINUS_SRC_ALPHA blending) and converts it like an
  * 8-bit frame buffer: clamp to [0, 1], round(x * 255).
  *
- * What is taken from the scene:
+ * Camera: renderer->GetActiveCamera() with the aspect width / height. Pixel
+ * centres are unprojected at the near and far clipping planes through the
+ * inverse of vtkCamera::GetCompositeProjectionTransformMatrix(aspect, -1, 1),
+ * so perspective (vertical ViewAngle, or horizontal with
+ * UseHorizontalViewAngle), parallel projection, window centre, view shear
+ * and off-axis projection are honoured as in VTK's own rendering. A ray
+ * goes from its near-plane point to its far-plane point: the clipping range
+ * clips the medium, as it does on the GPU. Remember
+ * renderer->ResetCameraClippingRange() for a renderer that was never
+ * rendered. VTK's renderer creates an automatic headlight at its first
+ * render when no light is on; a renderer that was never rendered may
+ * therefore have no lights, and then single scattering gives only ambient
+ * light and emission (no error). The mapper's cropping, clipping planes and
+ * blend mode are ignored.
  *
- * - Camera: renderer->GetActiveCamera() with the aspect width / height. Pixel
- *   centres are unprojected at the near and far clipping planes through the
- *   inverse of vtkCamera::GetCompositeProjectionTransformMatrix(aspect, -1, 1),
- *   so perspective (vertical ViewAngle, or horizontal with
- *   UseHorizontalViewAngle), parallel projection, window centre, view shear
- *   and off-axis projection are honoured as in VTK's own rendering. A ray
- *   goes from its near-plane point to its far-plane point (on the line
- *   through the camera position for perspective views): the clipping range
- *   clips the medium, as it does on the GPU. Remember
- *   renderer->ResetCameraClippingRange() for a renderer that was never
- *   rendered.
- * - Volume: the mapper's input (its producer is updated first), a
- *   vtkImageData with one-component scalars of any numeric type, selected by
- *   the mapper's ScalarMode / ArrayAccessMode / ArrayId / ArrayName (point
- *   scalars by default). Cell scalars are treated as point scalars of the
- *   cell centres (clamped over the outer half cells), as the model says. The
- *   image's origin, spacing and extent and the vtkVolume's matrix
- *   (position, orientation, scale, origin, user matrix or transform) are
- *   honoured; the medium fills the image's bounds (the box through the
- *   volume's matrix). A non-identity direction matrix is refused. The
- *   mapper's cropping, clipping planes and blend mode are ignored.
- * - Volume property: GetScalarOpacity(0), GetRGBTransferFunction(0) (or the
- *   gray transfer function for one colour channel) and
- *   GetScalarOpacityUnitDistance(0); interpolation is always trilinear (of
- *   the scalars, before the transfer functions). The renderer's lights:
- *   switched-on lights only. Scene lights use their transformed position and
- *   focal point; headlights sit at the camera's position and shine at its
- *   focal point, and camera lights are placed by the camera's
- *   GetCameraLightTransformMatrix(), as vtkRenderer places them before each
- *   render when LightFollowCamera is on (the default; with it off, the
- *   lights' stored geometry is used). The lights are not modified. Note that
- *   VTK's renderer creates an automatic headlight at its first render when
- *   no light is on; a renderer that was never rendered may therefore have
- *   no lights, and then single scattering gives only ambient light and
- *   emission (no error).
- *
- * Numerical method: a camera ray's segment inside the volume's box is cut
+ * Numerical method: a camera ray's segment inside the medium's box is cut
  * into n = ceil(length / StepSize) equal steps. The medium is sampled at each
  * step's midpoint and taken as constant over the step, which is integrated
  * exactly: the step adds T_v * J * (1 - exp(-sigma_t dt)) to the radiance,
@@ -76,34 +55,27 @@
  * otherwise. The light transmittance T_l at a sample is exp(-tau), tau being
  * the midpoint rule of sigma_t over n_l = ceil(d / LightStepSize) equal steps
  * of the segment from the sample to where the ray towards the light leaves
- * the volume's box (or reaches a positional light inside it). Rays stop
+ * the box (or reaches a positional light inside it). Rays stop
  * when T_v (and light marches when T_l) fall below
- * EarlyTerminationThreshold.
+ * EarlyTerminationThreshold. The transfer functions are read from the
+ * scene's table (vtkTyndallTransferTable, the GPU's table), interpolated
+ * linearly.
  *
- * Transfer functions are not thread safe, so before the parallel loop they
- * are tabulated over the data's finite scalar range into tables of
- * TransferFunctionTableSize entries (default 4096, the resolution of the GPU
- * mapper's tables), read with linear interpolation: the opacity alpha (the
- * extinction is computed per sample from the interpolated alpha), the colour
- * and the emission colour. Rows of pixels are rendered in parallel with
- * vtkSMPTools in batches; between batches the main thread fires
- * vtkCommand::ProgressEvent (call data: a double* progress in [0, 1]) and
- * checks AbortExecute. StartEvent and EndEvent surround a render.
+ * Rows of pixels are rendered in parallel with vtkSMPTools in batches;
+ * between batches the main thread fires vtkCommand::ProgressEvent (call
+ * data: a double* progress in [0, 1]) and checks AbortExecute. StartEvent
+ * and EndEvent surround a render.
  *
- * Bad input (no renderer, volume, mapper or input; input that is not a
- * vtkImageData or is empty; missing or multi-component scalars; a
- * non-identity direction matrix; zero or non-finite spacing; a singular or
- * projective volume matrix; a non-positive unit distance; a size outside
- * [1, 16384]; steps so small that a ray would need more than 10^7 of them)
- * is reported with vtkErrorMacro and Render() returns nullptr. NaN scalars
- * are treated as empty medium (any sample interpolated from a NaN is empty)
- * with one warning per render. A volume one point thick along an axis has a
- * box of zero thickness: it is valid and renders as empty space.
+ * Bad input (anything the scene reader refuses, see
+ * Documentation/rendering-model.md; a size outside [1, 16384]; steps so
+ * small that a ray would need more than 10^7 of them; a camera whose
+ * projection cannot be inverted) is reported with vtkErrorMacro and Render()
+ * returns nullptr.
  *
  * The reference renders the volume alone: no opaque geometry, no depth
  * buffer; L_behind is the background given to Composite().
  *
- * @sa vtkTransmittanceVolumeMapper
+ * @sa vtkTransmittanceVolumeMapper vtkParticipatingMediumProperty
  */
 
 #ifndef vtkSingleScatteringReference_h
@@ -112,7 +84,8 @@
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
 
-class vtkColorTransferFunction;
+#include <memory> // For std::unique_ptr
+
 class vtkImageData;
 class vtkRenderer;
 class vtkVolume;
@@ -123,73 +96,6 @@ public:
   static vtkSingleScatteringReference* New();
   vtkTypeMacro(vtkSingleScatteringReference, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  enum ScatteringModels
-  {
-    EMISSION_ABSORPTION = 0,
-    SINGLE_SCATTERING = 1
-  };
-
-  ///@{
-  /**
-   * The light transport model: EMISSION_ABSORPTION (the colour transfer
-   * function is the emitted colour, as in VTK) or SINGLE_SCATTERING (the
-   * colour is the albedo; lights, ambient and emission; the default).
-   */
-  vtkSetClampMacro(ScatteringModel, int, EMISSION_ABSORPTION, SINGLE_SCATTERING);
-  vtkGetMacro(ScatteringModel, int);
-  void SetScatteringModelToEmissionAbsorption() { this->SetScatteringModel(EMISSION_ABSORPTION); }
-  void SetScatteringModelToSingleScattering() { this->SetScatteringModel(SINGLE_SCATTERING); }
-  ///@}
-
-  ///@{
-  /**
-   * Multiplies the extinction coefficient derived from the opacity transfer
-   * function, in [0, 1e6]; default 1.
-   */
-  vtkSetClampMacro(DensityScale, double, 0.0, 1.0e6);
-  vtkGetMacro(DensityScale, double);
-  ///@}
-
-  ///@{
-  /**
-   * The Henyey-Greenstein asymmetry g, in [-0.99, 0.99]; default 0
-   * (isotropic). g > 0 scatters forwards (bright when looking into a light).
-   */
-  vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
-  vtkGetMacro(ScatteringAnisotropy, double);
-  ///@}
-
-  ///@{
-  /**
-   * Converts a vtkLight's dimensionless intensity into irradiance, in
-   * [0, 1e6]; default 4 pi (an isotropic, optically thin, white medium lit by
-   * an intensity-1 light then has the brightness of its albedo).
-   */
-  vtkSetClampMacro(LightScale, double, 0.0, 1.0e6);
-  vtkGetMacro(LightScale, double);
-  ///@}
-
-  ///@{
-  /**
-   * Unshadowed white ambient in-scattering A (single scattering only), in
-   * [0, 1e6]; default 0.
-   */
-  vtkSetClampMacro(AmbientIntensity, double, 0.0, 1.0e6);
-  vtkGetMacro(AmbientIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * Emission (single scattering only): epsilon = EmissionScale * e(s) *
-   * sigma_t, e being the EmissionColor transfer function. EmissionScale is in
-   * [0, 1e6], default 0; EmissionColor defaults to null (no emission).
-   */
-  vtkSetClampMacro(EmissionScale, double, 0.0, 1.0e6);
-  vtkGetMacro(EmissionScale, double);
-  void SetEmissionColor(vtkColorTransferFunction* emission);
-  vtkGetObjectMacro(EmissionColor, vtkColorTransferFunction);
-  ///@}
 
   ///@{
   /**
@@ -220,15 +126,6 @@ public:
    */
   vtkSetClampMacro(EarlyTerminationThreshold, double, 0.0, 1.0);
   vtkGetMacro(EarlyTerminationThreshold, double);
-  ///@}
-
-  ///@{
-  /**
-   * Number of entries of the transfer-function tables, in [2, 1048576];
-   * default 4096.
-   */
-  vtkSetClampMacro(TransferFunctionTableSize, int, 2, 1048576);
-  vtkGetMacro(TransferFunctionTableSize, int);
   ///@}
 
   ///@{
@@ -292,17 +189,9 @@ protected:
   vtkSingleScatteringReference();
   ~vtkSingleScatteringReference() override;
 
-  int ScatteringModel = SINGLE_SCATTERING;
-  double DensityScale = 1.0;
-  double ScatteringAnisotropy = 0.0;
-  double LightScale = 12.566370614359172;
-  double AmbientIntensity = 0.0;
-  double EmissionScale = 0.0;
-  vtkColorTransferFunction* EmissionColor = nullptr;
   double StepSize = 0.0;
   double LightStepSize = 0.0;
   double EarlyTerminationThreshold = 1.0e-6;
-  int TransferFunctionTableSize = 4096;
   bool AbortExecute = false;
   double Progress = 0.0;
 
@@ -321,6 +210,9 @@ private:
   // Render() after the checks of its arguments; false on error or abort.
   bool RenderInternal(vtkRenderer* renderer, vtkVolume* volume, int width, int height);
   void UpdateProgress(double progress);
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 };
 
 #endif

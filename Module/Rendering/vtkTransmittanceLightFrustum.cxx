@@ -1,6 +1,9 @@
 #include "vtkTransmittanceLightFrustum.h"
 
+#include "vtkCamera.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
@@ -174,6 +177,106 @@ void vtkTransmittanceLightFrustum::GetTexel(const double x[3], double ab[2]) con
 }
 
 //------------------------------------------------------------------------------
+void vtkTransmittanceLightFrustum::ComputeClipMatrix(const double corners[24], vtkMatrix4x4* clip)
+{
+  double x[3], y[3], z[3];
+  std::copy(this->AxisX, this->AxisX + 3, x);
+  std::copy(this->AxisY, this->AxisY + 3, y);
+  std::copy(this->AxisZ, this->AxisZ + 3, z);
+  const double lx = vtkMath::Normalize(x), ly = vtkMath::Normalize(y);
+  vtkMath::Normalize(z);
+  const double* o = this->Origin;
+  double farDistance = 0.0, minDepth = VTK_DOUBLE_MAX;
+  const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(corners, corners + 21));
+  for (int c = 0; c < 8; ++c)
+  {
+    const double v[3] = { corners[3 * c] - o[0], corners[3 * c + 1] - o[1],
+      corners[3 * c + 2] - o[2] };
+    farDistance = std::max(farDistance, vtkMath::Dot(v, z));
+    minDepth = std::min(minDepth, vtkMath::Dot(v, z));
+  }
+  farDistance += 0.01 * diagonal;
+  clip->Zero();
+  if (!this->Positional)
+  {
+    const double nearDistance = -10.0 * diagonal;
+    const double sz = 2.0 / (farDistance - nearDistance);
+    for (int k = 0; k < 3; ++k)
+    {
+      clip->SetElement(0, k, 2.0 / lx * x[k]);
+      clip->SetElement(1, k, 2.0 / ly * y[k]);
+      clip->SetElement(2, k, sz * z[k]);
+    }
+    clip->SetElement(0, 3, -2.0 / lx * vtkMath::Dot(o, x) - 1.0);
+    clip->SetElement(1, 3, -2.0 / ly * vtkMath::Dot(o, y) - 1.0);
+    clip->SetElement(2, 3, -sz * (vtkMath::Dot(o, z) + nearDistance) - 1.0);
+    clip->SetElement(3, 3, 1.0);
+    this->NearDistance = nearDistance;
+  }
+  else
+  {
+    const double nearDistance = 1e-3 * std::max(minDepth, 1e-6 * diagonal);
+    const double a = (farDistance + nearDistance) / (farDistance - nearDistance);
+    const double b = -2.0 * farDistance * nearDistance / (farDistance - nearDistance);
+    for (int k = 0; k < 3; ++k)
+    {
+      clip->SetElement(0, k, x[k] / lx);
+      clip->SetElement(1, k, y[k] / ly);
+      clip->SetElement(2, k, a * z[k]);
+      clip->SetElement(3, k, z[k]);
+    }
+    clip->SetElement(0, 3, -vtkMath::Dot(o, x) / lx);
+    clip->SetElement(1, 3, -vtkMath::Dot(o, y) / ly);
+    clip->SetElement(2, 3, -a * vtkMath::Dot(o, z) + b);
+    clip->SetElement(3, 3, -vtkMath::Dot(o, z));
+    this->NearDistance = nearDistance;
+  }
+  this->FarDistance = farDistance;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceLightFrustum::ConfigureCamera(const double corners[24], vtkCamera* camera)
+{
+  vtkNew<vtkMatrix4x4> clip;
+  this->ComputeClipMatrix(corners, clip);
+  double y[3], z[3];
+  std::copy(this->AxisY, this->AxisY + 3, y);
+  std::copy(this->AxisZ, this->AxisZ + 3, z);
+  vtkMath::Normalize(y);
+  vtkMath::Normalize(z);
+  const double* o = this->Origin;
+  camera->SetPosition(o[0], o[1], o[2]);
+  camera->SetFocalPoint(o[0] + z[0], o[1] + z[1], o[2] + z[2]);
+  camera->SetViewUp(y);
+  // The composite projection is projection * view: make it `clip`.
+  vtkNew<vtkMatrix4x4> viewInverse, projection;
+  vtkMatrix4x4::Invert(camera->GetViewTransformMatrix(), viewInverse);
+  vtkMatrix4x4::Multiply4x4(clip, viewInverse, projection);
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->UseExplicitProjectionTransformMatrixOn();
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceLightFrustum::GetRayDistance(double a, double b, double depth) const
+{
+  const double n = this->NearDistance, f = this->FarDistance;
+  if (!this->Positional)
+  {
+    // Orthographic: depth is linear in the distance from the origin plane,
+    // where every ray starts.
+    return n + depth * (f - n);
+  }
+  // Perspective: the view depth, then the distance along the texel's ray.
+  const double zNdc = 2.0 * depth - 1.0;
+  const double w = 2.0 * n * f / ((f + n) - zNdc * (f - n));
+  double origin[3], direction[3], z[3];
+  this->GetRay(a, b, origin, direction);
+  std::copy(this->AxisZ, this->AxisZ + 3, z);
+  vtkMath::Normalize(z);
+  return w / vtkMath::Dot(direction, z);
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceLightFrustum::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -188,4 +291,6 @@ void vtkTransmittanceLightFrustum::PrintSelf(ostream& os, vtkIndent indent)
      << ")\n";
   os << indent << "AxisZ: (" << this->AxisZ[0] << ", " << this->AxisZ[1] << ", " << this->AxisZ[2]
      << ")\n";
+  os << indent << "NearDistance: " << this->NearDistance << "\n";
+  os << indent << "FarDistance: " << this->FarDistance << "\n";
 }

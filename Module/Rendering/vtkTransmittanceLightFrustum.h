@@ -22,6 +22,12 @@
  *
  * GetRay() and GetTexel() are the CPU twins of the shader functions
  * tyndallLightRay() and tyndallLightTexel() (vtkTransmittanceCommonFS.glsl).
+ *
+ * Opaque geometry is drawn from the light by a camera whose projection is
+ * ComputeClipMatrix(): clip x and y are 2a - 1 and 2b - 1 of the texel whose
+ * ray the point lies on, so the depth buffer has one texel per map texel.
+ * GetRayDistance() turns a depth value back into the distance along the
+ * texel's ray (the CPU twin of vtkTransmittanceOcclusionFS.glsl).
  */
 
 #ifndef vtkTransmittanceLightFrustum_h
@@ -29,6 +35,9 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
+
+class vtkCamera;
+class vtkMatrix4x4;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceLightFrustum : public vtkObject
 {
@@ -91,6 +100,39 @@ public:
    */
   void GetTexel(const double x[3], double ab[2]) const;
 
+  /**
+   * The world -> clip matrix (OpenGL convention, depth -1 .. 1) of a camera
+   * that sees this frustum, for the box's 8 corners (24 doubles): x, y as
+   * above; depth from GetNearDistance() to GetFarDistance() along AxisZ
+   * from Origin (orthographic: linear, with the near plane 10 box diagonals
+   * towards the light so that occluders far on the light's side count;
+   * perspective: the usual hyperbolic depth, near a thousandth of the
+   * nearest corner's depth, far one hundredth of a diagonal beyond the
+   * farthest). Call it after a successful fit.
+   */
+  void ComputeClipMatrix(const double corners[24], vtkMatrix4x4* clip);
+
+  /**
+   * Makes `camera`'s composite projection (at aspect 1, depth -1 .. 1) the
+   * matrix of ComputeClipMatrix(), with an explicit projection.
+   */
+  void ConfigureCamera(const double corners[24], vtkCamera* camera);
+
+  ///@{
+  /**
+   * The depth range along AxisZ of the last ComputeClipMatrix().
+   */
+  vtkGetMacro(NearDistance, double);
+  vtkGetMacro(FarDistance, double);
+  ///@}
+
+  /**
+   * The distance along the ray of texel (a, b) from its origin to the point
+   * whose window depth (0 .. 1, the depth buffer's value) is `depth`, for
+   * the last ComputeClipMatrix().
+   */
+  double GetRayDistance(double a, double b, double depth) const;
+
 protected:
   vtkTransmittanceLightFrustum() = default;
   ~vtkTransmittanceLightFrustum() override = default;
@@ -102,6 +144,8 @@ protected:
   double AxisX[3] = { 1.0, 0.0, 0.0 };
   double AxisY[3] = { 0.0, 1.0, 0.0 };
   double AxisZ[3] = { 0.0, 0.0, 1.0 };
+  double NearDistance = 0.0;
+  double FarDistance = 1.0;
 
 private:
   vtkTransmittanceLightFrustum(const vtkTransmittanceLightFrustum&) = delete;

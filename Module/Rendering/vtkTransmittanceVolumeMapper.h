@@ -5,11 +5,13 @@
  * vtkTransmittanceVolumeMapper renders a vtkImageData (point or cell
  * scalars, any numeric type, one component) as a participating medium with
  * physically based single scattering, inside a normal vtkRenderer beside
- * opaque actors and other props. The scene model (extinction from VTK's
- * opacity semantics, albedo from the colour transfer function,
- * Henyey-Greenstein phase, emission, ambient, the renderer's lights) is
- * defined in Documentation/rendering-model.md; vtkSingleScatteringReference
- * renders the same model on the CPU.
+ * opaque actors and other props. The medium is described by the volume's
+ * property: a vtkParticipatingMediumProperty (density scale, anisotropy,
+ * light scale, ambient, emission, scattering model) or a plain
+ * vtkVolumeProperty (their defaults); the model is defined in
+ * Documentation/rendering-model.md, and vtkSingleScatteringReference renders
+ * the same scene on the CPU, read by the same internal reader. This class
+ * holds only the GPU integrator's settings.
  *
  * Light transmittance, the expensive part of single scattering, comes from
  * per-light transmittance maps built once and reused for every camera ray:
@@ -28,8 +30,8 @@
  *   tight range.
  *
  * Maps are rebuilt only when something they depend on changes: the input
- * data, the transfer functions, DensityScale, the lights (position,
- * direction, type, cone), the volume's matrix, the method, the number of
+ * data, the transfer functions, the density scale, the lights (position,
+ * direction, type), the volume's matrix, the method, the number of
  * coefficients, the map size, LightSampleCount or AdaptiveThreshold. A
  * camera move never rebuilds them (but a headlight or camera light moves
  * with the camera, and so rebuilds its map). GetMapBuildCount() counts
@@ -41,6 +43,7 @@
  * no map: that light falls back to brute-force marching (documented
  * fallback; everything else keeps using maps). Up to 8 lights are used
  * (GetMaximumNumberOfLights()); further lights are ignored with a warning.
+ * GetTransmittanceMap() reads a light's map back, for inspection and tests.
  *
  * View rays stop at the depth of opaque geometry already drawn. Opaque
  * actors also block light entering the medium: each frame with visible
@@ -49,17 +52,23 @@
  * from that light, whatever the method. Lights inside the bounds (no
  * frustum) are not blocked by geometry.
  *
+ * Render() is an orchestrator of named passes, each its own class
+ * (Documentation/architecture.md): the scene reader (vtkTyndallScene), the
+ * medium upload (vtkTransmittanceMediumTextures), the light-space occlusion
+ * (vtkTransmittanceOcclusionPass), the maps (vtkTransmittanceMapPass), the
+ * depth capture (vtkTransmittanceDepthPass) and the ray cast
+ * (vtkTransmittanceRayCastPass). The shaders are GLSL files in glsl/
+ * embedded at build time, their constants injected from C++
+ * (vtkTransmittanceShaderSource).
+ *
  * Bad input is reported with vtkErrorMacro and leaves the rest of the
- * render intact: no input, no or multi-component scalars, fewer than 2
- * points along an axis, a render window without OpenGL 3.2. NaN and Inf
- * scalars are replaced by the smallest finite scalar (a warning counts
- * them). A volume larger than the GPU's 3-D texture limit is downsampled
- * by the smallest integer factor that fits, with a warning.
+ * render intact (see Documentation/rendering-model.md for what the scene
+ * reader refuses, and how NaN scalars are rendered); so is a render window
+ * without OpenGL 3.2. A volume larger than the GPU's 3-D texture limit is
+ * downsampled by the smallest integer factor that fits, with a warning.
  *
- * The shaders are GLSL files in glsl/ embedded at build time.
- *
- * @sa vtkSingleScatteringReference vtkTransmittanceMapMath
- * vtkTransmittanceLightFrustum
+ * @sa vtkParticipatingMediumProperty vtkSingleScatteringReference
+ * vtkTransmittanceMapMath vtkTransmittanceLightFrustum
  */
 
 #ifndef vtkTransmittanceVolumeMapper_h
@@ -71,7 +80,8 @@
 
 #include <memory> // For std::unique_ptr
 
-class vtkColorTransferFunction;
+class vtkImageData;
+class vtkTransmittanceLightFrustum;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceVolumeMapper : public vtkVolumeMapper
 {
@@ -79,12 +89,6 @@ public:
   static vtkTransmittanceVolumeMapper* New();
   vtkTypeMacro(vtkTransmittanceVolumeMapper, vtkVolumeMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  enum ScatteringModels
-  {
-    EMISSION_ABSORPTION = 0,
-    SINGLE_SCATTERING = 1
-  };
 
   /// The methods, shared with the CPU math (vtkTransmittanceMapMath).
   enum TransmittanceMethods
@@ -96,18 +100,6 @@ public:
     ETM = vtkTransmittanceMapMath::ETM,
     ADAPTIVE_ETM = vtkTransmittanceMapMath::ADAPTIVE_ETM
   };
-
-  ///@{
-  /**
-   * The scattering model: EMISSION_ABSORPTION (the colour transfer function
-   * is emitted colour, as in vtkGPUVolumeRayCastMapper's unshaded composite)
-   * or SINGLE_SCATTERING (default; the colour is the albedo).
-   */
-  vtkSetClampMacro(ScatteringModel, int, EMISSION_ABSORPTION, SINGLE_SCATTERING);
-  vtkGetMacro(ScatteringModel, int);
-  void SetScatteringModelToEmissionAbsorption() { this->SetScatteringModel(EMISSION_ABSORPTION); }
-  void SetScatteringModelToSingleScattering() { this->SetScatteringModel(SINGLE_SCATTERING); }
-  ///@}
 
   ///@{
   /**
@@ -143,22 +135,6 @@ public:
 
   ///@{
   /**
-   * Henyey-Greenstein anisotropy g in [-0.99, 0.99]; default 0 (isotropic).
-   */
-  vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
-  vtkGetMacro(ScatteringAnisotropy, double);
-  ///@}
-
-  ///@{
-  /**
-   * Multiplier of the extinction, in [0, 1e6]; default 1.
-   */
-  vtkSetClampMacro(DensityScale, double, 0.0, 1.0e6);
-  vtkGetMacro(DensityScale, double);
-  ///@}
-
-  ///@{
-  /**
    * Transmittance threshold of the adaptive methods' first march, in
    * [1e-6, 0.5]; default 0.01.
    */
@@ -186,35 +162,6 @@ public:
 
   ///@{
   /**
-   * Converts a vtkLight's dimensionless intensity into irradiance, in
-   * [0, 1e6]; default 4 pi (see Documentation/rendering-model.md).
-   */
-  vtkSetClampMacro(LightScale, double, 0.0, 1.0e6);
-  vtkGetMacro(LightScale, double);
-  ///@}
-
-  ///@{
-  /**
-   * Unshadowed ambient in-scattering, in [0, 1e6]; default 0.
-   */
-  vtkSetClampMacro(AmbientIntensity, double, 0.0, 1.0e6);
-  vtkGetMacro(AmbientIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * Emission (single scattering only): EmissionScale in [0, 1e6] (default
-   * 0) times the EmissionColor transfer function of the scalar (default
-   * none: no emission) times the extinction.
-   */
-  vtkSetClampMacro(EmissionScale, double, 0.0, 1.0e6);
-  vtkGetMacro(EmissionScale, double);
-  void SetEmissionColor(vtkColorTransferFunction* emission);
-  vtkGetObjectMacro(EmissionColor, vtkColorTransferFunction);
-  ///@}
-
-  ///@{
-  /**
    * Jitter the sample positions per pixel against banding (default on).
    * The jitter is a fixed function of the pixel, so images are
    * deterministic either way.
@@ -227,18 +174,44 @@ public:
   /**
    * How many times the transmittance maps were built.
    */
-  vtkGetMacro(MapBuildCount, int);
+  int GetMapBuildCount();
 
   /**
    * Wall-clock seconds of the last map build (with glFinish, so it measures
    * the GPU work).
    */
-  vtkGetMacro(LastMapBuildTime, double);
+  double GetLastMapBuildTime();
 
   /**
    * The most lights used; further lights are ignored with a warning.
    */
-  static int GetMaximumNumberOfLights() { return 8; }
+  static int GetMaximumNumberOfLights();
+
+  ///@{
+  /**
+   * The lights of the last Render(), in the renderer's order (switched-on
+   * lights with a positive intensity, at most GetMaximumNumberOfLights();
+   * none in the emission-absorption model): their number, the method each
+   * used (the mapper's, or BRUTE_FORCE for a light without a map; -1 for an
+   * index out of range) and the frustum of each one's map (null out of
+   * range; meaningful when the light has a map).
+   */
+  int GetNumberOfRenderedLights();
+  int GetLightTransmittanceMethod(int light);
+  vtkTransmittanceLightFrustum* GetLightFrustum(int light);
+  ///@}
+
+  /**
+   * Reads light `light`'s transmittance map, as the last Render() left it,
+   * back from the GPU into `map`: TransmittanceMapSize x TransmittanceMapSize
+   * points, point (i, j) being texel (a, b) = ((i + 0.5) / size,
+   * (j + 0.5) / size) (the origin and spacing say so), with the float
+   * point-data arrays "Coefficients" (NumberOfCoefficients components, the
+   * a_j or c_j of Documentation/rendering-model.md) and, for the adaptive
+   * methods, "Bounds" (s_min, s_max, T_beyond). Returns false (with an
+   * error) when the light has no map or there is no render window.
+   */
+  bool GetTransmittanceMap(int light, vtkImageData* map);
 
   /**
    * Render the volume (called by the renderer).
@@ -250,28 +223,17 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
-  vtkMTimeType GetMTime() override;
-
 protected:
   vtkTransmittanceVolumeMapper();
   ~vtkTransmittanceVolumeMapper() override;
 
-  int ScatteringModel = SINGLE_SCATTERING;
   int TransmittanceMethod = ADAPTIVE_ETM;
   int NumberOfCoefficients = 8;
   int TransmittanceMapSize = 256;
-  double ScatteringAnisotropy = 0.0;
-  double DensityScale = 1.0;
   double AdaptiveThreshold = 0.01;
   double SampleDistance = 0.0;
   int LightSampleCount = 128;
-  double LightScale;
-  double AmbientIntensity = 0.0;
-  double EmissionScale = 0.0;
-  vtkColorTransferFunction* EmissionColor = nullptr;
   bool Jitter = true;
-  int MapBuildCount = 0;
-  double LastMapBuildTime = 0.0;
 
 private:
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;

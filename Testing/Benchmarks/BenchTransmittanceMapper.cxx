@@ -39,6 +39,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPNGWriter.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -49,7 +50,6 @@
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtksys/SystemTools.hxx"
@@ -101,7 +101,7 @@ struct Medium
   std::string Key;  // file names of --export
   std::string Name; // table heading
   vtkSmartPointer<vtkImageData> Data;
-  vtkSmartPointer<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkParticipatingMediumProperty> Property;
   bool FitCamera = false; // data volumes: a camera fitted to the bounds
   bool YUp = false;       // with FitCamera: seen from +z, y up
 };
@@ -129,7 +129,6 @@ Scene MakeScene(const Medium& medium, const Options& options)
   scene.Mapper->SetNumberOfCoefficients(options.Coefficients);
   scene.Mapper->SetTransmittanceMapSize(options.MapSize);
   scene.Mapper->SetLightSampleCount(options.LightSamples);
-  scene.Mapper->SetAmbientIntensity(kAmbient);
   scene.Mapper->JitterOff();
   scene.Volume = vtkSmartPointer<vtkVolume>::New();
   scene.Volume->SetMapper(scene.Mapper);
@@ -369,9 +368,9 @@ bool ExportScene(const Medium& medium, const Scene& scene, const Options& o, vtk
        << ", \"focal_point\": " << JsonArray(sun->GetFocalPoint(), 3)
        << ", \"color\": " << JsonArray(sun->GetDiffuseColor(), 3)
        << ", \"intensity\": " << sun->GetIntensity() << ", \"positional\": false},\n"
-       << "  \"light_scale\": " << scene.Mapper->GetLightScale() << ",\n"
+       << "  \"light_scale\": " << medium.Property->GetLightScale() << ",\n"
        << "  \"ambient\": " << kAmbient << ",\n"
-       << "  \"anisotropy\": " << scene.Mapper->GetScatteringAnisotropy() << ",\n"
+       << "  \"anisotropy\": " << medium.Property->GetScatteringAnisotropy() << ",\n"
        << "  \"sample_distance\": " << 0.5 * MinimumSpacing(medium.Data) << ",\n"
        << "  \"scalar_opacity_unit_distance\": " << property->GetScalarOpacityUnitDistance()
        << ",\n"
@@ -398,7 +397,6 @@ Figures RunMedium(const Medium& medium, const Options& o)
   reference.Window->SetSize(o.ReferenceSize, o.ReferenceSize);
   reference.Window->Render();
   vtkNew<vtkSingleScatteringReference> cpu;
-  cpu->SetAmbientIntensity(kAmbient);
   // Camera steps as fine as the mapper's (half a voxel); light steps of two
   // voxels keep the reference affordable at 256^3 (its light integral
   // converges as the square of the step: see TestSingleScatteringReference).
@@ -482,8 +480,9 @@ bool MakeDataMedium(const Options::Volume& volume, Medium& medium)
     shift->Update();
     image = shift->GetOutput();
   }
-  medium.Property = vtkSmartPointer<vtkVolumeProperty>::New();
+  medium.Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   medium.Property->SetInterpolationTypeToLinear();
+  medium.Property->SetAmbientIntensity(kAmbient);
   if (!vtkTransferFunctionPresets::Apply(
         volume.Preset.c_str(), medium.Property, image->GetScalarRange()))
   {
@@ -528,10 +527,12 @@ int main(int argc, char* argv[])
   media[0].Name = "Built-in cloud";
   media[0].Data = tyndall_test::MakeCloud(o.Resolution);
   media[0].Property = tyndall_test::MakeCloudProperty(0.5);
+  media[0].Property->SetAmbientIntensity(kAmbient);
   media[1].Key = "dense";
   media[1].Name = "Dense medium";
   media[1].Data = tyndall_test::MakeDenseMedium(o.Resolution);
   media[1].Property = tyndall_test::MakeCloudProperty(0.9);
+  media[1].Property->SetAmbientIntensity(kAmbient);
   for (const Options::Volume& volume : o.Volumes)
   {
     Medium medium;

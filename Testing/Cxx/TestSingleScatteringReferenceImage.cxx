@@ -14,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
@@ -21,7 +22,6 @@
 #include "vtkTesting.h"
 #include "vtkTrivialProducer.h"
 #include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 
 #include "TyndallTestImage.h"
 
@@ -42,7 +42,10 @@ int TestSingleScatteringReferenceImage(int argc, char* argv[])
   vtkNew<vtkColorTransferFunction> albedo;
   albedo->AddRGBPoint(0.0, 0.9, 0.92, 0.95);
   albedo->AddRGBPoint(8.0, 1.0, 1.0, 1.0);
-  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkParticipatingMediumProperty> property;
+  property->SetScatteringModelToSingleScattering();
+  property->SetScatteringAnisotropy(0.3);
+  property->SetAmbientIntensity(0.1);
   property->SetScalarOpacity(opacity);
   property->SetColor(albedo);
   property->SetScalarOpacityUnitDistance(0.05);
@@ -72,9 +75,6 @@ int TestSingleScatteringReferenceImage(int argc, char* argv[])
   renderer->AddLight(sun);
 
   vtkNew<vtkSingleScatteringReference> reference;
-  reference->SetScatteringModelToSingleScattering();
-  reference->SetScatteringAnisotropy(0.3);
-  reference->SetAmbientIntensity(0.1);
   // Coarser than the automatic step (2/63/4), to keep the test quick.
   reference->SetStepSize(0.02);
   reference->SetLightStepSize(0.03);

@@ -37,25 +37,17 @@ int TestTransmittanceMapperCaching(int, char*[])
   Check(mapper->GetNumberOfCoefficients() == 16, "coefficients clamp to 16");
   mapper->SetNumberOfCoefficients(0);
   Check(mapper->GetNumberOfCoefficients() == 1, "coefficients clamp to 1");
-  mapper->SetScatteringAnisotropy(2.0);
-  Check(mapper->GetScatteringAnisotropy() == 0.99, "anisotropy clamps to 0.99");
-  mapper->SetScatteringAnisotropy(-5.0);
-  Check(mapper->GetScatteringAnisotropy() == -0.99, "anisotropy clamps to -0.99");
   mapper->SetTransmittanceMapSize(1);
   Check(mapper->GetTransmittanceMapSize() == 16, "map size clamps to 16");
   mapper->SetTransmittanceMethod(42);
   Check(mapper->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::ADAPTIVE_ETM,
     "method clamps into the enumeration");
-  mapper->SetDensityScale(-1.0);
-  Check(mapper->GetDensityScale() == 0.0, "density scale clamps to 0");
   mapper->SetAdaptiveThreshold(2.0);
   Check(mapper->GetAdaptiveThreshold() == 0.5, "adaptive threshold clamps to 0.5");
   mapper->SetLightSampleCount(0);
   Check(mapper->GetLightSampleCount() == 1, "light samples clamp to 1");
 
   mapper->SetNumberOfCoefficients(8);
-  mapper->SetScatteringAnisotropy(0.3);
-  mapper->SetDensityScale(1.0);
   mapper->SetAdaptiveThreshold(0.01);
   mapper->SetLightSampleCount(64);
   mapper->SetTransmittanceMapSize(64);
@@ -63,7 +55,16 @@ int TestTransmittanceMapperCaching(int, char*[])
   vtkNew<vtkTest::ErrorObserver> errors;
   mapper->AddObserver(vtkCommand::ErrorEvent, errors);
 
+  // The medium's settings clamp to their documented ranges too.
   auto property = tyndall_test::MakeCloudProperty();
+  property->SetScatteringAnisotropy(2.0);
+  Check(property->GetScatteringAnisotropy() == 0.99, "anisotropy clamps to 0.99");
+  property->SetScatteringAnisotropy(-5.0);
+  Check(property->GetScatteringAnisotropy() == -0.99, "anisotropy clamps to -0.99");
+  property->SetDensityScale(-1.0);
+  Check(property->GetDensityScale() == 0.0, "density scale clamps to 0");
+  property->SetScatteringAnisotropy(0.3);
+  property->SetDensityScale(1.0);
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);
@@ -97,14 +98,15 @@ int TestTransmittanceMapperCaching(int, char*[])
   expect(false, "a camera move reuses the maps");
   renderer->GetActiveCamera()->Zoom(1.3);
   expect(false, "a zoom reuses the maps");
-  mapper->SetScatteringAnisotropy(-0.2);
-  mapper->SetAmbientIntensity(0.1);
-  expect(false, "anisotropy and ambient do not touch the maps");
+  property->SetScatteringAnisotropy(-0.2);
+  property->SetAmbientIntensity(0.1);
+  property->SetLightScale(10.0);
+  expect(false, "anisotropy, ambient and light scale do not touch the maps");
   sun->SetPosition(-1.0, 0.5, 0.2);
   expect(true, "moving the light rebuilds");
   sun->SetIntensity(2.0);
   expect(false, "the light's intensity does not touch the maps");
-  mapper->SetDensityScale(2.0);
+  property->SetDensityScale(2.0);
   expect(true, "the density scale rebuilds");
   mapper->SetNumberOfCoefficients(12);
   expect(true, "the coefficient count rebuilds");

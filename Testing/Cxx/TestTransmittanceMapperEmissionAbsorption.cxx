@@ -25,6 +25,7 @@ int TestTransmittanceMapperEmissionAbsorption(int argc, char* argv[])
   auto cloud = tyndall_test::MakeCloud(64);
   auto property = tyndall_test::MakeCloudProperty(0.3);
   property->ShadeOff();
+  property->SetScatteringModelToEmissionAbsorption();
   const double step = 0.01;
 
   vtkNew<vtkGPUVolumeRayCastMapper> vtkMapper;
@@ -35,7 +36,6 @@ int TestTransmittanceMapperEmissionAbsorption(int argc, char* argv[])
 
   vtkNew<vtkTransmittanceVolumeMapper> tyndallMapper;
   tyndallMapper->SetInputData(cloud);
-  tyndallMapper->SetScatteringModelToEmissionAbsorption();
   tyndallMapper->SetSampleDistance(step);
   tyndallMapper->JitterOff();
 

@@ -26,11 +26,12 @@ int TestTransmittanceMapperManyLights(int, char*[])
   mapper->JitterOff();
   mapper->SetTransmittanceMethodToAdaptiveETM();
   mapper->SetTransmittanceMapSize(128);
-  mapper->SetAmbientIntensity(0.05);
 
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
-  volume->SetProperty(tyndall_test::MakeCloudProperty(0.4));
+  auto medium = tyndall_test::MakeCloudProperty(0.4);
+  medium->SetAmbientIntensity(0.05);
+  volume->SetProperty(medium);
   vtkNew<vtkRenderer> renderer;
   renderer->AddVolume(volume);
   renderer->SetBackground(0.1, 0.1, 0.15);
@@ -75,7 +76,6 @@ int TestTransmittanceMapperManyLights(int, char*[])
   gpu->DeepCopy(grab->GetOutput());
 
   vtkNew<vtkSingleScatteringReference> reference;
-  reference->SetAmbientIntensity(0.05);
   int status = EXIT_SUCCESS;
   if (!reference->Render(renderer, volume, 160, 160))
   {
@@ -93,7 +93,9 @@ int TestTransmittanceMapperManyLights(int, char*[])
     status = EXIT_FAILURE;
   }
 
-  // The same medium as cell scalars: the cell centres carry the samples.
+  // The same samples as cell scalars: the cell centres carry them and the
+  // medium fills the cells' box (half a cell more on each side, where the
+  // border samples are repeated): the GPU against the CPU reference again.
   vtkNew<vtkImageData> cells;
   int dims[3];
   cloud->GetDimensions(dims);
@@ -108,11 +110,16 @@ int TestTransmittanceMapperManyLights(int, char*[])
   window->Render();
   grab->Modified();
   grab->Update();
-  const double cellPSNR = tyndall_test::PSNR(grab->GetOutput(), gpu);
-  std::cout << "cell scalars vs point scalars: " << cellPSNR << " dB" << std::endl;
-  if (!(cellPSNR >= 55.0))
+  if (!reference->Render(renderer, volume, 160, 160))
   {
-    std::cerr << "FAILED: cell scalars render differently from the same point scalars" << std::endl;
+    std::cerr << "FAILED: the CPU reference did not render the cell scalars" << std::endl;
+    return EXIT_FAILURE;
+  }
+  const double cellPSNR = tyndall_test::PSNR(grab->GetOutput(), reference->Composite());
+  std::cout << "cell scalars, GPU vs CPU: " << cellPSNR << " dB" << std::endl;
+  if (!(cellPSNR >= 46.0))
+  {
+    std::cerr << "FAILED: cell scalars differ between the GPU and the CPU reference" << std::endl;
     status = EXIT_FAILURE;
   }
   return status;

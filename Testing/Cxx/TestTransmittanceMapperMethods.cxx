@@ -14,6 +14,7 @@ int TestTransmittanceMapperMethods(int argc, char* argv[])
 {
   auto cloud = tyndall_test::MakeCloud(48);
   auto property = tyndall_test::MakeCloudProperty(0.5);
+  property->SetAmbientIntensity(0.1);
   vtkNew<vtkRenderWindow> window;
   window->SetMultiSamples(0);
   window->SetSize(480, 320);
@@ -26,7 +27,6 @@ int TestTransmittanceMapperMethods(int argc, char* argv[])
     mapper->SetInputData(cloud);
     mapper->SetTransmittanceMethod(method);
     mapper->SetTransmittanceMapSize(128);
-    mapper->SetAmbientIntensity(0.1);
     mapper->JitterOff();
     vtkNew<vtkVolume> volume;
     volume->SetMapper(mapper);

@@ -50,10 +50,11 @@ int TestTransmittanceMapperOccluder(int, char*[])
   vtkNew<vtkTransmittanceVolumeMapper> mapper;
   mapper->SetInputData(slab);
   mapper->JitterOff();
-  mapper->SetAmbientIntensity(0.05);
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
-  volume->SetProperty(tyndall_test::MakeCloudProperty(0.05));
+  auto medium = tyndall_test::MakeCloudProperty(0.05);
+  medium->SetAmbientIntensity(0.05);
+  volume->SetProperty(medium);
 
   // The plate: above the left half of the slab, between it and the light.
   vtkNew<vtkCubeSource> plate;

@@ -32,11 +32,12 @@ void Measure(vtkImageData* data, double peakOpacity, int size, double psnr[6])
   mapper->SetLightSampleCount(128);
   mapper->SetTransmittanceMapSize(256);
   mapper->SetNumberOfCoefficients(8);
-  mapper->SetAmbientIntensity(0.1);
-  mapper->SetScatteringAnisotropy(0.2);
+  auto medium = tyndall_test::MakeCloudProperty(peakOpacity);
+  medium->SetAmbientIntensity(0.1);
+  medium->SetScatteringAnisotropy(0.2);
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
-  volume->SetProperty(tyndall_test::MakeCloudProperty(peakOpacity));
+  volume->SetProperty(medium);
   volume->RotateY(15.0);
   vtkNew<vtkRenderer> renderer;
   renderer->AddVolume(volume);
@@ -50,8 +51,6 @@ void Measure(vtkImageData* data, double peakOpacity, int size, double psnr[6])
   window->Render();
 
   vtkNew<vtkSingleScatteringReference> reference;
-  reference->SetAmbientIntensity(0.1);
-  reference->SetScatteringAnisotropy(0.2);
   if (!reference->Render(renderer, volume, size, size))
   {
     for (int m = 0; m < 6; ++m)

@@ -33,10 +33,11 @@ int TestTransmittanceMapperScenes(int argc, char* argv[])
     mapper->SetInputData(cloud);
     mapper->JitterOff();
     mapper->SetTransmittanceMapSize(128);
-    mapper->SetAmbientIntensity(0.15);
     volumes[i] = vtkSmartPointer<vtkVolume>::New();
     volumes[i]->SetMapper(mapper);
-    volumes[i]->SetProperty(tyndall_test::MakeCloudProperty(0.4));
+    auto medium = tyndall_test::MakeCloudProperty(0.4);
+    medium->SetAmbientIntensity(0.15);
+    volumes[i]->SetProperty(medium);
     renderers[i] = vtkSmartPointer<vtkRenderer>::New();
     renderers[i]->SetViewport((i % 3) / 3.0, (i / 3) / 2.0, (i % 3 + 1) / 3.0, (i / 3 + 1) / 2.0);
     renderers[i]->SetBackground(0.2, 0.3, 0.45);

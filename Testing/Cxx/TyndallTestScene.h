@@ -10,10 +10,10 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkVolumeProperty.h"
 
 namespace tyndall_test
 {
@@ -43,9 +43,9 @@ inline vtkSmartPointer<vtkImageData> MakeDenseMedium(int n)
   return source->GetOutput();
 }
 
-// Transfer functions of a white cloud: opacity up to `peakOpacity` per
-// 0.05 world units at density 8, albedo 0.9.
-inline vtkSmartPointer<vtkVolumeProperty> MakeCloudProperty(double peakOpacity = 0.5)
+// A white cloud medium: opacity up to `peakOpacity` per 0.05 world units at
+// density 8, albedo 0.9 (the property's other settings at their defaults).
+inline vtkSmartPointer<vtkParticipatingMediumProperty> MakeCloudProperty(double peakOpacity = 0.5)
 {
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(0.0, 0.0);
@@ -53,7 +53,7 @@ inline vtkSmartPointer<vtkVolumeProperty> MakeCloudProperty(double peakOpacity =
   vtkNew<vtkColorTransferFunction> color;
   color->AddRGBPoint(0.0, 0.9, 0.9, 0.9);
   color->AddRGBPoint(8.0, 0.9, 0.9, 0.9);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  auto property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetInterpolationTypeToLinear();

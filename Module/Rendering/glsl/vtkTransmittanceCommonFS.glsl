@@ -3,25 +3,25 @@
 // Formulas: Documentation/rendering-model.md. The CPU twins live in
 // vtkTransmittanceMapMath (Tyndall::Core) and vtkSingleScatteringReference.
 
-#define TYNDALL_MAX_LIGHTS 8
-#define TYNDALL_MAX_COEFFICIENTS 16
-#define TYNDALL_PI 3.14159265358979
-
-// Transmittance methods (vtkTransmittanceMapMath::TransmittanceMethods).
-#define TYNDALL_NONE 0
-#define TYNDALL_BRUTE_FORCE 1
-#define TYNDALL_TFM 2
-#define TYNDALL_ADAPTIVE_TFM 3
-#define TYNDALL_ETM 4
-#define TYNDALL_ADAPTIVE_ETM 5
+// Constants, #defined from their one C++ definition by
+// vtkTransmittanceShaderSource: TYNDALL_MAX_LIGHTS, TYNDALL_MAX_COEFFICIENTS,
+// TYNDALL_COEFFICIENTS_PER_LAYER, the methods TYNDALL_NONE ..
+// TYNDALL_ADAPTIVE_ETM, the table rows TYNDALL_TABLE_ALBEDO_ROW and
+// TYNDALL_TABLE_EMISSION_ROW, TYNDALL_NO_OCCLUDER, TYNDALL_PI.
+//TYNDALL::Constants
 
 // The medium: scalars in a 3-D texture, transfer functions in a 2-D table
-// (row 0: rgb = colour or albedo, a = extinction per unit length before the
-// density scale; row 1: rgb = emission colour).
+// (vtkTyndallTransferTable: albedo row rgb = colour or albedo, a =
+// extinction per unit length before the density scale; emission row rgb =
+// emission colour).
 uniform sampler3D volumeTexture;
+// NaN voxels (missing data), when there are any: 0 there, 1 elsewhere; a
+// sample whose filtered validity is below 1 is empty.
+uniform int hasMissing;
+uniform sampler3D validityTexture;
 uniform sampler2D transferTexture;
-uniform mat4 worldToVolume;  // world -> normalised volume space [0,1]^3
-uniform vec3 volumeTexScale; // normalised volume space -> texture coordinates
+uniform mat4 worldToVolume;  // world -> the medium's box as [0,1]^3
+uniform vec3 volumeTexScale; // box [0,1]^3 -> texture coordinates
 uniform vec3 volumeTexShift;
 uniform vec2 scalarToTable; // table coordinate = value * x + y
 uniform float densityScale;
@@ -55,8 +55,15 @@ vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
 float tyndallExtinction(vec3 x, out vec3 color)
 {
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
-  float value = texture(volumeTexture, q * volumeTexScale + volumeTexShift).r;
-  vec4 tf = texture(transferTexture, vec2(value * scalarToTable.x + scalarToTable.y, 0.25));
+  vec3 texel = q * volumeTexScale + volumeTexShift;
+  if (hasMissing != 0 && texture(validityTexture, texel).r < 0.999)
+  {
+    color = vec3(0.0);
+    return 0.0;
+  }
+  float value = texture(volumeTexture, texel).r;
+  vec4 tf = texture(transferTexture,
+    vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW));
   color = tf.rgb;
   return densityScale * tf.a;
 }
@@ -71,7 +78,8 @@ vec3 tyndallEmissionColor(vec3 x)
 {
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   float value = texture(volumeTexture, q * volumeTexScale + volumeTexShift).r;
-  return texture(transferTexture, vec2(value * scalarToTable.x + scalarToTable.y, 0.75)).rgb;
+  return texture(transferTexture,
+    vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_EMISSION_ROW)).rgb;
 }
 
 // The light ray of texel (a, b) of light l.

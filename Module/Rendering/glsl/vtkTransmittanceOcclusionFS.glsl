@@ -1,6 +1,7 @@
 // Tyndall: converts the depth of opaque geometry rendered from a light
 // (appended to vtkTransmittanceCommonFS.glsl) into the distance along each
-// map ray to the first opaque surface; 1e30 where the ray meets none.
+// map ray to the first opaque surface; TYNDALL_NO_OCCLUDER where the ray
+// meets none.
 in vec2 texCoord;
 //VTK::Output::Dec
 
@@ -12,7 +13,7 @@ uniform float farDistance;
 void main()
 {
   float d = texture(lightDepth, texCoord).r;
-  float t = 1e30;
+  float t = TYNDALL_NO_OCCLUDER;
   if (d < 1.0)
   {
     if (lightPositional[lightIndex] == 0)

@@ -14,6 +14,7 @@ uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform int method;
 uniform int coefficientCount;
 uniform int layersPerLight;
+uniform int boundsLayer; // within a light's layers (adaptive methods)
 uniform int mapSlices;
 uniform sampler3D mapTexture;
 uniform float stepLength;
@@ -112,9 +113,9 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
   float s = (dot(x - origin, dir) - range.x) / (range.y - range.x);
   float c[TYNDALL_MAX_COEFFICIENTS];
   int first = l * layersPerLight;
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < TYNDALL_MAX_COEFFICIENTS / TYNDALL_COEFFICIENTS_PER_LAYER; ++k)
   {
-    if (4 * k < coefficientCount)
+    if (TYNDALL_COEFFICIENTS_PER_LAYER * k < coefficientCount)
     {
       vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
       c[4 * k] = v.x;
@@ -127,7 +128,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
   if (m == TYNDALL_ADAPTIVE_TFM || m == TYNDALL_ADAPTIVE_ETM)
   {
     bounds = texture(mapTexture,
-      vec3(ab, (float(first + layersPerLight - 1) + 0.5) / float(mapSlices))).xyz;
+      vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
   }
   return tyndallReconstruct(m, c, coefficientCount, bounds, clamp(s, 0.0, 1.0));
 }
@@ -218,7 +219,7 @@ void main()
       }
       radiance += Tv * stepOpacity * source;
       Tv *= 1.0 - stepOpacity;
-      if (Tv < 1e-5)
+      if (Tv < TYNDALL_VIEW_TERMINATION)
       {
         Tv = 0.0;
         break;

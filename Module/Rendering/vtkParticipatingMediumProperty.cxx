@@ -1,0 +1,70 @@
+#include "vtkParticipatingMediumProperty.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkParticipatingMediumProperty);
+vtkCxxSetObjectMacro(vtkParticipatingMediumProperty, EmissionColor, vtkColorTransferFunction);
+
+//------------------------------------------------------------------------------
+vtkParticipatingMediumProperty::vtkParticipatingMediumProperty()
+  : LightScale(4.0 * vtkMath::Pi())
+{
+}
+
+//------------------------------------------------------------------------------
+vtkParticipatingMediumProperty::~vtkParticipatingMediumProperty()
+{
+  this->SetEmissionColor(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkParticipatingMediumProperty::GetScatteringModelAsString()
+{
+  return this->ScatteringModel == EMISSION_ABSORPTION ? "EmissionAbsorption" : "SingleScattering";
+}
+
+//------------------------------------------------------------------------------
+void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
+{
+  this->Superclass::DeepCopy(p);
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(p);
+  if (!medium)
+  {
+    return;
+  }
+  this->SetScatteringModel(medium->ScatteringModel);
+  this->SetDensityScale(medium->DensityScale);
+  this->SetScatteringAnisotropy(medium->ScatteringAnisotropy);
+  this->SetLightScale(medium->LightScale);
+  this->SetAmbientIntensity(medium->AmbientIntensity);
+  this->SetEmissionScale(medium->EmissionScale);
+  this->SetEmissionColor(medium->EmissionColor);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkParticipatingMediumProperty::GetMTime()
+{
+  vtkMTimeType mtime = this->Superclass::GetMTime();
+  if (this->EmissionColor)
+  {
+    mtime = std::max(mtime, this->EmissionColor->GetMTime());
+  }
+  return mtime;
+}
+
+//------------------------------------------------------------------------------
+void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
+  os << indent << "DensityScale: " << this->DensityScale << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
+  os << indent << "LightScale: " << this->LightScale << "\n";
+  os << indent << "AmbientIntensity: " << this->AmbientIntensity << "\n";
+  os << indent << "EmissionScale: " << this->EmissionScale << "\n";
+  os << indent << "EmissionColor: " << this->EmissionColor << "\n";
+}

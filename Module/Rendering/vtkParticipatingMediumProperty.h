@@ -1,0 +1,149 @@
+/**
+ * @class   vtkParticipatingMediumProperty
+ * @brief   the optical properties of a participating medium, shared by Tyndall's renderers
+ *
+ * vtkParticipatingMediumProperty is a vtkVolumeProperty (set it on a vtkVolume
+ * with SetProperty()) that adds what Tyndall's rendering model needs beyond
+ * VTK's transfer functions. It is the one description of a medium: the GPU
+ * mapper (vtkTransmittanceVolumeMapper) and the CPU reference
+ * (vtkSingleScatteringReference) both read it from the volume, so a scene is
+ * described once and both renderers draw the same thing.
+ *
+ * From vtkVolumeProperty, for component 0:
+ *
+ * - GetScalarOpacity() and GetScalarOpacityUnitDistance(): VTK's opacity
+ *   semantics, turned into the extinction coefficient
+ *   sigma_t = DensityScale * -ln(1 - alpha) / unit distance (the unit
+ *   distance must be positive);
+ * - GetRGBTransferFunction(), or GetGrayTransferFunction() when
+ *   GetColorChannels() is 1: the single-scattering albedo, or the emitted
+ *   colour in the emission-absorption model.
+ *
+ * VTK's gradient shading (Shade, Ambient, Diffuse, Specular,
+ * SpecularPower), gradient opacity, interpolation type and the settings of
+ * further components are ignored: Tyndall interpolates the scalars
+ * trilinearly and lights the medium by scattering. A plain
+ * vtkVolumeProperty can be used too: the settings below then have their
+ * defaults.
+ *
+ * The model is defined in Documentation/rendering-model.md.
+ *
+ * @sa vtkTransmittanceVolumeMapper vtkSingleScatteringReference
+ */
+
+#ifndef vtkParticipatingMediumProperty_h
+#define vtkParticipatingMediumProperty_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkVolumeProperty.h"
+
+class vtkColorTransferFunction;
+
+class TYNDALLRENDERING_EXPORT vtkParticipatingMediumProperty : public vtkVolumeProperty
+{
+public:
+  static vtkParticipatingMediumProperty* New();
+  vtkTypeMacro(vtkParticipatingMediumProperty, vtkVolumeProperty);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ScatteringModels
+  {
+    EMISSION_ABSORPTION = 0,
+    SINGLE_SCATTERING = 1
+  };
+
+  ///@{
+  /**
+   * The light transport model: EMISSION_ABSORPTION (the colour transfer
+   * function is the emitted colour, as in vtkGPUVolumeRayCastMapper's
+   * unshaded composite) or SINGLE_SCATTERING (the colour is the albedo; the
+   * renderer's lights, ambient and emission; the default).
+   */
+  vtkSetClampMacro(ScatteringModel, int, EMISSION_ABSORPTION, SINGLE_SCATTERING);
+  vtkGetMacro(ScatteringModel, int);
+  void SetScatteringModelToEmissionAbsorption() { this->SetScatteringModel(EMISSION_ABSORPTION); }
+  void SetScatteringModelToSingleScattering() { this->SetScatteringModel(SINGLE_SCATTERING); }
+  const char* GetScatteringModelAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Multiplies the extinction derived from the opacity transfer function,
+   * in [0, 1e6]; default 1.
+   */
+  vtkSetClampMacro(DensityScale, double, 0.0, 1.0e6);
+  vtkGetMacro(DensityScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * The Henyey-Greenstein asymmetry g, in [-0.99, 0.99]; default 0
+   * (isotropic). g > 0 scatters forwards (bright when looking into a light).
+   */
+  vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
+  vtkGetMacro(ScatteringAnisotropy, double);
+  ///@}
+
+  ///@{
+  /**
+   * Irradiance per unit of vtkLight intensity, in [0, 1e6]; default 4 pi:
+   * an isotropic, optically thin, white medium lit by an intensity-1 light
+   * then has the brightness of its albedo. Per medium, like VTK's Diffuse
+   * coefficient.
+   */
+  vtkSetClampMacro(LightScale, double, 0.0, 1.0e6);
+  vtkGetMacro(LightScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Unshadowed white ambient in-scattering (single scattering only), in
+   * [0, 1e6]; default 0.
+   */
+  vtkSetClampMacro(AmbientIntensity, double, 0.0, 1.0e6);
+  vtkGetMacro(AmbientIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Emission (single scattering only): EmissionScale in [0, 1e6] (default
+   * 0) times the EmissionColor transfer function of the scalar (default
+   * none: no emission) times the extinction.
+   */
+  vtkSetClampMacro(EmissionScale, double, 0.0, 1.0e6);
+  vtkGetMacro(EmissionScale, double);
+  void SetEmissionColor(vtkColorTransferFunction* emission);
+  vtkGetObjectMacro(EmissionColor, vtkColorTransferFunction);
+  ///@}
+
+  /**
+   * Copies vtkVolumeProperty's settings and, when `p` is a
+   * vtkParticipatingMediumProperty, these (the emission colour is shared,
+   * like VTK's transfer functions). Hides vtkVolumeProperty::DeepCopy(),
+   * which is not virtual: call it on this class.
+   */
+  void DeepCopy(vtkVolumeProperty* p);
+
+  /**
+   * Includes the emission colour's modification time.
+   */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkParticipatingMediumProperty();
+  ~vtkParticipatingMediumProperty() override;
+
+  int ScatteringModel = SINGLE_SCATTERING;
+  double DensityScale = 1.0;
+  double ScatteringAnisotropy = 0.0;
+  double LightScale;
+  double AmbientIntensity = 0.0;
+  double EmissionScale = 0.0;
+  vtkColorTransferFunction* EmissionColor = nullptr;
+
+private:
+  vtkParticipatingMediumProperty(const vtkParticipatingMediumProperty&) = delete;
+  void operator=(const vtkParticipatingMediumProperty&) = delete;
+};
+
+#endif

@@ -1,0 +1,136 @@
+#include "vtkTransmittanceFrame.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTransmittanceLightFrustum.h"
+#include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMediumTextures.h"
+#include "vtkTyndallScene.h"
+
+#include <algorithm>
+
+namespace
+{
+constexpr int kMaxLights = vtkTyndallScene::MaximumNumberOfLights;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window,
+  const vtkTyndallScene& scene, const vtkTransmittanceMediumTextures& textures,
+  const Settings& settings)
+{
+  using M = vtkTransmittanceMapMath;
+  this->Renderer = renderer;
+  this->Window = window;
+  this->State = window->GetState();
+  this->Medium = &scene.GetMedium();
+  this->Textures = &textures;
+  this->Integrator = settings;
+  this->Layers = M::GetNumberOfMapLayers(settings.Method, settings.Coefficients);
+  this->BoundsLayer = M::GetBoundsLayer(settings.Method, settings.Coefficients);
+  this->Medium->GetWorldCorners(this->Corners);
+  this->Diagonal = this->Medium->GetWorldDiagonal();
+  this->MinimumSpacing = this->Medium->GetMinimumWorldSpacing();
+
+  // World -> field index -> the box as [0, 1]^3 (column-major floats).
+  const double* toIndex = this->Medium->GetWorldToIndex();
+  const double* low = this->Medium->GetBoxLow();
+  const double* high = this->Medium->GetBoxHigh();
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      double v = toIndex[4 * r + c];
+      if (r < 3)
+      {
+        v = (v - (c == 3 ? low[r] : 0.0)) / (high[r] - low[r]);
+      }
+      this->WorldToBox[4 * c + r] = static_cast<float>(v);
+    }
+  }
+
+  // The lights (single scattering only), each with its map's frustum.
+  const std::vector<vtkTyndallLight>& lights = scene.GetLights();
+  const size_t count = this->Medium->GetSingleScattering() ? lights.size() : 0;
+  this->Lights.resize(count);
+  for (size_t l = 0; l < count; ++l)
+  {
+    Light& light = this->Lights[l];
+    light.Source = lights[l];
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Irradiance[c] = this->Medium->GetLightScale() * lights[l].Color[c];
+    }
+    if (!light.Frustum)
+    {
+      light.Frustum = vtkSmartPointer<vtkTransmittanceLightFrustum>::New();
+    }
+    light.HasFrustum = light.Source.Positional
+      ? light.Frustum->FitPositional(light.Source.Position, this->Corners)
+      : light.Frustum->FitDirectional(light.Source.Direction, this->Corners);
+    light.Method = settings.Method;
+    if (M::IsMapMethod(light.Method) && !light.HasFrustum)
+    {
+      light.Method = M::BRUTE_FORCE; // documented fallback: a light inside the box
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceFrame::NeedsMaps() const
+{
+  return std::any_of(this->Lights.begin(), this->Lights.end(),
+    [](const Light& l) { return vtkTransmittanceMapMath::IsMapMethod(l.Method); });
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceFrame::GetStepLength() const
+{
+  return this->Integrator.SampleDistance > 0.0 ? this->Integrator.SampleDistance
+                                               : 0.5 * this->MinimumSpacing;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
+{
+  const vtkTyndallTransferTable& table = this->Medium->GetTable();
+  const int volumeUnit = this->Textures->GetVolumeTexture()->GetTextureUnit();
+  vtkTextureObject* validity = this->Textures->GetValidityTexture();
+  program->SetUniformi("volumeTexture", volumeUnit);
+  // Without NaN no validity texture is bound: point the sampler at the
+  // volume's unit (same sampler type), where it is never read.
+  program->SetUniformi("validityTexture", validity ? validity->GetTextureUnit() : volumeUnit);
+  program->SetUniformi("hasMissing", validity ? 1 : 0);
+  program->SetUniformi("transferTexture", this->Textures->GetTransferTexture()->GetTextureUnit());
+  program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
+  program->SetUniform3f("volumeTexScale", this->Textures->GetTextureScale());
+  program->SetUniform3f("volumeTexShift", this->Textures->GetTextureShift());
+  const float toTable[2] = { static_cast<float>(table.TextureScale()),
+    static_cast<float>(table.TextureShift()) };
+  program->SetUniform2f("scalarToTable", toTable);
+  program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
+
+  int positional[kMaxLights] = { 0 }, hasFrustum[kMaxLights] = { 0 };
+  float origin[kMaxLights][3] = {}, axisX[kMaxLights][3] = {}, axisY[kMaxLights][3] = {},
+        axisZ[kMaxLights][3] = {};
+  for (size_t l = 0; l < this->Lights.size(); ++l)
+  {
+    vtkTransmittanceLightFrustum* f = this->Lights[l].Frustum;
+    positional[l] = this->Lights[l].Source.Positional ? 1 : 0;
+    hasFrustum[l] = this->Lights[l].HasFrustum ? 1 : 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      origin[l][k] = static_cast<float>(f->GetOrigin()[k]);
+      axisX[l][k] = static_cast<float>(f->GetAxisX()[k]);
+      axisY[l][k] = static_cast<float>(f->GetAxisY()[k]);
+      axisZ[l][k] = static_cast<float>(f->GetAxisZ()[k]);
+    }
+  }
+  program->SetUniform1iv("lightHasFrustum", kMaxLights, hasFrustum);
+  program->SetUniform1iv("lightPositional", kMaxLights, positional);
+  program->SetUniform3fv("lightOrigin", kMaxLights, origin);
+  program->SetUniform3fv("lightAxisX", kMaxLights, axisX);
+  program->SetUniform3fv("lightAxisY", kMaxLights, axisY);
+  program->SetUniform3fv("lightAxisZ", kMaxLights, axisZ);
+}

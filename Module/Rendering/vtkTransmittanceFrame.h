@@ -1,0 +1,94 @@
+/**
+ * @class   vtkTransmittanceFrame
+ * @brief   what every pass of vtkTransmittanceVolumeMapper reads during one Render()
+ *
+ * The mapper fills one frame per Render(), after vtkTyndallScene has read the
+ * scene and vtkTransmittanceMediumTextures has uploaded the medium: the GL
+ * context, the medium and its box, the integrator's settings, and the lights
+ * with the frustum of each light's map and the method each light really
+ * uses (a positional light inside the box has no frustum and falls back to
+ * brute force). SetMediumUniforms() sets the uniforms that every pass's
+ * shader shares (vtkTransmittanceCommonFS.glsl).
+ *
+ * Internal to Tyndall::Rendering.
+ */
+
+#ifndef vtkTransmittanceFrame_h
+#define vtkTransmittanceFrame_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkSmartPointer.h"        // For vtkSmartPointer
+#include "vtkTyndallLight.h"        // For vtkTyndallLight
+
+#include <vector> // For std::vector
+
+class vtkOpenGLRenderWindow;
+class vtkOpenGLState;
+class vtkRenderer;
+class vtkShaderProgram;
+class vtkTransmittanceLightFrustum;
+class vtkTransmittanceMediumTextures;
+class vtkTyndallGridMedium;
+class vtkTyndallScene;
+
+class TYNDALLRENDERING_EXPORT vtkTransmittanceFrame
+{
+public:
+  /// One light as the passes use it.
+  struct Light
+  {
+    vtkTyndallLight Source;
+    /// LightScale * Color: the irradiance before attenuation and shadows.
+    double Irradiance[3] = { 0.0, 0.0, 0.0 };
+    /// The method of this light: the mapper's, or BRUTE_FORCE without a frustum.
+    int Method = 0;
+    bool HasFrustum = false;
+    vtkSmartPointer<vtkTransmittanceLightFrustum> Frustum;
+  };
+
+  /// The integrator's settings (the mapper's).
+  struct Settings
+  {
+    int Method = 0;
+    int Coefficients = 8;
+    int MapSize = 256;
+    int LightSampleCount = 128;
+    double AdaptiveThreshold = 0.01;
+    double SampleDistance = 0.0;
+    bool Jitter = true;
+  };
+
+  /**
+   * Fills the frame. `lights` are reused between frames (their frusta).
+   */
+  void Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window, const vtkTyndallScene& scene,
+    const vtkTransmittanceMediumTextures& textures, const Settings& settings);
+
+  /// Sets the shared uniforms (medium, table, light frusta) on `program`.
+  void SetMediumUniforms(vtkShaderProgram* program) const;
+
+  /// Whether some light uses a map method.
+  bool NeedsMaps() const;
+
+  /// The camera-ray step: SampleDistance, or half the smallest spacing.
+  double GetStepLength() const;
+
+  vtkRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkOpenGLState* State = nullptr;
+  const vtkTyndallGridMedium* Medium = nullptr;
+  const vtkTransmittanceMediumTextures* Textures = nullptr;
+  Settings Integrator;
+  /// ceil(Coefficients / 4) (+1 for the adaptive methods) layers per light.
+  int Layers = 0;
+  /// The adaptive methods' bounds layer within a light's layers, else -1.
+  int BoundsLayer = -1;
+  std::vector<Light> Lights;
+  double Corners[24];
+  double Diagonal = 1.0;
+  double MinimumSpacing = 1.0;
+  /// World -> the box as [0, 1]^3, column-major for glUniformMatrix.
+  float WorldToBox[16];
+};
+
+#endif

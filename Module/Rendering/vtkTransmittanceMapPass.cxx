@@ -1,0 +1,314 @@
+#include "vtkTransmittanceMapPass.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkPointData.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
+#include "vtkTransmittanceFrame.h"
+#include "vtkTransmittanceLightFrustum.h"
+#include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceScopedFramebuffer.h"
+#include "vtkTransmittanceScopedTextures.h"
+#include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtk_glew.h"
+
+#include <sstream>
+
+vtkStandardNewMacro(vtkTransmittanceMapPass);
+
+namespace
+{
+// The map-build shader's outputs for the frame's layout: layer k holds
+// coefficients 4k .. 4k+3; the bounds layer (s_min, s_max, T_beyond, 0).
+std::string MapOutputs(int layers, int boundsLayer)
+{
+  std::ostringstream os;
+  for (int k = 0; k < layers; ++k)
+  {
+    os << "  gl_FragData[" << k << "] = ";
+    if (k == boundsLayer)
+    {
+      os << "vec4(bounds, 0.0);\n";
+      continue;
+    }
+    const int first = vtkTransmittanceMapMath::COEFFICIENTS_PER_LAYER * k;
+    os << "vec4(coefficients[" << first << "], coefficients[" << first + 1 << "], coefficients["
+       << first + 2 << "], coefficients[" << first + 3 << "]);\n";
+  }
+  return os.str();
+}
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceMapPass::vtkTransmittanceMapPass() = default;
+vtkTransmittanceMapPass::~vtkTransmittanceMapPass() = default;
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& frame) const
+{
+  const vtkTransmittanceFrame::Settings& s = frame.Integrator;
+  std::vector<double> key = { double(s.Method), double(s.Coefficients), double(s.MapSize),
+    double(s.LightSampleCount), s.AdaptiveThreshold, frame.Medium->GetDensityScale(),
+    double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetTableTime()) };
+  key.insert(key.end(), frame.Corners, frame.Corners + 24);
+  for (const vtkTransmittanceFrame::Light& l : frame.Lights)
+  {
+    const vtkTyndallLight& p = l.Source;
+    key.insert(key.end(),
+      { double(p.Positional), double(l.Method), p.Position[0], p.Position[1], p.Position[2],
+        p.Direction[0], p.Direction[1], p.Direction[2] });
+  }
+  return key;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::Render(const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  if (!frame.NeedsMaps())
+  {
+    return true;
+  }
+  const std::vector<double> key = this->Key(frame);
+  if (key == this->BuiltKey && this->MapTexture)
+  {
+    return true;
+  }
+  this->BuiltKey.clear();
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  if (!this->Allocate(frame, reporter) || !this->Build(frame, reporter))
+  {
+    return false;
+  }
+  glFinish();
+  timer->StopTimer();
+  this->BuiltKey = key;
+  this->LastBuildTime = timer->GetElapsedTime();
+  ++this->BuildCount;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::Allocate(const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  const int size = frame.Integrator.MapSize;
+  const int slices = static_cast<int>(frame.Lights.size()) * frame.Layers;
+  if (this->MapTexture && this->Size == size && this->Slices == slices)
+  {
+    return true;
+  }
+  if (!this->MapTexture)
+  {
+    this->MapTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->MapTexture->ReleaseGraphicsResources(frame.Window);
+  this->MapTexture->SetContext(frame.Window);
+  this->MapTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->MapTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->MapTexture->SetWrapR(vtkTextureObject::ClampToEdge);
+  this->MapTexture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->MapTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!this->MapTexture->Create3DFromRaw(size, size, slices, 4, VTK_FLOAT, nullptr))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not allocate the transmittance maps (" << size
+                                      << " x " << size << " x " << slices << " RGBA float).");
+    this->MapTexture = nullptr;
+    this->Size = this->Slices = 0;
+    return false;
+  }
+  this->Size = size;
+  this->Slices = slices;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::ReadyProgram(const vtkTransmittanceFrame& frame)
+{
+  std::string fs =
+    vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::MAP_BUILD);
+  vtkShaderProgram::Substitute(
+    fs, "//TYNDALL::MapOutputs", MapOutputs(frame.Layers, frame.BoundsLayer));
+  if (!this->Quad || fs != this->QuadSource)
+  {
+    if (this->Quad)
+    {
+      this->Quad->ReleaseGraphicsResources(frame.Window);
+    }
+    this->Quad.reset(new vtkOpenGLQuadHelper(frame.Window,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+    this->QuadSource = fs;
+  }
+  else
+  {
+    frame.Window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  return this->Quad->Program && this->Quad->Program->GetCompiled();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  if (!this->ReadyProgram(frame))
+  {
+    vtkErrorWithObjectMacro(reporter, << "The transmittance-map shader did not compile.");
+    return false;
+  }
+  vtkShaderProgram* program = this->Quad->Program;
+  const vtkTransmittanceFrame::Settings& s = frame.Integrator;
+  frame.SetMediumUniforms(program);
+  program->SetUniformi("method", s.Method);
+  program->SetUniformi("coefficientCount", s.Coefficients);
+  program->SetUniformi("sampleCount", s.LightSampleCount);
+  program->SetUniformf("adaptiveThreshold", static_cast<float>(s.AdaptiveThreshold));
+
+  if (!this->Framebuffer)
+  {
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  }
+  this->Framebuffer->SetContext(frame.Window);
+  vtkOpenGLState* state = frame.State;
+  vtkTransmittanceScopedFramebuffer bound(state, this->Framebuffer);
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST); // the renderer's viewport scissor
+  state->vtkglViewport(0, 0, this->Size, this->Size);
+  const int layers = frame.Layers;
+  for (int l = 0; l < static_cast<int>(frame.Lights.size()); ++l)
+  {
+    if (!vtkTransmittanceMapMath::IsMapMethod(frame.Lights[l].Method))
+    {
+      continue;
+    }
+    for (int k = 0; k < layers; ++k)
+    {
+      this->Framebuffer->AddColorAttachment(k, this->MapTexture, l * layers + k);
+    }
+    this->Framebuffer->ActivateDrawBuffers(layers);
+    const char* status = nullptr;
+    const bool complete =
+      vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_DRAW_FRAMEBUFFER, status);
+    if (complete)
+    {
+      program->SetUniformi("lightIndex", l);
+      this->Quad->Render();
+    }
+    // vtkOpenGLFramebufferObject keeps an attachment of the same texture
+    // even for another slice: detach before the next light's slices.
+    this->Framebuffer->RemoveColorAttachments(layers);
+    if (!complete)
+    {
+      vtkErrorWithObjectMacro(
+        reporter, << "The transmittance-map framebuffer is incomplete: " << status);
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::GetMap(
+  int light, int layers, int boundsLayer, int coefficients, vtkImageData* map)
+{
+  if (!this->MapTexture || !map || layers < 1 || light < 0 || (light + 1) * layers > this->Slices)
+  {
+    return false;
+  }
+  const size_t texels = static_cast<size_t>(this->Size) * this->Size;
+  std::vector<float> all(4 * texels * this->Slices);
+  vtkOpenGLClearErrorMacro();
+  {
+    vtkTransmittanceScopedTextures bound({ this->MapTexture });
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, all.data());
+  }
+  if (glGetError() != GL_NO_ERROR)
+  {
+    return false;
+  }
+  vtkNew<vtkFloatArray> coefficientArray;
+  coefficientArray->SetName("Coefficients");
+  coefficientArray->SetNumberOfComponents(coefficients);
+  coefficientArray->SetNumberOfTuples(static_cast<vtkIdType>(texels));
+  vtkNew<vtkFloatArray> boundsArray;
+  boundsArray->SetName("Bounds");
+  boundsArray->SetNumberOfComponents(3);
+  boundsArray->SetNumberOfTuples(boundsLayer >= 0 ? static_cast<vtkIdType>(texels) : 0);
+  const int perLayer = vtkTransmittanceMapMath::COEFFICIENTS_PER_LAYER;
+  for (size_t t = 0; t < texels; ++t)
+  {
+    for (int j = 0; j < coefficients; ++j)
+    {
+      const size_t slice = static_cast<size_t>(light) * layers + j / perLayer;
+      coefficientArray->SetTypedComponent(
+        static_cast<vtkIdType>(t), j, all[4 * (slice * texels + t) + j % perLayer]);
+    }
+    if (boundsLayer >= 0)
+    {
+      const size_t slice = static_cast<size_t>(light) * layers + boundsLayer;
+      for (int c = 0; c < 3; ++c)
+      {
+        boundsArray->SetTypedComponent(
+          static_cast<vtkIdType>(t), c, all[4 * (slice * texels + t) + c]);
+      }
+    }
+  }
+  map->Initialize();
+  map->SetDimensions(this->Size, this->Size, 1);
+  map->SetSpacing(1.0 / this->Size, 1.0 / this->Size, 1.0);
+  map->SetOrigin(0.5 / this->Size, 0.5 / this->Size, 0.0);
+  map->GetPointData()->AddArray(coefficientArray);
+  if (boundsLayer >= 0)
+  {
+    map->GetPointData()->AddArray(boundsArray);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceMapPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->MapTexture)
+  {
+    this->MapTexture->ReleaseGraphicsResources(window);
+  }
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(window);
+  }
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+  }
+  this->MapTexture = nullptr;
+  this->Framebuffer = nullptr;
+  this->Quad.reset();
+  this->QuadSource.clear();
+  this->BuiltKey.clear();
+  this->Slices = this->Size = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceMapPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Size: " << this->Size << "\n";
+  os << indent << "Slices: " << this->Slices << "\n";
+  os << indent << "BuildCount: " << this->BuildCount << "\n";
+  os << indent << "LastBuildTime: " << this->LastBuildTime << "\n";
+}

@@ -1,0 +1,95 @@
+/**
+ * @class   vtkTransmittanceMapPass
+ * @brief   the transmittance-map pass of vtkTransmittanceVolumeMapper
+ *
+ * Builds every light's transmittance map (vtkTransmittanceMapBuildFS.glsl):
+ * one fragment per texel marches the texel's light ray through the medium
+ * and projects it onto the TFM or ETM basis, in the layout of
+ * vtkTransmittanceMapMath::GetNumberOfMapLayers() (all layers of all lights
+ * are slices of one RGBA float 3-D texture). Maps are rebuilt only when
+ * something they depend on changed: the medium's scalars or table, its
+ * density scale or placement, the lights (position, direction, type,
+ * method), or the integrator's method, coefficient count, map size, light
+ * samples or adaptive threshold. GetBuildCount() counts the builds.
+ *
+ * GetMap() reads a light's map back to the CPU (for tests and inspection).
+ *
+ * Internal to Tyndall::Rendering.
+ */
+
+#ifndef vtkTransmittanceMapPass_h
+#define vtkTransmittanceMapPass_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkImageData;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkTextureObject;
+class vtkTransmittanceFrame;
+class vtkWindow;
+
+class TYNDALLRENDERING_EXPORT vtkTransmittanceMapPass : public vtkObject
+{
+public:
+  static vtkTransmittanceMapPass* New();
+  vtkTypeMacro(vtkTransmittanceMapPass, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Builds the maps when the frame needs them and something changed.
+   * Errors go through `reporter`; false on error.
+   */
+  bool Render(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+
+  /// The maps (null before the first build) and their number of slices.
+  vtkTextureObject* GetTexture() const { return this->MapTexture; }
+  int GetSlices() const { return this->Slices; }
+
+  ///@{
+  /// How many times the maps were built; the last build's seconds (after glFinish).
+  int GetBuildCount() const { return this->BuildCount; }
+  double GetLastBuildTime() const { return this->LastBuildTime; }
+  ///@}
+
+  /**
+   * Copies light `light`'s map, as last built with `layers` layers per light
+   * (`boundsLayer` the adaptive bounds' layer or -1) and `coefficients`
+   * coefficients, into `map` (see vtkTransmittanceVolumeMapper::GetTransmittanceMap()).
+   * The window's context must be current.
+   */
+  bool GetMap(int light, int layers, int boundsLayer, int coefficients, vtkImageData* map);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkTransmittanceMapPass();
+  ~vtkTransmittanceMapPass() override;
+
+private:
+  vtkTransmittanceMapPass(const vtkTransmittanceMapPass&) = delete;
+  void operator=(const vtkTransmittanceMapPass&) = delete;
+
+  std::vector<double> Key(const vtkTransmittanceFrame& frame) const;
+  bool Allocate(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+  bool ReadyProgram(const vtkTransmittanceFrame& frame);
+  bool Build(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+
+  vtkSmartPointer<vtkTextureObject> MapTexture;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::string QuadSource;
+  std::vector<double> BuiltKey;
+  int Slices = 0;
+  int Size = 0;
+  int BuildCount = 0;
+  double LastBuildTime = 0.0;
+};
+
+#endif

@@ -1,0 +1,226 @@
+#include "vtkTransmittanceMediumTextures.h"
+
+#include "vtkDataArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+#include "vtkTyndallGridMedium.h"
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <vector>
+
+vtkStandardNewMacro(vtkTransmittanceMediumTextures);
+
+namespace
+{
+// The cleaned scalars at every `factor`-th sample, as floats, and where
+// `valid` is given, 0 for NaN (which becomes the range's minimum) and 255
+// elsewhere.
+template <typename T>
+void Gather(const vtkTyndallGridMedium& medium, const T* data, int factor, const int dims[3],
+  float* out, unsigned char* valid)
+{
+  const int* full = medium.GetDimensions();
+  const bool floating = std::numeric_limits<T>::has_quiet_NaN;
+  size_t i = 0;
+  for (int z = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      const vtkIdType row =
+        (static_cast<vtkIdType>(z) * factor * full[1] + static_cast<vtkIdType>(y) * factor) *
+        full[0];
+      for (int x = 0; x < dims[0]; ++x, ++i)
+      {
+        const double v = static_cast<double>(data[row + static_cast<vtkIdType>(x) * factor]);
+        const bool missing = std::isnan(v);
+        out[i] = static_cast<float>(
+          missing ? medium.GetFiniteRange()[0] : (floating ? medium.Clean(v) : v));
+        if (valid)
+        {
+          valid[i] = missing ? 0 : 255;
+        }
+      }
+    }
+  }
+}
+
+void SetLinearClamped(vtkTextureObject* texture, vtkOpenGLRenderWindow* window)
+{
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceMediumTextures::vtkTransmittanceMediumTextures() = default;
+vtkTransmittanceMediumTextures::~vtkTransmittanceMediumTextures() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::Update(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  const bool sameMedium = this->UploadedMedium == &medium && this->VolumeTexture &&
+    this->VolumeTexture->GetContext() == window;
+  if (!sameMedium || medium.GetScalarsTime() > this->ScalarsTime)
+  {
+    this->ScalarsTime = 0;
+    if (!this->UploadScalars(window, medium, reporter))
+    {
+      return false;
+    }
+    this->ScalarsTime = medium.GetScalarsTime();
+  }
+  if (!sameMedium || medium.GetTableTime() > this->TableTime)
+  {
+    this->TableTime = 0;
+    if (!this->UploadTable(window, medium, reporter))
+    {
+      return false;
+    }
+    this->TableTime = medium.GetTableTime();
+  }
+  this->UploadedMedium = &medium;
+
+  // The box as [0, 1]^3 -> texture coordinates: field index p = low + q (high
+  // - low), texture sample p / factor, texel centre (p / factor + 0.5) / n.
+  for (int a = 0; a < 3; ++a)
+  {
+    const double low = medium.GetBoxLow()[a], high = medium.GetBoxHigh()[a];
+    const double n = this->Dimensions[a];
+    this->TextureScale[a] = static_cast<float>((high - low) / (this->Factor * n));
+    this->TextureShift[a] = static_cast<float>((low / this->Factor + 0.5) / n);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadScalars(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  const int* full = medium.GetDimensions();
+  const int maxSize = vtkTextureObject::GetMaximumTextureSize3D(window);
+  int factor = 1;
+  for (int a = 0; a < 3 && maxSize > 0; ++a)
+  {
+    factor = std::max(factor, (full[a] + maxSize - 1) / maxSize);
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Dimensions[a] = (full[a] - 1) / factor + 1;
+  }
+  this->Factor = factor;
+  if (factor > 1)
+  {
+    vtkWarningWithObjectMacro(reporter, << "The volume (" << full[0] << " x " << full[1] << " x "
+                                        << full[2] << ") exceeds the GPU's 3-D texture size "
+                                        << maxSize << "; rendering every " << factor
+                                        << "th sample.");
+  }
+  const size_t count =
+    static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  const bool missing = medium.GetNumberOfNaNScalars() > 0;
+  std::vector<float> values;
+  std::vector<unsigned char> valid;
+  try
+  {
+    values.resize(count);
+    valid.resize(missing ? count : 0);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot allocate " << count << " floats for the volume.");
+    return false;
+  }
+  vtkDataArray* scalars = medium.GetScalars();
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(Gather(medium, static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), factor,
+      this->Dimensions, values.data(), missing ? valid.data() : nullptr));
+  }
+  if (!this->VolumeTexture)
+  {
+    this->VolumeTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  SetLinearClamped(this->VolumeTexture, window);
+  if (!this->VolumeTexture->Create3DFromRaw(
+        this->Dimensions[0], this->Dimensions[1], this->Dimensions[2], 1, VTK_FLOAT, values.data()))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the volume's 3-D texture.");
+    return false;
+  }
+  if (!missing)
+  {
+    if (this->ValidityTexture)
+    {
+      this->ValidityTexture->ReleaseGraphicsResources(window);
+    }
+    this->ValidityTexture = nullptr;
+    return true;
+  }
+  if (!this->ValidityTexture)
+  {
+    this->ValidityTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  SetLinearClamped(this->ValidityTexture, window);
+  if (!this->ValidityTexture->Create3DFromRaw(this->Dimensions[0], this->Dimensions[1],
+        this->Dimensions[2], 1, VTK_UNSIGNED_CHAR, valid.data()))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the volume's validity texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadTable(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  std::vector<float> rgba;
+  medium.GetTable().GetTexture(rgba);
+  if (!this->TransferTexture)
+  {
+    this->TransferTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  SetLinearClamped(this->TransferTexture, window);
+  if (!this->TransferTexture->Create2DFromRaw(
+        vtkTyndallTransferTable::Size, vtkTyndallTransferTable::Rows, 4, VTK_FLOAT, rgba.data()))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the transfer-function texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (vtkTextureObject* texture :
+    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get() })
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(window);
+    }
+  }
+  this->VolumeTexture = nullptr;
+  this->ValidityTexture = nullptr;
+  this->TransferTexture = nullptr;
+  this->UploadedMedium = nullptr;
+  this->ScalarsTime = this->TableTime = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceMediumTextures::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Dimensions: " << this->Dimensions[0] << " x " << this->Dimensions[1] << " x "
+     << this->Dimensions[2] << "\n";
+  os << indent << "Downsampling: " << this->Factor << "\n";
+}

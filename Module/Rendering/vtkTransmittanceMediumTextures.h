@@ -1,0 +1,84 @@
+/**
+ * @class   vtkTransmittanceMediumTextures
+ * @brief   the upload pass of vtkTransmittanceVolumeMapper: a medium's scalars and table on the GPU
+ *
+ * Uploads a vtkTyndallGridMedium's cleaned scalars (+-Inf clamped:
+ * vtkTyndallGridMedium::Clean()) as a float 3-D texture with linear
+ * filtering and clamp-to-edge, and its transfer table
+ * (vtkTyndallTransferTable::GetTexture()) as a 2-D texture, each only when
+ * it changed. When the scalars hold NaN (missing data), NaN voxels get the
+ * range's minimum in the scalar texture and 0 in a validity texture (1
+ * elsewhere, 8-bit, linear): a sample whose filtered validity is below 1
+ * touches a NaN voxel and is empty, as on the CPU (vtkTyndallGridMedium). A volume larger than the
+ * GPU's 3-D texture limit is downsampled by the smallest integer factor that fits, with a warning.
+ * GetTextureScale() and GetTextureShift() map the medium's box as [0, 1]^3
+ * to texture coordinates (point scalars: texel centres at the box's corners;
+ * cell scalars: the texels fill the box).
+ *
+ * Internal to Tyndall::Rendering.
+ */
+
+#ifndef vtkTransmittanceMediumTextures_h
+#define vtkTransmittanceMediumTextures_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkTyndallGridMedium;
+class vtkWindow;
+
+class TYNDALLRENDERING_EXPORT vtkTransmittanceMediumTextures : public vtkObject
+{
+public:
+  static vtkTransmittanceMediumTextures* New();
+  vtkTypeMacro(vtkTransmittanceMediumTextures, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Uploads what changed since the last call. Errors go through `reporter`;
+   * false when the medium cannot be rendered.
+   */
+  bool Update(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+
+  vtkTextureObject* GetVolumeTexture() const { return this->VolumeTexture; }
+  /// Null when the scalars hold no NaN.
+  vtkTextureObject* GetValidityTexture() const { return this->ValidityTexture; }
+  vtkTextureObject* GetTransferTexture() const { return this->TransferTexture; }
+  const float* GetTextureScale() const { return this->TextureScale; }
+  const float* GetTextureShift() const { return this->TextureShift; }
+
+  /// The downsampling factor of the uploaded scalars (1: full resolution).
+  int GetDownsampling() const { return this->Factor; }
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkTransmittanceMediumTextures();
+  ~vtkTransmittanceMediumTextures() override;
+
+private:
+  vtkTransmittanceMediumTextures(const vtkTransmittanceMediumTextures&) = delete;
+  void operator=(const vtkTransmittanceMediumTextures&) = delete;
+
+  bool UploadScalars(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadTable(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+
+  vtkSmartPointer<vtkTextureObject> VolumeTexture;
+  vtkSmartPointer<vtkTextureObject> ValidityTexture;
+  vtkSmartPointer<vtkTextureObject> TransferTexture;
+  vtkMTimeType ScalarsTime = 0;
+  vtkMTimeType TableTime = 0;
+  const vtkTyndallGridMedium* UploadedMedium = nullptr;
+  int Dimensions[3] = { 0, 0, 0 };
+  int Factor = 1;
+  float TextureScale[3] = { 1.0f, 1.0f, 1.0f };
+  float TextureShift[3] = { 0.0f, 0.0f, 0.0f };
+};
+
+#endif

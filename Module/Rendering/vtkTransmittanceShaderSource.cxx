@@ -1,0 +1,63 @@
+#include "vtkTransmittanceShaderSource.h"
+
+#include "vtkMath.h"
+#include "vtkShaderProgram.h"
+#include "vtkTransmittanceMapMath.h"
+#include "vtkTyndallScene.h"
+#include "vtkTyndallTransferTable.h"
+
+// The GLSL sources, embedded at build time from glsl/*.glsl.
+#include "vtkTransmittanceCommonFS.h"
+#include "vtkTransmittanceMapBuildFS.h"
+#include "vtkTransmittanceOcclusionFS.h"
+#include "vtkTransmittanceRayCastFS.h"
+
+#include <iomanip>
+#include <sstream>
+
+//------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetConstants()
+{
+  using M = vtkTransmittanceMapMath;
+  std::ostringstream os;
+  os << std::setprecision(15) << std::showpoint;
+  auto define = [&os](const char* name, auto value)
+  { os << "#define TYNDALL_" << name << " " << value << "\n"; };
+  define("MAX_LIGHTS", vtkTyndallScene::MaximumNumberOfLights);
+  define("MAX_COEFFICIENTS", static_cast<int>(M::MAXIMUM_NUMBER_OF_COEFFICIENTS));
+  define("COEFFICIENTS_PER_LAYER", static_cast<int>(M::COEFFICIENTS_PER_LAYER));
+  define("NONE", static_cast<int>(M::NONE));
+  define("BRUTE_FORCE", static_cast<int>(M::BRUTE_FORCE));
+  define("TFM", static_cast<int>(M::TFM));
+  define("ADAPTIVE_TFM", static_cast<int>(M::ADAPTIVE_TFM));
+  define("ETM", static_cast<int>(M::ETM));
+  define("ADAPTIVE_ETM", static_cast<int>(M::ADAPTIVE_ETM));
+  // The texture coordinate of a table row's centre.
+  using Table = vtkTyndallTransferTable;
+  define("TABLE_ALBEDO_ROW", (Table::AlbedoRow + 0.5) / Table::Rows);
+  define("TABLE_EMISSION_ROW", (Table::EmissionRow + 0.5) / Table::Rows);
+  define("NO_OCCLUDER", static_cast<double>(NoOccluder));
+  define("VIEW_TERMINATION", static_cast<double>(ViewTermination));
+  define("PI", vtkMath::Pi());
+  return os.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass)
+{
+  std::string source = vtkTransmittanceCommonFS;
+  switch (pass)
+  {
+    case MAP_BUILD:
+      source += vtkTransmittanceMapBuildFS;
+      break;
+    case OCCLUSION:
+      source += vtkTransmittanceOcclusionFS;
+      break;
+    default:
+      source += vtkTransmittanceRayCastFS;
+      break;
+  }
+  vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants());
+  return source;
+}

@@ -1,0 +1,55 @@
+/**
+ * @class   vtkTransmittanceShaderSource
+ * @brief   the GLSL of vtkTransmittanceVolumeMapper's passes, with their constants injected
+ *
+ * The shaders live in glsl/*.glsl, embedded at build time. Every pass's
+ * fragment shader is vtkTransmittanceCommonFS.glsl followed by the pass's
+ * own file; the line `//TYNDALL::Constants` of the common file becomes the
+ * #defines of the constants the shaders share with C++, each taken from its
+ * one C++ definition:
+ *
+ * - TYNDALL_MAX_LIGHTS: vtkTyndallScene::MaximumNumberOfLights;
+ * - TYNDALL_MAX_COEFFICIENTS, TYNDALL_COEFFICIENTS_PER_LAYER:
+ *   vtkTransmittanceMapMath::MapLimits;
+ * - TYNDALL_NONE .. TYNDALL_ADAPTIVE_ETM:
+ *   vtkTransmittanceMapMath::TransmittanceMethods;
+ * - TYNDALL_TABLE_ALBEDO_ROW, TYNDALL_TABLE_EMISSION_ROW: the texture rows of
+ *   vtkTyndallTransferTable::GetTexture();
+ * - TYNDALL_NO_OCCLUDER: the occlusion texture's "no opaque surface";
+ * - TYNDALL_VIEW_TERMINATION: camera rays stop below this transmittance;
+ * - TYNDALL_PI.
+ *
+ * Internal to Tyndall::Rendering.
+ */
+
+#ifndef vtkTransmittanceShaderSource_h
+#define vtkTransmittanceShaderSource_h
+
+#include "TyndallRenderingModule.h" // For export macro
+
+#include <string> // For std::string
+
+class TYNDALLRENDERING_EXPORT vtkTransmittanceShaderSource
+{
+public:
+  enum Passes
+  {
+    MAP_BUILD,
+    OCCLUSION,
+    RAY_CAST
+  };
+
+  /// The fragment shader of a pass, constants injected.
+  static std::string GetFragmentShader(int pass);
+
+  /// The #define lines that replace `//TYNDALL::Constants`.
+  static std::string GetConstants();
+
+  /// What an occlusion texel holds where the light's ray meets no opaque surface.
+  static constexpr float NoOccluder = 1.0e30f;
+
+  /// Camera rays stop when their transmittance falls below this.
+  static constexpr float ViewTermination = 1.0e-5f;
+};
+
+#endif

@@ -1,0 +1,392 @@
+#include "vtkTyndallGridMedium.h"
+
+#include "vtkAbstractMapper.h"
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkAlgorithm.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+// Finite range and counts of NaN and infinite values.
+template <typename T>
+void ScanScalars(const T* data, vtkIdType n, double range[2], vtkIdType& nan, vtkIdType& inf)
+{
+  range[0] = std::numeric_limits<double>::infinity();
+  range[1] = -std::numeric_limits<double>::infinity();
+  nan = inf = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = static_cast<double>(data[i]);
+    if (std::isnan(v))
+    {
+      ++nan;
+    }
+    else if (std::isinf(v))
+    {
+      ++inf;
+    }
+    else
+    {
+      range[0] = std::min(range[0], v);
+      range[1] = std::max(range[1], v);
+    }
+  }
+}
+
+bool AllFinite(const double* v, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
+{
+  this->Valid = this->UpdateScalars(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
+    this->UpdateTable(volume, reporter);
+  return this->Valid;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
+{
+  vtkAbstractVolumeMapper* mapper = volume ? volume->GetMapper() : nullptr;
+  if (!mapper)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The volume has no mapper.");
+    return false;
+  }
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    int port = 0;
+    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm(0, 0, port))
+    {
+      producer->Update(port);
+    }
+  }
+  vtkDataSet* input = mapper->GetDataSetInput();
+  vtkImageData* image = vtkImageData::SafeDownCast(input);
+  if (!image)
+  {
+    vtkErrorWithObjectMacro(reporter, << (input ? "The input is a " : "There is no input")
+                                      << (input ? input->GetClassName() : "")
+                                      << "; a vtkImageData is needed.");
+    return false;
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(image, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(image)),
+    static_cast<double>(image->GetMTime()),
+    static_cast<double>(reinterpret_cast<uintptr_t>(scalars)),
+    scalars ? static_cast<double>(scalars->GetMTime()) : -1.0, double(cellFlag) };
+  if (key == this->ScalarsKey)
+  {
+    // Unchanged: the same result, and the same error again without a rescan.
+    if (!this->Scalars)
+    {
+      vtkErrorWithObjectMacro(reporter, << this->ScalarsError);
+    }
+    return this->Scalars != nullptr;
+  }
+  this->ScalarsKey = key;
+  this->Scalars = nullptr;
+  this->ScalarsTime.Modified();
+  std::ostringstream error;
+  const bool ok = this->ReadScalars(image, scalars, cellFlag, error, reporter);
+  this->ScalarsError = error.str();
+  if (!ok)
+  {
+    vtkErrorWithObjectMacro(reporter, << this->ScalarsError);
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalars, int cellFlag,
+  std::ostream& error, vtkObject* reporter)
+{
+  int extent[6];
+  image->GetExtent(extent);
+  int points[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    points[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+  }
+  if (points[0] < 1 || points[1] < 1 || points[2] < 1)
+  {
+    error << "The input image is empty.";
+    return false;
+  }
+  if (points[0] < 2 || points[1] < 2 || points[2] < 2)
+  {
+    error << "The input image is flat (" << points[0] << " x " << points[1] << " x " << points[2]
+          << " points): a volume needs at least 2 points along each "
+             "axis.";
+    return false;
+  }
+  if (!scalars)
+  {
+    error << "The input has no scalars to render (check the mapper's "
+             "scalar mode and array selection).";
+    return false;
+  }
+  if (cellFlag != 0 && cellFlag != 1)
+  {
+    error << "The selected scalars are field data, which cannot be rendered.";
+    return false;
+  }
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    error << "The scalars '" << (scalars->GetName() ? scalars->GetName() : "") << "' have "
+          << scalars->GetNumberOfComponents() << " components; one component is rendered.";
+    return false;
+  }
+  this->CellScalars = cellFlag == 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Dimensions[a] = this->CellScalars ? points[a] - 1 : points[a];
+    this->Extent[2 * a] = extent[2 * a];
+    this->Extent[2 * a + 1] = extent[2 * a + 1];
+  }
+  const vtkIdType expected =
+    static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  if (scalars->GetNumberOfTuples() != expected)
+  {
+    error << "The scalars have " << scalars->GetNumberOfTuples() << " values; the image needs "
+          << expected << ".";
+    return false;
+  }
+
+  // Raw access: the array itself, or a copy in doubles (other layouts, types).
+  vtkSmartPointer<vtkDataArray> values = scalars;
+  bool supported = false;
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(supported = true);
+  }
+  if (!supported || !scalars->HasStandardMemoryLayout())
+  {
+    vtkNew<vtkDoubleArray> copy;
+    copy->DeepCopy(scalars);
+    values = copy;
+  }
+  switch (values->GetDataType())
+  {
+    vtkTemplateMacro(ScanScalars(static_cast<const VTK_TT*>(values->GetVoidPointer(0)), expected,
+      this->FiniteRange, this->NaNCount, this->InfCount));
+  }
+  if (!(this->FiniteRange[0] <= this->FiniteRange[1]))
+  {
+    error << "The scalars have no finite value.";
+    return false;
+  }
+  if (this->NaNCount > 0 || this->InfCount > 0)
+  {
+    vtkWarningWithObjectMacro(
+      reporter, << this->NaNCount << " NaN scalars (missing data: "
+                << "samples interpolated from them are empty medium) and " << this->InfCount
+                << " infinite ones (given the finite range's ends, [" << this->FiniteRange[0]
+                << ", " << this->FiniteRange[1] << "]).");
+  }
+  this->Scalars = values;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter)
+{
+  auto* image = vtkImageData::SafeDownCast(volume->GetMapper()->GetDataSetInput());
+  const double* spacing = image->GetSpacing();
+  const double* origin = image->GetOrigin();
+  const double* direction = image->GetDirectionMatrix()->GetData();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (spacing[a] == 0.0 || !std::isfinite(spacing[a]) || !std::isfinite(origin[a]))
+    {
+      vtkErrorWithObjectMacro(reporter, << "The input image's spacing must be non-zero and "
+                                           "finite, and its origin finite.");
+      return false;
+    }
+  }
+  const double directionDeterminant = vtkMatrix3x3::Determinant(direction);
+  if (!AllFinite(direction, 9) || directionDeterminant == 0.0 ||
+    !std::isfinite(directionDeterminant))
+  {
+    vtkErrorWithObjectMacro(reporter, << "The input image's direction matrix must be invertible.");
+    return false;
+  }
+  vtkMatrix4x4* matrix = volume->GetMatrix();
+  const double(*m)[4] = matrix->Element;
+  const double linear[9] = { m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1],
+    m[2][2] };
+  const double determinant = vtkMatrix3x3::Determinant(linear);
+  if (!AllFinite(*matrix->Element, 16) || m[3][0] != 0.0 || m[3][1] != 0.0 || m[3][2] != 0.0 ||
+    m[3][3] != 1.0 || determinant == 0.0 || !std::isfinite(determinant))
+  {
+    vtkErrorWithObjectMacro(reporter, << "The volume's matrix must be affine and invertible.");
+    return false;
+  }
+
+  // Field index -> data: origin + D diag(spacing) (extent start + index [+ 0.5]).
+  const double half = this->CellScalars ? 0.5 : 0.0;
+  vtkNew<vtkMatrix4x4> indexToData;
+  for (int r = 0; r < 3; ++r)
+  {
+    double translation = origin[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      const double a = direction[3 * r + c] * spacing[c];
+      indexToData->SetElement(r, c, a);
+      translation += a * (this->Extent[2 * c] + half);
+    }
+    indexToData->SetElement(r, 3, translation);
+  }
+  vtkNew<vtkMatrix4x4> indexToWorld;
+  vtkMatrix4x4::Multiply4x4(matrix, indexToData, indexToWorld);
+  std::copy(*indexToWorld->Element, *indexToWorld->Element + 16, this->IndexToWorld);
+  vtkMatrix4x4::Invert(this->IndexToWorld, this->WorldToIndex);
+  for (int a = 0; a < 3; ++a)
+  {
+    this->BoxLow[a] = -half;
+    this->BoxHigh[a] = this->Dimensions[a] - 1 + half;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  vtkNew<vtkParticipatingMediumProperty> defaults;
+  vtkParticipatingMediumProperty* source = medium ? medium : defaults.Get();
+  this->ScatteringModel = source->GetScatteringModel();
+  this->DensityScale = source->GetDensityScale();
+  this->ScatteringAnisotropy = source->GetScatteringAnisotropy();
+  this->LightScale = source->GetLightScale();
+  this->AmbientIntensity = source->GetAmbientIntensity();
+  this->EmissionScale = source->GetEmissionScale();
+  vtkColorTransferFunction* emission = medium ? medium->GetEmissionColor() : nullptr;
+  this->HasEmission = this->ScatteringModel == vtkParticipatingMediumProperty::SINGLE_SCATTERING &&
+    emission && this->EmissionScale > 0.0;
+
+  // What the table depends on (not the property's other settings: changing
+  // the anisotropy or the ambient must not rebuild the GPU's maps).
+  const bool gray = property->GetColorChannels(0) == 1;
+  vtkObject* functions[3] = { property->GetScalarOpacity(0),
+    gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+         : static_cast<vtkObject*>(property->GetRGBTransferFunction(0)),
+    emission };
+  std::vector<double> key = { double(gray), property->GetScalarOpacityUnitDistance(0),
+    this->FiniteRange[0], this->FiniteRange[1] };
+  for (vtkObject* function : functions)
+  {
+    key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(function)));
+    key.push_back(function ? static_cast<double>(function->GetMTime()) : -1.0);
+  }
+  if (key == this->TableKey)
+  {
+    return true;
+  }
+  this->TableKey.clear();
+  this->TableTime.Modified();
+  std::string error;
+  if (!this->Table.Build(property, emission, this->FiniteRange[0], this->FiniteRange[1], error))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
+    return false;
+  }
+  this->TableKey = key;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallGridMedium::GetWorldCorners(double corners[24]) const
+{
+  for (int c = 0; c < 8; ++c)
+  {
+    const double p[4] = { (c & 1) ? this->BoxHigh[0] : this->BoxLow[0],
+      (c & 2) ? this->BoxHigh[1] : this->BoxLow[1], (c & 4) ? this->BoxHigh[2] : this->BoxLow[2],
+      1.0 };
+    double w[4];
+    vtkMatrix4x4::MultiplyPoint(this->IndexToWorld, p, w);
+    std::copy(w, w + 3, corners + 3 * c);
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::GetMinimumWorldSpacing() const
+{
+  double spacing = VTK_DOUBLE_MAX;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double column[3] = { this->IndexToWorld[c], this->IndexToWorld[4 + c],
+      this->IndexToWorld[8 + c] };
+    spacing = std::min(spacing, vtkMath::Norm(column));
+  }
+  return spacing;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::GetWorldDiagonal() const
+{
+  double corners[24];
+  this->GetWorldCorners(corners);
+  return std::sqrt(vtkMath::Distance2BetweenPoints(corners, corners + 21));
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::Extinction(const double world[3]) const
+{
+  if (!this->Valid)
+  {
+    return 0.0;
+  }
+  const double in[4] = { world[0], world[1], world[2], 1.0 };
+  double p[4];
+  vtkMatrix4x4::MultiplyPoint(this->WorldToIndex, in, p);
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(p[a] >= this->BoxLow[a] && p[a] <= this->BoxHigh[a]))
+    {
+      return 0.0;
+    }
+  }
+  double s = 0.0;
+  switch (this->Scalars->GetDataType())
+  {
+    vtkTemplateMacro(s = Sampler<VTK_TT>(*this).Scalar(p));
+  }
+  if (std::isnan(s))
+  {
+    return 0.0; // missing data
+  }
+  int k;
+  double f;
+  this->Table.Locate(s, k, f);
+  return this->DensityScale * this->Table.ExtinctionAt(k, f);
+}

@@ -1,0 +1,132 @@
+#include "vtkTyndallScene.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObject.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+// Where vtkRenderer puts `light` before it renders (see the class description).
+void PlaceLight(
+  vtkLight* light, vtkCamera* camera, bool follow, double position[3], double focalPoint[3])
+{
+  if (follow && light->LightTypeIsHeadlight())
+  {
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focalPoint);
+  }
+  else if (follow && light->LightTypeIsCameraLight())
+  {
+    vtkMatrix4x4* cameraLight = camera->GetCameraLightTransformMatrix();
+    double in[4] = { 0.0, 0.0, 0.0, 1.0 }, out[4];
+    light->GetPosition(in);
+    cameraLight->MultiplyPoint(in, out);
+    std::copy(out, out + 3, position);
+    light->GetFocalPoint(in);
+    cameraLight->MultiplyPoint(in, out);
+    std::copy(out, out + 3, focalPoint);
+  }
+  else
+  {
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focalPoint);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallScene::Update(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+{
+  if (!renderer || !volume)
+  {
+    vtkErrorWithObjectMacro(reporter, << (renderer ? "The volume" : "The renderer") << " is null.");
+    return false;
+  }
+  if (!this->Medium.Update(volume, reporter))
+  {
+    return false;
+  }
+  this->UpdateLights(renderer, reporter);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallScene::UpdateLights(vtkRenderer* renderer, vtkObject* reporter)
+{
+  this->Lights.clear();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const bool follow = renderer->GetLightFollowCamera() != 0;
+  int ignored = 0, degenerate = 0;
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || !(light->GetIntensity() > 0.0))
+    {
+      continue;
+    }
+    if (static_cast<int>(this->Lights.size()) == MaximumNumberOfLights)
+    {
+      ++ignored;
+      continue;
+    }
+    vtkTyndallLight l;
+    double focalPoint[3];
+    PlaceLight(light, camera, follow, l.Position, focalPoint);
+    for (int c = 0; c < 3; ++c)
+    {
+      l.Direction[c] = focalPoint[c] - l.Position[c];
+      l.Color[c] = light->GetIntensity() * light->GetDiffuseColor()[c];
+    }
+    l.Positional = light->GetPositional() != 0;
+    l.Spot = l.Positional && light->GetConeAngle() < 90.0;
+    const bool directed = !l.Positional || l.Spot;
+    if (!(vtkMath::Normalize(l.Direction) > 0.0))
+    {
+      if (directed)
+      {
+        ++degenerate;
+        continue;
+      }
+      l.Direction[0] = l.Direction[1] = 0.0; // a point light: unused
+      l.Direction[2] = -1.0;
+    }
+    if (l.Positional)
+    {
+      light->GetAttenuationValues(l.Attenuation);
+    }
+    if (l.Spot)
+    {
+      l.ConeCosine = std::cos(vtkMath::RadiansFromDegrees(light->GetConeAngle()));
+      l.Exponent = light->GetExponent();
+    }
+    this->Lights.push_back(l);
+  }
+
+  std::ostringstream warning;
+  if (degenerate)
+  {
+    warning << degenerate
+            << " directional or spot light(s) whose position and focal point coincide have no "
+               "direction and are ignored. ";
+  }
+  if (ignored)
+  {
+    warning << ignored << " light(s) beyond the first " << MaximumNumberOfLights << " are ignored.";
+  }
+  if (!warning.str().empty() && warning.str() != this->LastLightWarning)
+  {
+    vtkWarningWithObjectMacro(reporter, << warning.str());
+  }
+  this->LastLightWarning = warning.str();
+}

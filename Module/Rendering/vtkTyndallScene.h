@@ -1,0 +1,66 @@
+/**
+ * @class   vtkTyndallScene
+ * @brief   the one reader of a scene for Tyndall's renderers: a medium and its lights
+ *
+ * vtkTyndallScene turns (renderer, volume) into what both integrators
+ * consume: the volume's vtkTyndallGridMedium (validated scalars, placement,
+ * tabulated transfer functions, parameters) and the renderer's lights as
+ * vtkTyndallLight. The GPU mapper (vtkTransmittanceVolumeMapper) and the CPU
+ * reference (vtkSingleScatteringReference) each own one and call Update()
+ * before they render, so they read the scene by the same rules:
+ *
+ * - only switched-on lights with a positive intensity are used, at most
+ *   GetMaximumNumberOfLights() (8); further lights are ignored with a
+ *   warning;
+ * - lights are placed as vtkRenderer places them before rendering: with
+ *   LightFollowCamera on (VTK's default), headlights at the camera looking
+ *   at its focal point and camera lights through the camera's
+ *   GetCameraLightTransformMatrix(); scene lights (and every light when
+ *   LightFollowCamera is off) through their own transform
+ *   (GetTransformedPosition/FocalPoint);
+ * - a directional or spot light whose position and focal point coincide has
+ *   no direction: it is ignored with a warning;
+ * - the medium is read by vtkTyndallGridMedium's rules.
+ *
+ * A warning is given once per change, not once per frame. Internal to
+ * Tyndall::Rendering; not wrapped.
+ */
+
+#ifndef vtkTyndallScene_h
+#define vtkTyndallScene_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkTyndallGridMedium.h"   // For the medium
+#include "vtkTyndallLight.h"        // For the lights
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkObject;
+class vtkRenderer;
+class vtkVolume;
+
+class TYNDALLRENDERING_EXPORT vtkTyndallScene
+{
+public:
+  /// The most lights a scene uses (the shaders' arrays).
+  static constexpr int MaximumNumberOfLights = 8;
+
+  /**
+   * Reads `volume` as seen in `renderer`. Errors and warnings go through
+   * `reporter`; false on error (nothing can be rendered).
+   */
+  bool Update(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+
+  const vtkTyndallGridMedium& GetMedium() const { return this->Medium; }
+  const std::vector<vtkTyndallLight>& GetLights() const { return this->Lights; }
+
+private:
+  void UpdateLights(vtkRenderer* renderer, vtkObject* reporter);
+
+  vtkTyndallGridMedium Medium;
+  std::vector<vtkTyndallLight> Lights;
+  std::string LastLightWarning;
+};
+
+#endif

@@ -1,0 +1,73 @@
+#include "vtkTyndallTransferTable.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkTransmittanceMapMath.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+//------------------------------------------------------------------------------
+bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission,
+  double lo, double hi, std::string& error)
+{
+  const double unitDistance = property->GetScalarOpacityUnitDistance(0);
+  if (!(unitDistance > 0.0) || !std::isfinite(unitDistance))
+  {
+    std::ostringstream os;
+    os << "the volume property's scalar opacity unit distance must be positive and finite; it is "
+       << unitDistance << ".";
+    error = os.str();
+    return false;
+  }
+  this->Minimum = lo;
+  this->Maximum = hi;
+  this->Scale = this->Maximum > this->Minimum ? (Size - 1) / (this->Maximum - this->Minimum) : 0.0;
+
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const bool gray = property->GetColorChannels(0) == 1;
+  vtkPiecewiseFunction* grayFunction = gray ? property->GetGrayTransferFunction(0) : nullptr;
+  vtkColorTransferFunction* rgbFunction = gray ? nullptr : property->GetRGBTransferFunction(0);
+  this->Extinction.assign(Size, 0.0);
+  this->Albedo.assign(3 * Size, 0.0);
+  this->Emission.assign(3 * Size, 0.0);
+  for (int i = 0; i < Size; ++i)
+  {
+    const double s = std::min(this->Scale > 0.0 ? lo + i / this->Scale : lo, hi);
+    this->Extinction[i] =
+      vtkTransmittanceMapMath::ExtinctionFromOpacity(opacity->GetValue(s), unitDistance, 1.0);
+    double* albedo = this->Albedo.data() + 3 * i;
+    if (gray)
+    {
+      albedo[0] = albedo[1] = albedo[2] = grayFunction->GetValue(s);
+    }
+    else
+    {
+      rgbFunction->GetColor(s, albedo);
+    }
+    if (emission)
+    {
+      emission->GetColor(s, this->Emission.data() + 3 * i);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallTransferTable::GetTexture(std::vector<float>& rgba) const
+{
+  rgba.assign(4 * Rows * static_cast<size_t>(Size), 0.0f);
+  float* albedo = rgba.data() + 4 * static_cast<size_t>(AlbedoRow) * Size;
+  float* emission = rgba.data() + 4 * static_cast<size_t>(EmissionRow) * Size;
+  for (int i = 0; i < Size; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      albedo[4 * i + c] = static_cast<float>(this->Albedo[3 * i + c]);
+      emission[4 * i + c] = static_cast<float>(this->Emission[3 * i + c]);
+    }
+    albedo[4 * i + 3] = static_cast<float>(this->Extinction[i]);
+  }
+}
