@@ -3,7 +3,8 @@
 # baseline image (compared directly, no render window needed).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
-  TestSingleScatteringReference.cxx)
+  TestSingleScatteringReference.cxx
+  TestTransmittanceLightFrustum.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestSingleScatteringReferenceImage.cxx)
 # vtkTransmittanceVolumeMapper (needs a display).
@@ -14,7 +15,9 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx
-  TestTransmittanceMapperManyLights.cxx)
+  TestTransmittanceMapperManyLights.cxx
+  TestTransmittanceMapperMaps.cxx
+  TestTransmittanceMapperSceneRules.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperEmissionAbsorption.cxx
   TestTransmittanceMapperScenes.cxx
