@@ -2,12 +2,14 @@
 //
 // A GLFW window (OpenGL 3.2+ core profile, forward compatible) with GLEW,
 // and VTK embedded through vtkGenericOpenGLRenderWindow on the window's own
-// context. It shows the built-in cosine-noise cloud (or a volume file) lit by
-// a low sun, with mouse navigation, keys for the mapper's settings, and an
-// on-screen line with the method, the coefficient count, the frame time and
-// the number of transmittance-map builds. Scripts (--script, --events) drive
-// the same code paths as the mouse and keys, one command per frame, for
-// tests. See Documentation/viewer.md.
+// context. The scene is tyndall-render's: the options are vtkTyndallOptions'
+// one table (with the keys that change them) and vtkTyndallSceneBuilder
+// builds the scene, so a volume looks the same in both programs. On top:
+// mouse navigation, the keys, and an on-screen line with the method, the
+// coefficient count, the frame time and the number of transmittance-map
+// builds. Scripts (--script, --events) drive the same code paths as the
+// mouse and keys, one command per frame, for tests. See
+// Documentation/viewer.md.
 
 // GLEW before GLFW (and before any VTK header, which include vtk_glew.h, the
 // system GLEW on Debian): GLFW then includes no GL header of its own.
@@ -17,11 +19,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCellData.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
-#include "vtkCosineNoiseSource.h"
-#include "vtkDataArray.h"
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -29,23 +27,17 @@
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkParticipatingMediumProperty.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkTransform.h"
 #include "vtkTransmittanceVolumeMapper.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkVolume.h"
+#include "vtkTyndallErrorObserver.h"
+#include "vtkTyndallOptions.h"
+#include "vtkTyndallSceneBuilder.h"
+#include "vtkVolumeFileReader.h"
 #include "vtksys/SystemTools.hxx"
-
-#ifdef TYNDALL_VIEWER_HAVE_LOADER
-#include "tyndallLoadVolume.h"
-#else
-#include "vtkXMLImageDataReader.h"
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -64,60 +56,31 @@ namespace
 {
 const char* const Program = "tyndall-viewer";
 
-void Usage(std::ostream& os)
+std::string Description()
 {
-  os << "Usage: tyndall-viewer [options] [VOLUME]\n"
-        "Interactive viewer of vtkTransmittanceVolumeMapper: single scattering with\n"
-        "transmittance-map shadows. Without VOLUME it shows the built-in cosine-noise\n"
-        "cloud lit by a low sun. Needs an X display (use xvfb-run without one).\n\n"
-        "Options:\n"
-        "  -i, --input FILE      volume to show (same as VOLUME)\n"
-#ifdef TYNDALL_VIEWER_HAVE_LOADER
-        "  -g, --grid NAME       grid of a .vdb file (default: the first)\n"
-#else
-        "                        (.vti only in this build)\n"
-#endif
-        "  -r, --resolution N    voxels per axis of the default cloud, 8..512 (128)\n"
-        "  -s, --size W H        window size in pixels, 16..8192 (default: 960 720)\n"
-        "      --script FILE     run the commands in FILE, one per frame\n"
-        "      --events TEXT     run the commands in TEXT (separated by ';'), one per frame\n"
-        "  -v, --verbose         print a line per frame also without a script\n"
-        "  -h, --help            show this help\n\n"
-        "Mouse: left-drag orbit, middle-drag or shift+left-drag pan, wheel or\n"
-        "right-drag zoom, ctrl+left-drag or L+left-drag move the sun.\n"
-        "Keys: 1..6 method (None, BruteForce, TFM, AdaptiveTFM, ETM, AdaptiveETM),\n"
-        "+/- coefficients, a/z anisotropy, d/c density scale, j jitter, h on-screen\n"
-        "text, r reset camera, s screenshot, q or Esc quit.\n"
-        "Script commands: orbit AZ EL, pan DX DY, zoom F, light AZ EL,\n"
-        "drag BUTTON[+shift|+ctrl|+l] DX DY, key K, frames N, resize W H,\n"
-        "hud on|off, screenshot PATH, quit.\n";
-#ifdef TYNDALL_VIEWER_HAVE_LOADER
-  os << "\nVolumes it reads:\n" << tyndallLoadVolumeFormats();
-#endif
+  std::string text =
+    "Usage: tyndall-viewer [options] [VOLUME]\n"
+    "Interactive viewer of vtkTransmittanceVolumeMapper: single scattering with\n"
+    "transmittance-map shadows, the scene of tyndall-render (the same options,\n"
+    "see Documentation/cli.md). Without VOLUME it shows the built-in cosine-noise\n"
+    "cloud lit by a low sun. Needs an X display (use xvfb-run without one).\n\n"
+    "Mouse: left-drag orbit, middle-drag or shift+left-drag pan, wheel or\n"
+    "right-drag zoom, ctrl+left-drag or L+left-drag move the key light.\n"
+    "Script commands (--script, --events): orbit AZ EL, pan DX DY, zoom F,\n"
+    "light AZ EL, drag BUTTON[+shift|+ctrl|+l] DX DY, key K, frames N,\n"
+    "resize W H, hud on|off, screenshot PATH, quit.\n\n"
+    "Volumes it reads:\n";
+  return text + vtkVolumeFileReader::GetFormatsDescription();
 }
 
 bool ParseInt(const std::string& text, int lo, int hi, int& value)
 {
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end || v < lo || v > hi)
-  {
-    return false;
-  }
-  value = static_cast<int>(v);
-  return true;
+  return vtkTyndallOptions::ParseInteger(text, lo, hi, value);
 }
 
 bool ParseDouble(const std::string& text, double& value)
 {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end || !std::isfinite(v))
-  {
-    return false;
-  }
-  value = v;
-  return true;
+  return vtkTyndallOptions::ParseNumber(text, value);
 }
 
 //------------------------------------------------------------------------------
@@ -394,47 +357,6 @@ bool ParseScript(const std::string& text, const std::string& origin, bool semico
 }
 
 //------------------------------------------------------------------------------
-// Input.
-vtkSmartPointer<vtkImageData> LoadInput(
-  const std::string& path, const std::string& grid, std::string& error)
-{
-#ifdef TYNDALL_VIEWER_HAVE_LOADER
-  return tyndallLoadVolume(path, grid, error);
-#else
-  (void)grid;
-  const std::string ext =
-    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
-  if (ext != ".vti")
-  {
-    error = path +
-      ": this build of tyndall-viewer reads only .vti files (the examples' volume "
-      "loader was not available when it was configured)";
-    return nullptr;
-  }
-  if (!vtksys::SystemTools::FileExists(path, true))
-  {
-    error = path + ": no such file";
-    return nullptr;
-  }
-  vtkNew<vtkXMLImageDataReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
-  {
-    error = path + ": not a VTK XML image data file";
-    return nullptr;
-  }
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  if (reader->GetErrorCode() != 0 || !image || image->GetNumberOfPoints() == 0)
-  {
-    error = path + ": cannot read the image data";
-    return nullptr;
-  }
-  return image;
-#endif
-}
-
-//------------------------------------------------------------------------------
 // The viewer.
 class Viewer
 {
@@ -444,13 +366,9 @@ public:
   Viewer(const Viewer&) = delete;
   Viewer& operator=(const Viewer&) = delete;
 
-  // Options.
-  std::string InputPath;
-  std::string GridName;
-  int Resolution = 128;
-  int Size[2] = { 960, 720 };
+  // Options (the table's; the script is parsed from them).
+  vtkNew<vtkTyndallOptions> Options;
   std::vector<Command> Script;
-  bool Verbose = false;
 
   int Run();
 
@@ -486,15 +404,11 @@ private:
   GLFWwindow* Window = nullptr;
   bool GlfwInitialized = false;
 
-  vtkSmartPointer<vtkAlgorithm> Source;
-  vtkSmartPointer<vtkImageData> Image;
-  bool DefaultCloud = true;
-  double Bounds[6] = { -1, 1, -1, 1, -1, 1 };
-  vtkNew<vtkTransmittanceVolumeMapper> Mapper;
-  vtkSmartPointer<vtkParticipatingMediumProperty> Medium;
-  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkTyndallSceneBuilder> Builder;
+  vtkTransmittanceVolumeMapper* Mapper = nullptr;   // the builder's
+  vtkParticipatingMediumProperty* Medium = nullptr; // the builder's
+  vtkLight* Sun = nullptr;                          // the builder's key light
   vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkLight> Sun;
   vtkNew<vtkTextActor> Text;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> RenderWindow;
   double InitialCamera[10] = {};
@@ -538,93 +452,26 @@ Viewer::~Viewer()
 
 bool Viewer::LoadScene()
 {
-  if (this->InputPath.empty())
+  // The scene of tyndall-render, from the same options.
+  vtkNew<vtkTyndallErrorObserver> errors;
+  errors->Watch(this->Builder);
+  this->Builder->SetOptions(this->Options);
+  if (!this->Builder->Build(this->Renderer))
   {
-    vtkNew<vtkCosineNoiseSource> cloud;
-    const int n = this->Resolution - 1;
-    cloud->SetWholeExtent(0, n, 0, n, 0, n);
-    cloud->SetSpacing(2.0 / n, 2.0 / n, 2.0 / n);
-    cloud->Update();
-    this->Source = cloud;
-    this->Image = cloud->GetOutput();
-    this->DefaultCloud = true;
-    this->Mapper->SetInputConnection(cloud->GetOutputPort());
+    for (const std::string& message : errors->GetMessages())
+    {
+      std::cerr << Program << ": " << message << "\n";
+    }
+    return false;
   }
-  else
-  {
-    std::string error;
-    this->Image = LoadInput(this->InputPath, this->GridName, error);
-    if (!this->Image)
-    {
-      // The loader's messages start with the path.
-      std::cerr << Program << ": " << (error.empty() ? this->InputPath + ": cannot load it" : error)
-                << "\n";
-      return false;
-    }
-    vtkDataArray* scalars = this->Image->GetPointData()->GetScalars();
-    if (!scalars)
-    {
-      scalars = this->Image->GetCellData()->GetScalars();
-    }
-    if (!scalars)
-    {
-      std::cerr << Program << ": '" << this->InputPath << "' has no scalars to render\n";
-      return false;
-    }
-    this->DefaultCloud = false;
-    this->Mapper->SetInputData(this->Image);
-  }
-  this->Image->GetBounds(this->Bounds);
-
-  vtkNew<vtkPiecewiseFunction> opacity;
-  vtkNew<vtkColorTransferFunction> albedo;
-  vtkNew<vtkParticipatingMediumProperty> property;
-  if (this->DefaultCloud)
-  {
-    // tyndall-render's white cloud: 0.5 opacity per 0.05 units at density 8.
-    opacity->AddPoint(0.0, 0.0);
-    opacity->AddPoint(8.0, 0.5);
-    albedo->AddRGBPoint(0.0, 0.95, 0.95, 0.95);
-    property->SetScalarOpacityUnitDistance(0.05);
-  }
-  else
-  {
-    // Any other volume: a linear opacity ramp over the upper 95 % of the
-    // scalar range, a white medium about 40 unit distances across; d/c
-    // scale the density from there.
-    vtkDataArray* scalars = this->Image->GetPointData()->GetScalars();
-    if (!scalars)
-    {
-      scalars = this->Image->GetCellData()->GetScalars();
-    }
-    double range[2];
-    scalars->GetRange(range, 0);
-    if (!(range[1] > range[0]))
-    {
-      range[1] = range[0] + 1.0;
-    }
-    opacity->AddPoint(range[0], 0.0);
-    opacity->AddPoint(range[0] + 0.05 * (range[1] - range[0]), 0.0);
-    opacity->AddPoint(range[1], 0.5);
-    albedo->AddRGBPoint(range[0], 0.95, 0.95, 0.95);
-    const double low[3] = { this->Bounds[0], this->Bounds[2], this->Bounds[4] };
-    const double high[3] = { this->Bounds[1], this->Bounds[3], this->Bounds[5] };
-    const double diagonal = std::sqrt(vtkMath::Distance2BetweenPoints(low, high));
-    property->SetScalarOpacityUnitDistance(diagonal > 0.0 ? diagonal / 40.0 : 1.0);
-  }
-  property->SetScalarOpacity(opacity);
-  property->SetColor(albedo);
-  property->SetInterpolationTypeToLinear();
-
-  property->SetScatteringModelToSingleScattering();
-  property->SetScatteringAnisotropy(0.3);
-  property->SetAmbientIntensity(0.45);
-  this->Medium = property;
-  this->Mapper->SetTransmittanceMethodToAdaptiveETM();
-  this->Mapper->SetNumberOfCoefficients(8);
-  this->Mapper->SetTransmittanceMapSize(256);
-  this->Volume->SetMapper(this->Mapper);
-  this->Volume->SetProperty(property);
+  this->Mapper = this->Builder->GetMapper();
+  this->Medium = this->Builder->GetProperty();
+  this->Sun = this->Builder->GetKeyLight();
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->GetPosition(&this->InitialCamera[0]);
+  camera->GetFocalPoint(&this->InitialCamera[3]);
+  camera->GetViewUp(&this->InitialCamera[6]);
+  this->InitialCamera[9] = camera->GetViewAngle();
   return true;
 }
 
@@ -681,10 +528,12 @@ bool Viewer::OpenWindow()
   glfwWindowHint(GLFW_DEPTH_BITS, 24);
   glfwWindowHint(GLFW_STENCIL_BITS, 8);
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  const std::string input = this->Options->GetInput();
   const std::string title = std::string("Tyndall viewer - ") +
-    (this->InputPath.empty() ? std::string("cosine-noise cloud")
-                             : vtksys::SystemTools::GetFilenameName(this->InputPath));
-  this->Window = glfwCreateWindow(this->Size[0], this->Size[1], title.c_str(), nullptr, nullptr);
+    (input.empty() ? std::string("cosine-noise cloud")
+                   : vtksys::SystemTools::GetFilenameName(input));
+  this->Window = glfwCreateWindow(static_cast<int>(this->Options->GetNumber("size", 0)),
+    static_cast<int>(this->Options->GetNumber("size", 1)), title.c_str(), nullptr, nullptr);
   if (!this->Window)
   {
     std::cerr << Program << ": cannot create a window with an OpenGL 3.2 core profile context: "
@@ -739,38 +588,7 @@ bool Viewer::OpenWindow()
 
 void Viewer::SetUpVTK()
 {
-  this->Renderer->AddVolume(this->Volume);
-  this->Renderer->GradientBackgroundOn();
-  this->Renderer->SetBackground(0.55, 0.68, 0.82);
-  this->Renderer->SetBackground2(0.16, 0.32, 0.58);
-  this->Renderer->AutomaticLightCreationOff();
-
-  // A low sun from the front right (tyndall-render's), aimed at the centre.
-  const double center[3] = { 0.5 * (this->Bounds[0] + this->Bounds[1]),
-    0.5 * (this->Bounds[2] + this->Bounds[3]), 0.5 * (this->Bounds[4] + this->Bounds[5]) };
-  this->Sun->SetLightTypeToSceneLight();
-  this->Sun->SetPositional(false);
-  this->Sun->SetPosition(center[0] + 1.0, center[1] + 0.3, center[2] + 0.5);
-  this->Sun->SetFocalPoint(center);
-  this->Sun->SetColor(1.0, 0.9, 0.75);
-  this->Sun->SetIntensity(1.2);
-  this->Renderer->AddLight(this->Sun);
-
-  vtkCamera* camera = this->Renderer->GetActiveCamera();
-  camera->SetFocalPoint(center);
-  camera->SetPosition(center[0], center[1] - 0.6, center[2] + 4.2);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(30.0);
-  if (!this->DefaultCloud)
-  {
-    this->Renderer->ResetCamera(this->Bounds); // keeps the direction, fits the volume
-  }
-  this->Renderer->ResetCameraClippingRange();
-  camera->GetPosition(&this->InitialCamera[0]);
-  camera->GetFocalPoint(&this->InitialCamera[3]);
-  camera->GetViewUp(&this->InitialCamera[6]);
-  this->InitialCamera[9] = camera->GetViewAngle();
-
+  // The scene (volume, lights, camera, background) is the builder's.
   vtkTextProperty* tp = this->Text->GetTextProperty();
   tp->SetFontFamilyToCourier();
   tp->SetColor(1.0, 1.0, 1.0);
@@ -839,7 +657,8 @@ void Viewer::UpdateText()
   this->Text->SetInput(os.str().c_str());
   this->Text->SetVisibility(this->ShowText ? 1 : 0);
   // About 65 characters across the window, 9 to 16 points.
-  const int width = this->RenderWindow ? this->RenderWindow->GetSize()[0] : this->Size[0];
+  const int width = this->RenderWindow ? this->RenderWindow->GetSize()[0]
+                                       : static_cast<int>(this->Options->GetNumber("size", 0));
   this->Text->GetTextProperty()->SetFontSize(std::max(9, std::min(16, width / 42)));
 }
 
@@ -1062,64 +881,37 @@ void Viewer::Drag(DragMode mode, double dx, double dy)
   }
 }
 
+// A key: the options table says what it changes (vtkTyndallOptions::ApplyKey).
 void Viewer::Key(int key)
 {
-  vtkTransmittanceVolumeMapper* m = this->Mapper;
-  switch (key)
+  const char* bound = this->Options->ApplyKey(key);
+  if (!bound)
   {
-    case '1':
-    case '2':
-    case '3':
-    case '4':
-    case '5':
-    case '6':
-      m->SetTransmittanceMethod(key - '1');
-      break;
-    case '+':
-    case '=':
-      m->SetNumberOfCoefficients(m->GetNumberOfCoefficients() + 1);
-      break;
-    case '-':
-    case '_':
-      m->SetNumberOfCoefficients(m->GetNumberOfCoefficients() - 1);
-      break;
-    case 'a':
-      this->Medium->SetScatteringAnisotropy(
-        std::min(0.9, std::round(10.0 * this->Medium->GetScatteringAnisotropy() + 1.0) / 10.0));
-      break;
-    case 'z':
-      this->Medium->SetScatteringAnisotropy(
-        std::max(-0.9, std::round(10.0 * this->Medium->GetScatteringAnisotropy() - 1.0) / 10.0));
-      break;
-    case 'd':
-      this->Medium->SetDensityScale(this->Medium->GetDensityScale() * 1.25);
-      break;
-    case 'c':
-      this->Medium->SetDensityScale(this->Medium->GetDensityScale() / 1.25);
-      break;
-    case 'j':
-      m->SetJitter(!m->GetJitter());
-      break;
-    case 'h':
-      this->ShowText = !this->ShowText;
-      break;
-    case 'r':
-      this->ResetCamera();
-      break;
-    case 's':
-    {
-      std::ostringstream name;
-      name << "tyndall-viewer-" << std::setw(3) << std::setfill('0') << ++this->ScreenshotCounter
-           << ".png";
-      this->PendingScreenshot = name.str();
-      break;
-    }
-    case 'q':
-    case 27:
-      this->Quit = true;
-      break;
-    default:
-      return;
+    return;
+  }
+  const std::string name = bound;
+  if (name == "hud")
+  {
+    this->ShowText = !this->ShowText;
+  }
+  else if (name == "reset")
+  {
+    this->ResetCamera();
+  }
+  else if (name == "screenshot")
+  {
+    std::ostringstream file;
+    file << "tyndall-viewer-" << std::setw(3) << std::setfill('0') << ++this->ScreenshotCounter
+         << ".png";
+    this->PendingScreenshot = file.str();
+  }
+  else if (name == "quit")
+  {
+    this->Quit = true;
+  }
+  else
+  {
+    this->Builder->ApplyOptions();
   }
   this->NeedsRender = true;
 }
@@ -1306,7 +1098,7 @@ int Viewer::Run()
     {
       this->NeedsRender = false;
       this->RenderFrame();
-      if (scripted || this->Verbose)
+      if (scripted || this->Options->GetFlag("verbose"))
       {
         this->LogFrame();
       }
@@ -1341,64 +1133,23 @@ int Viewer::Run()
 int main(int argc, char* argv[])
 {
   Viewer viewer;
-  std::string scriptFile;
-  std::vector<std::string> events;
-  for (int i = 1; i < argc; ++i)
+  vtkTyndallOptions* options = viewer.Options;
+  options->SetProgram(vtkTyndallOptions::VIEWER);
+  if (!options->Parse(argc, argv))
   {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help")
-    {
-      Usage(std::cout);
-      return EXIT_SUCCESS;
-    }
-    else if ((arg == "-i" || arg == "--input") && i + 1 < argc)
-    {
-      viewer.InputPath = argv[++i];
-    }
-    else if ((arg == "-g" || arg == "--grid") && i + 1 < argc)
-    {
-      viewer.GridName = argv[++i];
-    }
-    else if ((arg == "-r" || arg == "--resolution") && i + 1 < argc)
-    {
-      if (!ParseInt(argv[++i], 8, 512, viewer.Resolution))
-      {
-        std::cerr << Program << ": --resolution needs an integer in 8..512\n";
-        return 2;
-      }
-    }
-    else if ((arg == "-s" || arg == "--size") && i + 2 < argc)
-    {
-      if (!ParseInt(argv[i + 1], 16, 8192, viewer.Size[0]) ||
-        !ParseInt(argv[i + 2], 16, 8192, viewer.Size[1]))
-      {
-        std::cerr << Program << ": --size needs two integers in 16..8192\n";
-        return 2;
-      }
-      i += 2;
-    }
-    else if (arg == "--script" && i + 1 < argc)
-    {
-      scriptFile = argv[++i];
-    }
-    else if (arg == "--events" && i + 1 < argc)
-    {
-      events.emplace_back(argv[++i]);
-    }
-    else if (arg == "-v" || arg == "--verbose")
-    {
-      viewer.Verbose = true;
-    }
-    else if (!arg.empty() && arg[0] != '-' && viewer.InputPath.empty())
-    {
-      viewer.InputPath = arg;
-    }
-    else
-    {
-      std::cerr << Program << ": unknown or incomplete option '" << arg << "'\n";
-      Usage(std::cerr);
-      return 2;
-    }
+    std::cerr << Program << ": " << options->GetErrorMessage() << "\n";
+    return 2;
+  }
+  if (options->GetHelpRequested())
+  {
+    std::cout << options->GetHelp(Description().c_str());
+    return EXIT_SUCCESS;
+  }
+  const std::string scriptFile = options->GetText("script");
+  std::vector<std::string> events;
+  if (options->IsSet("events"))
+  {
+    events.emplace_back(options->GetText("events"));
   }
 
   std::string error;

@@ -11,7 +11,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -25,7 +25,7 @@ vtkStandardNewMacro(vtkSingleScatteringReference);
 class vtkSingleScatteringReference::vtkInternals
 {
 public:
-  vtkTyndallScene Scene;
+  vtkTyndallSceneReader Scene;
 };
 
 namespace
@@ -461,7 +461,7 @@ void SetUpMedium(const vtkTyndallGridMedium& medium, Scene& scene)
 }
 
 // The scene's lights with the medium's light scale (single scattering only).
-void SetUpLights(const vtkTyndallScene& tyndall, Scene& scene)
+void SetUpLights(const vtkTyndallSceneReader& tyndall, Scene& scene)
 {
   const vtkTyndallGridMedium& medium = tyndall.GetMedium();
   if (!scene.SingleScattering)
@@ -508,7 +508,7 @@ bool vtkSingleScatteringReference::RenderInternal(
                   << kMaxImageSize << "] on some axis.");
     return false;
   }
-  vtkTyndallScene& tyndall = this->Internals->Scene;
+  vtkTyndallSceneReader& tyndall = this->Internals->Scene;
   if (!tyndall.Update(renderer, volume, this))
   {
     return false;

@@ -10,7 +10,7 @@
  * offline reference images.
  *
  * It reads the scene exactly as vtkTransmittanceVolumeMapper does (one
- * internal reader, vtkTyndallScene): the medium from the volume (its mapper's
+ * internal reader, vtkTyndallSceneReader): the medium from the volume (its mapper's
  * input and scalar selection, its matrix, its vtkParticipatingMediumProperty
  * or plain vtkVolumeProperty) and the renderer's lights; so a scene set up
  * for the mapper renders here with no extra settings. This class holds only

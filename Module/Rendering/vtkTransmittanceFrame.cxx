@@ -6,18 +6,18 @@
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMediumTextures.h"
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 
 #include <algorithm>
 
 namespace
 {
-constexpr int kMaxLights = vtkTyndallScene::MaximumNumberOfLights;
+constexpr int kMaxLights = vtkTyndallSceneReader::MaximumNumberOfLights;
 }
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window,
-  const vtkTyndallScene& scene, const vtkTransmittanceMediumTextures& textures,
+  const vtkTyndallSceneReader& scene, const vtkTransmittanceMediumTextures& textures,
   const Settings& settings)
 {
   using M = vtkTransmittanceMapMath;

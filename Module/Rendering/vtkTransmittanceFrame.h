@@ -2,7 +2,7 @@
  * @class   vtkTransmittanceFrame
  * @brief   what every pass of vtkTransmittanceVolumeMapper reads during one Render()
  *
- * The mapper fills one frame per Render(), after vtkTyndallScene has read the
+ * The mapper fills one frame per Render(), after vtkTyndallSceneReader has read the
  * scene and vtkTransmittanceMediumTextures has uploaded the medium: the GL
  * context, the medium and its box, the integrator's settings, and the lights
  * with the frustum of each light's map and the method each light really
@@ -29,7 +29,7 @@ class vtkShaderProgram;
 class vtkTransmittanceLightFrustum;
 class vtkTransmittanceMediumTextures;
 class vtkTyndallGridMedium;
-class vtkTyndallScene;
+class vtkTyndallSceneReader;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceFrame
 {
@@ -61,8 +61,9 @@ public:
   /**
    * Fills the frame. `lights` are reused between frames (their frusta).
    */
-  void Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window, const vtkTyndallScene& scene,
-    const vtkTransmittanceMediumTextures& textures, const Settings& settings);
+  void Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window,
+    const vtkTyndallSceneReader& scene, const vtkTransmittanceMediumTextures& textures,
+    const Settings& settings);
 
   /// Sets the shared uniforms (medium, table, light frusta) on `program`.
   void SetMediumUniforms(vtkShaderProgram* program) const;

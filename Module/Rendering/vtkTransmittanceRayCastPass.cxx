@@ -17,7 +17,7 @@
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallGridMedium.h"
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -28,7 +28,7 @@ vtkStandardNewMacro(vtkTransmittanceRayCastPass);
 
 namespace
 {
-constexpr int kMaxLights = vtkTyndallScene::MaximumNumberOfLights;
+constexpr int kMaxLights = vtkTyndallSceneReader::MaximumNumberOfLights;
 // llvmpipe's total loop-iteration limit per shader invocation.
 constexpr double kLoopLimit = 65535.0;
 // Brute-force light marches take this many samples per loop iteration.

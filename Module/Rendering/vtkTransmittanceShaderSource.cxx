@@ -3,7 +3,7 @@
 #include "vtkMath.h"
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceMapMath.h"
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 #include "vtkTyndallTransferTable.h"
 
 // The GLSL sources, embedded at build time from glsl/*.glsl.
@@ -23,7 +23,7 @@ std::string vtkTransmittanceShaderSource::GetConstants()
   os << std::setprecision(15) << std::showpoint;
   auto define = [&os](const char* name, auto value)
   { os << "#define TYNDALL_" << name << " " << value << "\n"; };
-  define("MAX_LIGHTS", vtkTyndallScene::MaximumNumberOfLights);
+  define("MAX_LIGHTS", vtkTyndallSceneReader::MaximumNumberOfLights);
   define("MAX_COEFFICIENTS", static_cast<int>(M::MAXIMUM_NUMBER_OF_COEFFICIENTS));
   define("COEFFICIENTS_PER_LAYER", static_cast<int>(M::COEFFICIENTS_PER_LAYER));
   define("NONE", static_cast<int>(M::NONE));

@@ -8,7 +8,7 @@
  * #defines of the constants the shaders share with C++, each taken from its
  * one C++ definition:
  *
- * - TYNDALL_MAX_LIGHTS: vtkTyndallScene::MaximumNumberOfLights;
+ * - TYNDALL_MAX_LIGHTS: vtkTyndallSceneReader::MaximumNumberOfLights;
  * - TYNDALL_MAX_COEFFICIENTS, TYNDALL_COEFFICIENTS_PER_LAYER:
  *   vtkTransmittanceMapMath::MapLimits;
  * - TYNDALL_NONE .. TYNDALL_ADAPTIVE_ETM:

@@ -15,7 +15,7 @@
 #include "vtkTransmittanceOcclusionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
 #include "vtkTransmittanceScopedTextures.h"
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 
 vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 
@@ -23,7 +23,7 @@ vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 class vtkTransmittanceVolumeMapper::vtkInternals
 {
 public:
-  vtkTyndallScene Scene;
+  vtkTyndallSceneReader Scene;
   vtkTransmittanceFrame Frame;
   vtkNew<vtkTransmittanceMediumTextures> Textures;
   vtkNew<vtkTransmittanceOcclusionPass> Occlusion;
@@ -51,7 +51,7 @@ const char* vtkTransmittanceVolumeMapper::GetTransmittanceMethodAsString()
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetMaximumNumberOfLights()
 {
-  return vtkTyndallScene::MaximumNumberOfLights;
+  return vtkTyndallSceneReader::MaximumNumberOfLights;
 }
 
 //------------------------------------------------------------------------------

@@ -53,7 +53,7 @@
  * frustum) are not blocked by geometry.
  *
  * Render() is an orchestrator of named passes, each its own class
- * (Documentation/architecture.md): the scene reader (vtkTyndallScene), the
+ * (Documentation/architecture.md): the scene reader (vtkTyndallSceneReader), the
  * medium upload (vtkTransmittanceMediumTextures), the light-space occlusion
  * (vtkTransmittanceOcclusionPass), the maps (vtkTransmittanceMapPass), the
  * depth capture (vtkTransmittanceDepthPass) and the ray cast

@@ -3,7 +3,7 @@
  * @brief   a voxel medium: validated scalars, their placement and the tabulated transfer functions
  *
  * vtkTyndallGridMedium is what both of Tyndall's renderers consume of a
- * vtkVolume drawn by a Tyndall mapper: vtkTyndallScene builds it, the GPU
+ * vtkVolume drawn by a Tyndall mapper: vtkTyndallSceneReader builds it, the GPU
  * mapper uploads it (scalars as a 3-D texture, the table as a 2-D texture)
  * and the CPU reference samples it with GetSampler(). Every rule that
  * decides what is rendered is applied here, once (the policies are listed in

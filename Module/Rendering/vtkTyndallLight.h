@@ -2,8 +2,8 @@
  * @class   vtkTyndallLight
  * @brief   one light of a Tyndall scene, in the convention both renderers use
  *
- * vtkTyndallScene turns each usable vtkLight of a renderer into one of these
- * (see vtkTyndallScene for which lights are used and how they are placed).
+ * vtkTyndallSceneReader turns each usable vtkLight of a renderer into one of these
+ * (see vtkTyndallSceneReader for which lights are used and how they are placed).
  * Internal to Tyndall::Rendering; not wrapped.
  *
  * The irradiance a medium receives before attenuation and shadowing is

@@ -29,7 +29,6 @@
 // (<key>-scene.json: camera, light, transfer functions, sample distance,
 // image sizes, Tyndall's figures). Documentation/scripts/
 // paraview_volumetric_shadows.py reads it.
-#include "tyndallLoadVolume.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
@@ -49,7 +48,10 @@
 #include "vtkTransferFunctionPresets.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallDisplay.h"
+#include "vtkTyndallErrorObserver.h"
 #include "vtkVolume.h"
+#include "vtkVolumeFileReader.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtksys/SystemTools.hxx"
@@ -114,6 +116,9 @@ struct Scene
   vtkSmartPointer<vtkVolume> Volume;
 };
 
+// The X connection every window uses, opened patiently (vtkTyndallDisplay).
+vtkTyndallDisplay* TheDisplay = nullptr;
+
 double MinimumSpacing(vtkImageData* data)
 {
   double spacing[3];
@@ -160,6 +165,7 @@ Scene MakeScene(const Medium& medium, const Options& options)
     tyndall_test::SetTestCamera(scene.Renderer);
   }
   scene.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  TheDisplay->Attach(scene.Window);
   scene.Window->SetMultiSamples(0);
   scene.Window->SetOffScreenRendering(1);
   scene.Window->AddRenderer(scene.Renderer);
@@ -464,13 +470,17 @@ Figures RunMedium(const Medium& medium, const Options& o)
 // The data medium of one --volume; false (with a message) on failure.
 bool MakeDataMedium(const Options::Volume& volume, Medium& medium)
 {
-  std::string error;
-  vtkSmartPointer<vtkImageData> image = tyndallLoadVolume(volume.Path, "", error);
-  if (!image)
+  vtkNew<vtkVolumeFileReader> reader;
+  vtkNew<vtkTyndallErrorObserver> errors;
+  errors->Watch(reader);
+  reader->SetFileName(volume.Path.c_str());
+  reader->Update();
+  if (errors->HasErrors())
   {
-    std::cerr << "BenchTransmittanceMapper: " << error << "\n";
+    std::cerr << "BenchTransmittanceMapper: " << errors->GetMessages().front() << "\n";
     return false;
   }
+  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
   if (volume.Shift != 0.0)
   {
     vtkNew<vtkImageShiftScale> shift;
@@ -483,17 +493,12 @@ bool MakeDataMedium(const Options::Volume& volume, Medium& medium)
   medium.Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   medium.Property->SetInterpolationTypeToLinear();
   medium.Property->SetAmbientIntensity(kAmbient);
-  if (!vtkTransferFunctionPresets::Apply(
-        volume.Preset.c_str(), medium.Property, image->GetScalarRange()))
+  // As tyndall-render: over the data's range, opacities per mean voxel spacing.
+  if (!vtkTransferFunctionPresets::ApplyToImage(volume.Preset.c_str(), medium.Property, image))
   {
     std::cerr << "BenchTransmittanceMapper: cannot apply the preset '" << volume.Preset << "'\n";
     return false;
   }
-  double spacing[3];
-  image->GetSpacing(spacing);
-  // As tyndall-render: preset opacities are per mean voxel spacing.
-  medium.Property->SetScalarOpacityUnitDistance(
-    (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3.0);
   int dims[3];
   image->GetDimensions(dims);
   const std::string file = vtksys::SystemTools::GetFilenameName(volume.Path);
@@ -516,6 +521,13 @@ int main(int argc, char* argv[])
   {
     return 2;
   }
+  vtkNew<vtkTyndallDisplay> display;
+  if (!display->Open())
+  {
+    std::cerr << "BenchTransmittanceMapper: " << display->GetErrorMessage() << "\n";
+    return EXIT_FAILURE;
+  }
+  TheDisplay = display;
   std::cout << "# vtkTransmittanceVolumeMapper benchmark\n\n"
             << "image " << o.Size << "^2, volume " << o.Resolution << "^3, " << o.Coefficients
             << " coefficients, maps " << o.MapSize << "^2, brute force " << o.LightSamples

@@ -7,7 +7,7 @@ vtk_add_test_cxx(TyndallIOCxxTests tests
   TestOpenVDBReaderStreaming.cxx
   TestOpenVDBWriterRoundTrip.cxx
   TestOpenVDBWriterSamples.cxx
-  TestTransferFunctionPresets.cxx)
+  TestVolumeFileReader.cxx)
 # Rendering tests (need a display): baselines in Testing/Data/Baseline.
 vtk_add_test_cxx(TyndallIOCxxTests tests
   TestOpenVDBSmokeRender.cxx)
@@ -24,30 +24,8 @@ foreach (_tyndall_io_test IN LISTS tests)
   set_tests_properties("Tyndall::IOCxx-${_tyndall_io_test}" PROPERTIES TIMEOUT 300)
 endforeach ()
 
-# The tomography examples on the shared sample volumes (they render, so they
-# need a display; they skip with 125 when ../shared/data is absent). Each
-# renders into Testing/Temporary and fails when the picture shows nothing.
-set(_tyndall_tomography_samples
-  "HeadMR|volumes/HeadMRVolume.mhd"
-  "HeadCTNrrd|volumes/headsq/quarter.nhdr"
-  "IronProtein|volumes/ironProt.vtk"
-  "Neghip|volumes/neghip.slc"
-  "Hydrogen|volumes/hydrogen.vti"
-  "SmokeVDB|vdb/smoke.vdb")
-if (TARGET tyndall-tomography-viewer)
-  foreach (_sample IN LISTS _tyndall_tomography_samples)
-    string(REPLACE "|" ";" _sample "${_sample}")
-    list(GET _sample 0 _name)
-    list(GET _sample 1 _file)
-    add_test(NAME TyndallIO-TomographyViewer-${_name}
-      COMMAND tyndall-tomography-viewer
-        --output "${CMAKE_BINARY_DIR}/Testing/Temporary/TomographyViewer-${_name}.png"
-        --size 300 300 --check --skip-missing
-        "${TYNDALL_SHARED_DATA}/${_file}")
-    set_tests_properties(TyndallIO-TomographyViewer-${_name} PROPERTIES
-      LABELS "Tyndall;IO" SKIP_RETURN_CODE 125 TIMEOUT 300)
-  endforeach ()
-endif ()
+# The Python example, a thin front-end over the programs' kit, on a real
+# MR head (skips with 125 when ../shared/data is absent).
 if (TYNDALL_WRAP_PYTHON)
   add_test(NAME TyndallIO-TomographyPython-HeadMR
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/render_tomography.py"

@@ -4,6 +4,8 @@
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestSingleScatteringReference.cxx
+  TestTransferFunctionFileReader.cxx
+  TestTransferFunctionPresets.cxx
   TestTransmittanceLightFrustum.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestSingleScatteringReferenceImage.cxx)

@@ -2,15 +2,26 @@
 // preset's documented anchor values (CT in Hounsfield units, the others
 // relative to the scalar range, hence scale invariant); errors leave the
 // property unchanged; functions already on the property are replaced, not
-// modified.
+// modified. The single guessing rule (GuessPreset) on volumes that fool a
+// guess that looks only at the type and the minimum: an MR with a negative
+// minimum, a padded MR, a floating-point MR, a CT, a density; and
+// ApplyToImage.
 #include "vtkColorTransferFunction.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkShortArray.h"
+#include "vtkStringArray.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkTransferFunctionPresets.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkVolumeProperty.h"
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -42,6 +53,96 @@ double Brightness(vtkVolumeProperty* p, double v)
   double rgb[3];
   p->GetRGBTransferFunction()->GetColor(v, rgb);
   return rgb[0] + rgb[1] + rgb[2];
+}
+
+// A 20^3 image whose i-th value is value(i), of the array type T, with the
+// field-data hints of vtkVolumeFileReader when given.
+template <typename T>
+vtkSmartPointer<vtkImageData> MakeVolume(const std::function<double(int)>& value,
+  const char* format = nullptr, const char* modality = nullptr)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(20, 20, 20);
+  image->SetSpacing(0.5, 1.0, 1.5);
+  vtkNew<T> values;
+  values->SetNumberOfTuples(8000);
+  for (int i = 0; i < 8000; ++i)
+  {
+    values->SetTuple1(i, value(i));
+  }
+  image->GetPointData()->SetScalars(values);
+  for (auto hint :
+    { std::make_pair("TyndallFormat", format), std::make_pair("TyndallModality", modality) })
+  {
+    if (hint.second)
+    {
+      vtkNew<vtkStringArray> text;
+      text->SetName(hint.first);
+      text->InsertNextValue(hint.second);
+      image->GetFieldData()->AddArray(text);
+    }
+  }
+  return image;
+}
+
+void CheckGuess(vtkImageData* image, const std::string& expected, const std::string& what)
+{
+  const char* guess = vtkTransferFunctionPresets::GuessPreset(image);
+  const std::string got = guess ? guess : "(null)";
+  if (got != expected)
+  {
+    std::cerr << what << ": guessed " << got << ", expected " << expected << std::endl;
+  }
+  Check(got == expected, "guess: " + what);
+}
+
+void TestGuessing()
+{
+  // A head CT in HU: air around it, soft tissue and bone.
+  auto ctHead = [](int i) { return i % 10 < 3 ? -1000.0 : (i % 10 < 9 ? 40.0 : 1200.0); };
+  CheckGuess(MakeVolume<vtkShortArray>(ctHead), "CT", "a CT in HU (air and tissue)");
+  CheckGuess(MakeVolume<vtkFloatArray>(ctHead), "CT", "a floating-point CT in HU");
+  // An MR with a negative minimum (noise around 0): not a CT.
+  auto mrNoisy = [](int i) { return i % 7 == 0 ? -50.0 + i % 13 : 200.0 + i % 600; };
+  CheckGuess(MakeVolume<vtkShortArray>(mrNoisy), "MR", "an MR with a negative minimum");
+  // An MR padded with -32768 outside the field of view: no air peak.
+  auto mrPadded = [](int i) { return i % 5 == 0 ? -32768.0 : 100.0 + i % 900; };
+  CheckGuess(MakeVolume<vtkShortArray>(mrPadded), "MR", "an MR padded with -32768");
+  // A floating-point MR (intensities in the hundreds): not a cloud.
+  auto mrFloat = [](int i) { return i % 4 == 0 ? 0.0 : 150.0 + 0.37 * (i % 2000); };
+  CheckGuess(MakeVolume<vtkFloatArray>(mrFloat), "MR", "a floating-point MR");
+  // A normalised floating-point MR looks like a density by its values; its
+  // format says MR.
+  auto normalised = [](int i) { return (i % 100) / 99.0; };
+  CheckGuess(MakeVolume<vtkFloatArray>(normalised), "Cloud", "a density in [0, 1]");
+  CheckGuess(
+    MakeVolume<vtkFloatArray>(normalised, "NIfTI"), "MR", "a normalised MR read from NIfTI");
+  CheckGuess(MakeVolume<vtkFloatArray>(normalised, "DICOM"), "MR", "a normalised image from DICOM");
+  // An OpenVDB fog volume is a density whatever its values.
+  CheckGuess(MakeVolume<vtkFloatArray>(mrFloat, "OpenVDB"), "Cloud", "an OpenVDB grid");
+  // Integer scans without hints: MR.
+  CheckGuess(
+    MakeVolume<vtkUnsignedCharArray>([](int i) { return i % 256; }), "MR", "unsigned char data");
+  // A modality named by the file wins.
+  CheckGuess(MakeVolume<vtkShortArray>(mrNoisy, "MetaImage", "CT"), "CT", "modality CT");
+  CheckGuess(MakeVolume<vtkShortArray>(ctHead, "MetaImage", "MR"), "MR", "modality MR");
+  CheckGuess(MakeVolume<vtkShortArray>(ctHead, "MetaImage", "PT"), "MR", "modality PT");
+  vtkNew<vtkImageData> empty;
+  Check(vtkTransferFunctionPresets::GuessPreset(empty) == nullptr, "no scalars: no guess");
+
+  // ApplyToImage: the range and the unit distance (the mean spacing).
+  vtkNew<vtkVolumeProperty> property;
+  Check(vtkTransferFunctionPresets::ApplyToImage(
+          "MR", property, MakeVolume<vtkUnsignedCharArray>([](int i) { return 10 + i % 101; })),
+    "ApplyToImage applies");
+  Check(Close(property->GetScalarOpacityUnitDistance(), 1.0), "unit distance = mean spacing");
+  Check(Close(Opacity(property, 10.0 + 0.6 * 100.0), 0.4), "over the data's range [10, 110]");
+  Check(vtkTransferFunctionPresets::ApplyToImage(
+          "Cloud", property, MakeVolume<vtkFloatArray>([](int) { return 3.0; })) &&
+      Close(Opacity(property, 3.0), 0.25),
+    "a constant volume c: over [0, c], so it is visible");
+  Check(!vtkTransferFunctionPresets::ApplyToImage("Cloud", property, empty),
+    "no scalars: ApplyToImage fails");
 }
 
 // Opacity and colour stay in [0, 1] and opacity never decreases over [lo, hi].
@@ -200,5 +301,6 @@ int TestTransferFunctionPresets(int, char*[])
     Check(property->GetScalarOpacity() == before, "failures leave the property unchanged");
     Check(!P::Apply("Cloud", nullptr, 0.0, 1.0), "no property fails without crashing");
   }
+  TestGuessing();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

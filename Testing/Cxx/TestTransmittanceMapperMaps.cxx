@@ -32,7 +32,7 @@
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceVolumeMapper.h"
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 #include "vtkVolume.h"
 
 #include "TyndallTestScene.h"
@@ -281,7 +281,7 @@ int TestTransmittanceMapperMaps(int, char*[])
     window->AddRenderer(renderer);
 
     // The CPU twin of the medium, read as the mapper reads it.
-    vtkTyndallScene scene;
+    vtkTyndallSceneReader scene;
     if (!scene.Update(renderer, volume, mapper))
     {
       std::cerr << "FAILED: the scene reader refused " << medium.Name << std::endl;

@@ -1,8 +1,8 @@
 /**
- * @class   vtkTyndallScene
+ * @class   vtkTyndallSceneReader
  * @brief   the one reader of a scene for Tyndall's renderers: a medium and its lights
  *
- * vtkTyndallScene turns (renderer, volume) into what both integrators
+ * vtkTyndallSceneReader turns (renderer, volume) into what both integrators
  * consume: the volume's vtkTyndallGridMedium (validated scalars, placement,
  * tabulated transfer functions, parameters) and the renderer's lights as
  * vtkTyndallLight. The GPU mapper (vtkTransmittanceVolumeMapper) and the CPU
@@ -26,8 +26,8 @@
  * Tyndall::Rendering; not wrapped.
  */
 
-#ifndef vtkTyndallScene_h
-#define vtkTyndallScene_h
+#ifndef vtkTyndallSceneReader_h
+#define vtkTyndallSceneReader_h
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkTyndallGridMedium.h"   // For the medium
@@ -40,7 +40,7 @@ class vtkObject;
 class vtkRenderer;
 class vtkVolume;
 
-class TYNDALLRENDERING_EXPORT vtkTyndallScene
+class TYNDALLRENDERING_EXPORT vtkTyndallSceneReader
 {
 public:
   /// The most lights a scene uses (the shaders' arrays).

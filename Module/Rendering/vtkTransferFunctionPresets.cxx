@@ -1,13 +1,22 @@
 #include "vtkTransferFunctionPresets.h"
 
+#include "vtkAbstractArray.h"
+#include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <string>
 
 vtkStandardNewMacro(vtkTransferFunctionPresets);
@@ -40,6 +49,52 @@ std::string Normalise(const char* name)
     }
   }
   return out;
+}
+
+// The guessing rule's thresholds (see the class description).
+constexpr double kAirLow = -1100.0, kAirHigh = -900.0;      // HU
+constexpr double kTissueLow = -100.0, kTissueHigh = 3000.0; // HU
+constexpr double kSignatureFraction = 0.01;
+constexpr double kDensityMaximum = 100.0;
+
+vtkDataArray* ScalarsOf(vtkImageData* image)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  return scalars ? scalars : (image ? image->GetCellData()->GetScalars() : nullptr);
+}
+
+// A string of the image's field data ("" when absent).
+std::string FieldString(vtkImageData* image, const char* name)
+{
+  auto* array = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray(name));
+  return array && array->GetNumberOfValues() > 0 ? array->GetValue(0) : std::string();
+}
+
+struct ValueSummary
+{
+  double Min = std::numeric_limits<double>::infinity();
+  double Max = -std::numeric_limits<double>::infinity();
+  vtkIdType Finite = 0, Air = 0, Tissue = 0;
+};
+
+ValueSummary Summarise(vtkDataArray* scalars)
+{
+  ValueSummary s;
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (!std::isfinite(v))
+    {
+      continue;
+    }
+    ++s.Finite;
+    s.Min = std::min(s.Min, v);
+    s.Max = std::max(s.Max, v);
+    s.Air += v >= kAirLow && v <= kAirHigh ? 1 : 0;
+    s.Tissue += v >= kTissueLow && v <= kTissueHigh ? 1 : 0;
+  }
+  return s;
 }
 
 void Shade(vtkVolumeProperty* property)
@@ -204,6 +259,83 @@ bool vtkTransferFunctionPresets::Apply(
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   property->SetInterpolationTypeToLinear();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTransferFunctionPresets::GuessPreset(vtkImageData* image)
+{
+  vtkDataArray* scalars = ScalarsOf(image);
+  if (!scalars || scalars->GetNumberOfTuples() == 0)
+  {
+    vtkGenericWarningMacro(<< "vtkTransferFunctionPresets::GuessPreset: the image has no scalars.");
+    return nullptr;
+  }
+  // 1. A modality named by the file.
+  const std::string modality = FieldString(image, "TyndallModality");
+  if (!modality.empty())
+  {
+    return modality == "CT" ? "CT" : "MR";
+  }
+  // 2. The Hounsfield signature: air and tissue.
+  const ValueSummary values = Summarise(scalars);
+  const double finite = static_cast<double>(std::max<vtkIdType>(values.Finite, 1));
+  if (values.Air / finite >= kSignatureFraction && values.Tissue / finite >= kSignatureFraction)
+  {
+    return "CT";
+  }
+  // 3. The format.
+  const std::string format = FieldString(image, "TyndallFormat");
+  if (format == "OpenVDB")
+  {
+    return "Cloud";
+  }
+  if (format == "DICOM" || format == "NIfTI")
+  {
+    return "MR";
+  }
+  // 4. The values.
+  const int type = scalars->GetDataType();
+  const bool floating = type == VTK_FLOAT || type == VTK_DOUBLE;
+  return floating && values.Min >= 0.0 && values.Max <= kDensityMaximum ? "Cloud" : "MR";
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransferFunctionPresets::ApplyToImage(
+  const char* name, vtkVolumeProperty* property, vtkImageData* image)
+{
+  vtkDataArray* scalars = ScalarsOf(image);
+  if (!scalars)
+  {
+    vtkGenericWarningMacro(<< "vtkTransferFunctionPresets::ApplyToImage: "
+                           << (image ? "the image has no scalars." : "no image given."));
+    return false;
+  }
+  const ValueSummary values = Summarise(scalars);
+  if (values.Finite == 0)
+  {
+    vtkGenericWarningMacro(
+      << "vtkTransferFunctionPresets::ApplyToImage: the image has no finite scalar.");
+    return false;
+  }
+  double lo = values.Min, hi = values.Max;
+  if (!(hi > lo)) // a constant volume: from 0 to its value, so that it is visible
+  {
+    lo = std::min(0.0, values.Min);
+    hi = std::max(0.0, values.Min);
+    if (lo == hi)
+    {
+      hi = lo + 1.0;
+    }
+  }
+  if (!vtkTransferFunctionPresets::Apply(name, property, lo, hi))
+  {
+    return false;
+  }
+  double spacing[3];
+  image->GetSpacing(spacing);
+  property->SetScalarOpacityUnitDistance(
+    (std::fabs(spacing[0]) + std::fabs(spacing[1]) + std::fabs(spacing[2])) / 3.0);
   return true;
 }
 

@@ -38,17 +38,42 @@
  * range. Errors (unknown name, no property, bad range) are reported with
  * vtkErrorWithObjectMacro on the property (a generic warning when the
  * property is null), and Apply() returns false without changing anything.
+ *
+ * <b>The guessing rule.</b> Tyndall's programs (tyndall-render,
+ * tyndall-viewer, the Python examples) choose a preset for a volume with
+ * GuessPreset(), one rule for all, which looks at where the volume came
+ * from and at its values:
+ *
+ * 1. a modality named by the file (the field-data string "TyndallModality"
+ *    that vtkVolumeFileReader sets, e.g. from a MetaImage header): "CT"
+ *    gives CT, any other (MR, PT, US, ...) gives MR;
+ * 2. the Hounsfield signature: at least 1% of the finite scalars are air
+ *    (-1100 .. -900 HU) and at least 1% are tissue or bone (-100 .. 3000)
+ *    gives CT. An MR with a negative minimum (noise around 0, bias-field
+ *    corrections, a -32768 padding) has no air peak and is not a CT;
+ * 3. the format (field-data string "TyndallFormat"): "OpenVDB" (fog
+ *    volumes: a density) gives Cloud; "DICOM" and "NIfTI" (scanners'
+ *    formats) give MR;
+ * 4. otherwise the values: integer scalars (scanner counts) give MR;
+ *    floating-point scalars that look like a density, none negative and
+ *    none above 100, give Cloud; other floating-point data (a float MR's
+ *    intensities in the hundreds or thousands, negative values) give MR.
+ *
+ * ApplyToImage() applies a preset the way the programs do: over the image's
+ * finite scalar range, with the unit distance set to the mean voxel
+ * spacing (the presets' opacities are per voxel).
  */
 
 #ifndef vtkTransferFunctionPresets_h
 #define vtkTransferFunctionPresets_h
 
-#include "TyndallIOModule.h" // For export macro
+#include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
 
+class vtkImageData;
 class vtkVolumeProperty;
 
-class TYNDALLIO_EXPORT vtkTransferFunctionPresets : public vtkObject
+class TYNDALLRENDERING_EXPORT vtkTransferFunctionPresets : public vtkObject
 {
 public:
   static vtkTransferFunctionPresets* New();
@@ -77,6 +102,24 @@ public:
   static bool Apply(
     const char* name, vtkVolumeProperty* property, double rangeMin, double rangeMax);
   ///@}
+
+  /**
+   * The preset Tyndall's programs choose for `image` (see the class
+   * description): "CT", "MR" or "Cloud"; nullptr (with an error) for an
+   * image without scalars. Reads the active point scalars, else the cell
+   * scalars.
+   */
+  static const char* GuessPreset(vtkImageData* image);
+
+  /**
+   * Applies preset `name` to `property` for `image`: over the image's
+   * finite scalar range (a constant volume c: over [min(0, c), max(0, c)],
+   * or [c, c + 1] for c = 0), and sets the scalar opacity unit distance to
+   * the mean of the absolute voxel spacings. Returns false (with an error)
+   * for an unknown name, a null argument or an image without finite
+   * scalars.
+   */
+  static bool ApplyToImage(const char* name, vtkVolumeProperty* property, vtkImageData* image);
 
 protected:
   vtkTransferFunctionPresets() = default;

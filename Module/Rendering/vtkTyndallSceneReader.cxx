@@ -1,4 +1,4 @@
-#include "vtkTyndallScene.h"
+#include "vtkTyndallSceneReader.h"
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
@@ -44,7 +44,7 @@ void PlaceLight(
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallScene::Update(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
 {
   if (!renderer || !volume)
   {
@@ -60,7 +60,7 @@ bool vtkTyndallScene::Update(vtkRenderer* renderer, vtkVolume* volume, vtkObject
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallScene::UpdateLights(vtkRenderer* renderer, vtkObject* reporter)
+void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* reporter)
 {
   this->Lights.clear();
   vtkCamera* camera = renderer->GetActiveCamera();

@@ -1,0 +1,893 @@
+#include "vtkTyndallOptions.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkStringArray.h"
+#include "vtkTransferFunctionPresets.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkTyndallOptions);
+
+namespace
+{
+constexpr int Both = vtkTyndallOptions::RENDER | vtkTyndallOptions::VIEWER;
+constexpr int Render = vtkTyndallOptions::RENDER;
+constexpr int Viewer = vtkTyndallOptions::VIEWER;
+constexpr double Huge = 1.0e6;
+constexpr double Coordinate = 1.0e30;
+
+enum class Kind
+{
+  Flag,     // no argument
+  Integer,  // one integer in [Min, Max]
+  Number,   // one number in [Min, Max] (Open: exclusive)
+  Triple,   // three numbers in [Min, Max]
+  Pair,     // two integers in [Min, Max]
+  Text,     // one word
+  Choice,   // one of Choices ('|'-separated)
+  Light,    // a new light: three numbers
+  LightSet, // the most recent light's colour (3 numbers) or intensity (1)
+  Help,     // -h, --help
+  Action    // a viewer key without an option
+};
+
+// How a viewer key changes its option.
+enum class KeyMode
+{
+  None,
+  Add,      // KeysUp add Step, KeysDown subtract it
+  Multiply, // KeysUp multiply by Step, KeysDown divide by it
+  Toggle,   // KeysUp toggles the flag
+  Choose    // the n-th key of KeysUp chooses choice n
+};
+
+// One option: a row of the table.
+struct Spec
+{
+  const char* Name; // the long name without "--" (or an action's name)
+  const char* Short;
+  Kind Type;
+  double Min, Max;
+  bool Open; // the range excludes its ends
+  const char* Choices;
+  const char* Metavar;
+  const char* Default; // in --help, and the value of an unset number
+  const char* Group;
+  int Programs;
+  const char* Help;
+  KeyMode Mode = KeyMode::None;
+  const char* KeysUp = "";
+  const char* KeysDown = "";
+  double Step = 0.0;
+};
+
+// The table. Help texts wrap at 80 columns; "\n" starts a new line.
+const Spec kOptions[] = {
+  { "grid", "", Kind::Text, 0, 0, false, "", "NAME", "", "Input", Both,
+    "grid of a .vdb file (default: 'density' if it is a float grid, else the first float grid)" },
+  { "component", "", Kind::Integer, 0, 1024, false, "", "N", "", "Input", Both,
+    "component of multi-component scalars to render (default: multi-component data is "
+    "refused)" },
+  { "resolution", "-r", Kind::Integer, 8, 512, false, "", "N", "128", "Input", Both,
+    "voxels per axis of the built-in cloud (default scene only)" },
+  { "method", "", Kind::Choice, 0, 0, false, "none|brute-force|tfm|adaptive-tfm|etm|adaptive-etm",
+    "M", "adaptive-etm", "Scattering", Both, "light transmittance", KeyMode::Choose, "123456" },
+  { "model", "", Kind::Choice, 0, 0, false, "emission-absorption|single-scattering", "M",
+    "single-scattering", "Scattering", Both,
+    "single-scattering (colour = albedo) or emission-absorption (colour = emitted colour, as "
+    "vtkGPUVolumeRayCastMapper)" },
+  { "coefficients", "", Kind::Integer, 1, 16, false, "", "N", "8", "Scattering", Both,
+    "series coefficients per map texel", KeyMode::Add, "+=", "-_", 1.0 },
+  { "map-size", "", Kind::Integer, 16, 4096, false, "", "N", "256", "Scattering", Both,
+    "transmittance map size in texels" },
+  { "anisotropy", "", Kind::Number, -0.99, 0.99, false, "", "G", "0.3 / 0", "Scattering", Both,
+    "Henyey-Greenstein g; > 0 scatters forward", KeyMode::Add, "a", "z", 0.1 },
+  { "density-scale", "", Kind::Number, 0, Huge, false, "", "S", "1", "Scattering", Both,
+    "multiplies the extinction", KeyMode::Multiply, "d", "c", 1.25 },
+  { "sample-distance", "", Kind::Number, 0, Huge, false, "", "D", "0", "Scattering", Both,
+    "camera-ray step in world units; 0 = half the smallest voxel spacing" },
+  { "light-samples", "", Kind::Integer, 1, 2048, false, "", "N", "128", "Scattering", Both,
+    "samples per light ray (map build, brute force)" },
+  { "adaptive-threshold", "", Kind::Number, 1e-6, 0.5, false, "", "T", "0.01", "Scattering", Both,
+    "transmittance threshold of the adaptive methods" },
+  { "ambient", "", Kind::Number, 0, Huge, false, "", "A", "0.45 / 0.25", "Scattering", Both,
+    "unshadowed ambient in-scattering" },
+  { "emission-scale", "", Kind::Number, 0, Huge, false, "", "E", "0", "Scattering", Both,
+    "emission strength (single scattering); the emission colour comes from the transfer "
+    "function file's 'emission' lines, else its colour" },
+  { "light-scale", "", Kind::Number, 0, Huge, false, "", "K", "4 pi", "Scattering", Both,
+    "irradiance per unit of light intensity" },
+  { "no-jitter", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "do not jitter the ray samples per pixel", KeyMode::Toggle, "j" },
+  { "preset", "", Kind::Text, 0, 0, false, "", "NAME", "", "Transfer function", Both,
+    "a named preset (vtkTransferFunctionPresets) over the data's scalar range, unit distance = "
+    "the mean voxel spacing; names ignore case, spaces, '-' and '_'. Default for data inputs: "
+    "the guessed preset (vtkTransferFunctionPresets::GuessPreset)" },
+  { "transfer-function", "", Kind::Text, 0, 0, false, "", "FILE", "", "Transfer function", Both,
+    "a transfer-function text file (format below)" },
+  { "camera-position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "",
+    "Camera", Both, "where the camera is" },
+  { "focal-point", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",
+    Both, "the point it looks at" },
+  { "view-up", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera", Both,
+    "the image's up direction (made orthogonal to the view direction; must not be parallel to "
+    "it)" },
+  { "view-angle", "", Kind::Number, 0, 180, true, "", "DEG", "30", "Camera", Both,
+    "field of view in degrees, 0 < DEG < 180" },
+  { "horizontal-view-angle", "", Kind::Flag, 0, 0, false, "", "", "", "Camera", Both,
+    "the view angle is horizontal (default: vertical)" },
+  { "light-direction", "", Kind::Light, -Coordinate, Coordinate, false, "", "X Y Z", "",
+    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+    "a directional light travelling along (X, Y, Z), i.e. coming from -(X, Y, Z): 0 -1 0 "
+    "shines downwards" },
+  { "light-position", "", Kind::Light, -Coordinate, Coordinate, false, "", "X Y Z", "",
+    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+    "a point light at (X, Y, Z), no fall-off" },
+  { "light-color", "", Kind::LightSet, 0, Huge, false, "", "R G B", "1 1 1",
+    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+    "colour of the most recent light, >= 0" },
+  { "light-intensity", "", Kind::LightSet, 0, Huge, false, "", "I", "1",
+    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+    "intensity of the most recent light" },
+  { "size", "-s", Kind::Pair, 16, 8192, false, "", "W H", "512 512", "Image", Render,
+    "image size in pixels" },
+  { "size", "-s", Kind::Pair, 16, 8192, false, "", "W H", "960 720", "Image", Viewer,
+    "window size in pixels" },
+  { "background", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
+    "background colour in [0, 1] (the bottom colour of a gradient) [default scene: sky "
+    "gradient; data: black]" },
+  { "background2", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
+    "top colour: makes the background a vertical gradient" },
+  { "output", "-o", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,
+    "the PNG: the 8-bit frame buffer, i.e. linear radiance clamped to [0, 1] and quantised "
+    "[default scene: tyndall-cloud.png; data: <input name>.png in the current directory]" },
+  { "exr", "", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,
+    "also write a linear float OpenEXR image (RGB, 32-bit float, unclamped radiance) captured "
+    "from a float frame buffer" },
+  { "frames", "", Kind::Integer, 1, 1000, false, "", "N", "1", "Output", Render,
+    "render N frames: frames after the first reuse the maps and shaders; their mean time is "
+    "reported (the images are identical)" },
+  { "quiet", "-q", Kind::Flag, 0, 0, false, "", "", "", "Output", Render,
+    "no progress or timings on stderr (errors only)" },
+  { "input", "-i", Kind::Text, 0, 0, false, "", "FILE", "", "Viewer", Viewer,
+    "volume to show (same as VOLUME)" },
+  { "script", "", Kind::Text, 0, 0, false, "", "FILE", "", "Viewer", Viewer,
+    "run the commands in FILE, one per frame" },
+  { "events", "", Kind::Text, 0, 0, false, "", "TEXT", "", "Viewer", Viewer,
+    "run the commands in TEXT (separated by ';'), one per frame" },
+  { "verbose", "-v", Kind::Flag, 0, 0, false, "", "", "", "Viewer", Viewer,
+    "print a line per frame also without a script" },
+  { "help", "-h", Kind::Help, 0, 0, false, "", "", "", "Help", Both, "show this help and exit" },
+  // The viewer's actions: keys without an option.
+  { "hud", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "on-screen text on/off",
+    KeyMode::Toggle, "h" },
+  { "reset", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "reset the camera",
+    KeyMode::Toggle, "r" },
+  { "screenshot", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer,
+    "screenshot (tyndall-viewer-NNN.png)", KeyMode::Toggle, "s" },
+  { "quit", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "quit",
+    KeyMode::Toggle, "q\033" },
+};
+
+struct Value
+{
+  bool Set = false;
+  std::vector<double> Numbers;
+  std::string Text;
+  int Choice = -1;
+};
+
+struct Light
+{
+  bool Positional = false;
+  double Vector[3] = { 0, 0, 0 };
+  double Color[3] = { 1, 1, 1 };
+  double Intensity = 1.0;
+};
+
+std::vector<std::string> Split(const char* text, char separator)
+{
+  std::vector<std::string> parts;
+  std::string part;
+  for (const char* p = text; *p; ++p)
+  {
+    if (*p == separator)
+    {
+      parts.push_back(part);
+      part.clear();
+    }
+    else
+    {
+      part += *p;
+    }
+  }
+  parts.push_back(part);
+  return parts;
+}
+
+// Strict parsing: the whole text, finite; integers without a fraction.
+bool ParseStrict(const std::string& text, bool integer, double& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double v = integer ? static_cast<double>(std::strtol(text.c_str(), &end, 10))
+                           : std::strtod(text.c_str(), &end);
+  if (*end || !std::isfinite(v) || errno == ERANGE)
+  {
+    return false;
+  }
+  value = v;
+  return true;
+}
+
+std::string RangeText(const Spec& s)
+{
+  std::ostringstream os;
+  if (s.Open)
+  {
+    os << s.Min << " < " << s.Metavar << " < " << s.Max;
+  }
+  else
+  {
+    os << s.Min << ".." << s.Max;
+  }
+  return os.str();
+}
+
+// "an integer in 1..16", "three numbers in 0..1", ...
+std::string Wanted(const Spec& s)
+{
+  switch (s.Type)
+  {
+    case Kind::Integer:
+      return "an integer in " + RangeText(s);
+    case Kind::Number:
+      return s.Open ? "a number, " + RangeText(s) : "a number in " + RangeText(s);
+    case Kind::Pair:
+      return "two integers in " + RangeText(s);
+    case Kind::Triple:
+    case Kind::Light:
+      return "three numbers in " + RangeText(s);
+    case Kind::Choice:
+    {
+      std::string list = s.Choices;
+      std::replace(list.begin(), list.end(), '|', ' ');
+      return "one of " + list;
+    }
+    default:
+    {
+      std::string what = s.Metavar;
+      std::transform(what.begin(), what.end(), what.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      return "a " + (what == "file" ? std::string("file name") : what);
+    }
+  }
+}
+
+void Wrap(std::ostream& os, const std::string& left, const std::string& text)
+{
+  constexpr size_t column = 26, width = 80;
+  std::string line = left;
+  if (line.size() + 1 > column)
+  {
+    os << line << "\n";
+    line.clear();
+  }
+  line.resize(column, ' ');
+  std::istringstream words(text);
+  bool first = true;
+  for (std::string word; words >> word;)
+  {
+    if (!first && line.size() + 1 + word.size() > width)
+    {
+      os << line << "\n";
+      line = std::string(column, ' ');
+      first = true;
+    }
+    line += (first ? "" : " ") + word;
+    first = false;
+  }
+  os << line << "\n";
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkTyndallOptions::vtkInternals
+{
+public:
+  std::map<std::string, Value> Values;
+  std::vector<Light> Lights;
+
+  // The row of `name` for `program` (nullptr if none).
+  static const Spec* Find(const std::string& name, int program)
+  {
+    for (const Spec& s : kOptions)
+    {
+      if ((s.Programs & program) && name == s.Name)
+      {
+        return &s;
+      }
+    }
+    return nullptr;
+  }
+
+  // The row of a command-line argument ("--method", "-s").
+  static const Spec* FindArgument(const std::string& arg, int program)
+  {
+    for (const Spec& s : kOptions)
+    {
+      if ((s.Programs & program) && s.Type != Kind::Action &&
+        (arg == std::string("--") + s.Name || (*s.Short && arg == s.Short)))
+      {
+        return &s;
+      }
+    }
+    return nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkTyndallOptions::vtkTyndallOptions()
+  : Internals(new vtkInternals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkTyndallOptions::~vtkTyndallOptions() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::ParseArguments(vtkStringArray* arguments)
+{
+  std::vector<std::string> words = { "program" };
+  for (vtkIdType i = 0; arguments && i < arguments->GetNumberOfValues(); ++i)
+  {
+    words.push_back(arguments->GetValue(i));
+  }
+  std::vector<char*> argv;
+  for (std::string& w : words)
+  {
+    argv.push_back(&w[0]);
+  }
+  return this->Parse(static_cast<int>(argv.size()), argv.data());
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::Parse(int argc, char* argv[])
+{
+  vtkInternals& in = *this->Internals;
+  in.Values.clear();
+  in.Lights.clear();
+  this->Input.clear();
+  this->HelpRequested = false;
+  this->ErrorMessage.clear();
+  auto fail = [this](const std::string& message)
+  {
+    if (this->ErrorMessage.empty())
+    {
+      this->ErrorMessage = message;
+    }
+    return false;
+  };
+  bool endOfOptions = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (endOfOptions || arg.empty() || arg[0] != '-' || arg == "-")
+    {
+      if (!this->Input.empty())
+      {
+        return fail("more than one input given ('" + this->Input + "' and '" + arg + "')");
+      }
+      this->Input = arg;
+      continue;
+    }
+    if (arg == "--")
+    {
+      endOfOptions = true;
+      continue;
+    }
+    const Spec* spec = vtkInternals::FindArgument(arg, this->Program);
+    if (!spec)
+    {
+      return fail("unknown option '" + arg + "' (see --help)");
+    }
+    // The arguments the option takes.
+    size_t count = 0;
+    switch (spec->Type)
+    {
+      case Kind::Flag:
+      case Kind::Help:
+        count = 0;
+        break;
+      case Kind::Pair:
+        count = 2;
+        break;
+      case Kind::Triple:
+      case Kind::Light:
+        count = 3;
+        break;
+      case Kind::LightSet:
+        count = std::string(spec->Name) == "light-color" ? 3 : 1;
+        break;
+      default:
+        count = 1;
+    }
+    if (i + static_cast<int>(count) >= argc)
+    {
+      return fail(arg + " needs " + Wanted(*spec));
+    }
+    std::vector<std::string> args(argv + i + 1, argv + i + 1 + count);
+    i += static_cast<int>(count);
+    if (spec->Type == Kind::Help)
+    {
+      this->HelpRequested = true;
+      return true;
+    }
+    Value value;
+    value.Set = true;
+    if (spec->Type == Kind::Text)
+    {
+      value.Text = args[0];
+      if (value.Text.empty())
+      {
+        return fail(arg + " needs a non-empty " + std::string(spec->Metavar));
+      }
+    }
+    else if (spec->Type == Kind::Choice)
+    {
+      const std::vector<std::string> choices = Split(spec->Choices, '|');
+      const auto found = std::find(choices.begin(), choices.end(), args[0]);
+      if (found == choices.end())
+      {
+        return fail(arg + " needs " + Wanted(*spec) + "; got '" + args[0] + "'");
+      }
+      value.Choice = static_cast<int>(found - choices.begin());
+      value.Text = args[0];
+    }
+    else
+    {
+      const bool integer = spec->Type == Kind::Integer || spec->Type == Kind::Pair;
+      for (const std::string& a : args)
+      {
+        double v = 0.0;
+        const bool parsed = ParseStrict(a, integer, v);
+        const bool inside = spec->Open ? v > spec->Min && v < spec->Max
+                                       : v >= spec->Min && v <= spec->Max;
+        if (!parsed || !inside)
+        {
+          return fail(arg + " needs " + Wanted(*spec) + ", got '" + a + "'");
+        }
+        value.Numbers.push_back(v);
+      }
+    }
+    const std::string name = spec->Name;
+    if (spec->Type == Kind::Light)
+    {
+      Light light;
+      light.Positional = name == "light-position";
+      std::copy(value.Numbers.begin(), value.Numbers.end(), light.Vector);
+      if (!light.Positional && light.Vector[0] == 0 && light.Vector[1] == 0 && light.Vector[2] == 0)
+      {
+        return fail("--light-direction needs a non-zero vector");
+      }
+      in.Lights.push_back(light);
+      continue;
+    }
+    if (spec->Type == Kind::LightSet)
+    {
+      if (in.Lights.empty())
+      {
+        return fail(arg +
+          " applies to the most recent light: give --light-direction or --light-position before "
+          "it");
+      }
+      if (name == "light-color")
+      {
+        std::copy(value.Numbers.begin(), value.Numbers.end(), in.Lights.back().Color);
+      }
+      else
+      {
+        in.Lights.back().Intensity = value.Numbers[0];
+      }
+      continue;
+    }
+    if (name == "view-up" && value.Numbers[0] == 0 && value.Numbers[1] == 0 &&
+      value.Numbers[2] == 0)
+    {
+      return fail("--view-up needs a non-zero vector");
+    }
+    if (name == "preset" && vtkTransferFunctionPresets::GetPresetIndex(value.Text.c_str()) < 0)
+    {
+      std::string known;
+      for (int p = 0; p < vtkTransferFunctionPresets::GetNumberOfPresets(); ++p)
+      {
+        known += std::string(" ") + vtkTransferFunctionPresets::GetPresetName(p);
+      }
+      return fail("unknown preset '" + value.Text + "' (known:" + known + ")");
+    }
+    if (name == "input")
+    {
+      if (!this->Input.empty())
+      {
+        return fail("more than one input given ('" + this->Input + "' and '" + value.Text + "')");
+      }
+      this->Input = value.Text;
+      continue;
+    }
+    in.Values[name] = value;
+  }
+  // Options that depend on others.
+  if (this->Input.empty() && this->IsSet("grid"))
+  {
+    return fail("--grid needs a .vdb input");
+  }
+  if (this->Input.empty() && this->IsSet("component"))
+  {
+    return fail("--component needs an input file");
+  }
+  if (!this->Input.empty() && this->IsSet("resolution"))
+  {
+    return fail("--resolution applies to the built-in cloud only, not to an input file");
+  }
+  if (this->IsSet("preset") && this->IsSet("transfer-function"))
+  {
+    return fail("give either --preset or --transfer-function, not both");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::IsSet(const char* name)
+{
+  const auto it = this->Internals->Values.find(name ? name : "");
+  return it != this->Internals->Values.end() && it->second.Set;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallOptions::GetNumber(const char* name, int i)
+{
+  const Spec* spec = vtkInternals::Find(name ? name : "", this->Program);
+  if (!spec)
+  {
+    vtkErrorMacro(<< "GetNumber: no option '" << (name ? name : "(null)") << "'.");
+    return 0.0;
+  }
+  const auto it = this->Internals->Values.find(name);
+  if (it != this->Internals->Values.end() && i >= 0 &&
+    i < static_cast<int>(it->second.Numbers.size()))
+  {
+    return it->second.Numbers[i];
+  }
+  // The table default: the i-th word of Default (the first of "a / b").
+  const std::vector<std::string> words = Split(spec->Default, ' ');
+  double v = 0.0;
+  return i >= 0 && i < static_cast<int>(words.size()) && ParseStrict(words[i], false, v) ? v : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::GetVector(const char* name, double v[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    v[i] = this->GetNumber(name, i);
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallOptions::GetText(const char* name)
+{
+  const auto it = this->Internals->Values.find(name ? name : "");
+  return it != this->Internals->Values.end() ? it->second.Text.c_str() : "";
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallOptions::GetChoice(const char* name)
+{
+  const Spec* spec = vtkInternals::Find(name ? name : "", this->Program);
+  if (!spec || spec->Type != Kind::Choice)
+  {
+    vtkErrorMacro(<< "GetChoice: no choice option '" << (name ? name : "(null)") << "'.");
+    return -1;
+  }
+  const auto it = this->Internals->Values.find(name);
+  if (it != this->Internals->Values.end())
+  {
+    return it->second.Choice;
+  }
+  const std::vector<std::string> choices = Split(spec->Choices, '|');
+  return static_cast<int>(
+    std::find(choices.begin(), choices.end(), spec->Default) - choices.begin());
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::GetFlag(const char* name)
+{
+  return this->IsSet(name);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::SetNumber(const char* name, double value, int i)
+{
+  const Spec* spec = vtkInternals::Find(name ? name : "", this->Program);
+  if (!spec || i < 0 || i > 2)
+  {
+    vtkErrorMacro(<< "SetNumber: no option '" << (name ? name : "(null)") << "'.");
+    return;
+  }
+  Value& v = this->Internals->Values[name];
+  if (spec->Type == Kind::Choice)
+  {
+    const int choices = static_cast<int>(Split(spec->Choices, '|').size());
+    v.Choice = std::min(std::max(static_cast<int>(value), 0), choices - 1);
+    v.Text = Split(spec->Choices, '|')[v.Choice];
+    v.Set = true;
+    this->Modified();
+    return;
+  }
+  if (v.Numbers.size() <= static_cast<size_t>(i))
+  {
+    const size_t previous = v.Numbers.size();
+    v.Numbers.resize(i + 1);
+    for (size_t k = previous; k < v.Numbers.size(); ++k)
+    {
+      v.Numbers[k] = this->GetNumber(name, static_cast<int>(k));
+    }
+  }
+  v.Numbers[i] = std::min(std::max(value, spec->Min), spec->Max);
+  if (spec->Type == Kind::Integer)
+  {
+    v.Numbers[i] = std::round(v.Numbers[i]);
+  }
+  v.Set = true;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::SetFlag(const char* name, bool on)
+{
+  if (on)
+  {
+    this->Internals->Values[name ? name : ""].Set = true;
+  }
+  else
+  {
+    this->Internals->Values.erase(name ? name : "");
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallOptions::GetNumberOfLights()
+{
+  return static_cast<int>(this->Internals->Lights.size());
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::GetLightPositional(int light)
+{
+  return light >= 0 && light < this->GetNumberOfLights() &&
+    this->Internals->Lights[light].Positional;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::GetLightVector(int light, double v[3])
+{
+  const bool ok = light >= 0 && light < this->GetNumberOfLights();
+  for (int k = 0; k < 3; ++k)
+  {
+    v[k] = ok ? this->Internals->Lights[light].Vector[k] : 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::GetLightColor(int light, double rgb[3])
+{
+  const bool ok = light >= 0 && light < this->GetNumberOfLights();
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = ok ? this->Internals->Lights[light].Color[k] : 1.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallOptions::GetLightIntensity(int light)
+{
+  return light >= 0 && light < this->GetNumberOfLights() ? this->Internals->Lights[light].Intensity
+                                                         : 1.0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallOptions::ApplyKey(int key)
+{
+  if (this->Program != VIEWER)
+  {
+    return nullptr; // only the viewer has keys
+  }
+  for (const Spec& s : kOptions)
+  {
+    if (!(s.Programs & this->Program) || s.Mode == KeyMode::None || key <= 0 || key > 255)
+    {
+      continue;
+    }
+    const char* up = std::strchr(s.KeysUp, key);
+    const char* down = std::strchr(s.KeysDown, key);
+    if (!up && !down)
+    {
+      continue;
+    }
+    switch (s.Mode)
+    {
+      case KeyMode::Choose:
+        this->SetNumber(s.Name, static_cast<double>(up - s.KeysUp));
+        break;
+      case KeyMode::Add:
+      {
+        // Rounded to the step, so that repeated presses stay on the grid.
+        const double v = this->GetNumber(s.Name) + (up ? s.Step : -s.Step);
+        this->SetNumber(s.Name, std::round(v / s.Step) * s.Step);
+        break;
+      }
+      case KeyMode::Multiply:
+        this->SetNumber(s.Name, this->GetNumber(s.Name) * (up ? s.Step : 1.0 / s.Step));
+        break;
+      case KeyMode::Toggle:
+        if (s.Type == Kind::Flag)
+        {
+          this->SetFlag(s.Name, !this->GetFlag(s.Name));
+        }
+        break;
+      default:
+        break;
+    }
+    return s.Name;
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTyndallOptions::GetKeyHelp()
+{
+  std::ostringstream os;
+  for (const Spec& s : kOptions)
+  {
+    if (!(s.Programs & this->Program) || s.Mode == KeyMode::None)
+    {
+      continue;
+    }
+    std::string keys;
+    auto name = [](char c) { return c == '\033' ? std::string("Esc") : std::string(1, c); };
+    if (s.Mode == KeyMode::Choose)
+    {
+      keys = name(s.KeysUp[0]) + ".." + name(s.KeysUp[std::strlen(s.KeysUp) - 1]);
+    }
+    else
+    {
+      for (const char* k = s.KeysUp; *k; ++k)
+      {
+        keys += (keys.empty() ? "" : " or ") + name(*k);
+      }
+      for (const char* k = s.KeysDown; *k; ++k)
+      {
+        keys += (k == s.KeysDown ? " / " : " or ") + name(*k);
+      }
+    }
+    std::string what = s.Help;
+    if (s.Type != Kind::Action)
+    {
+      what = std::string(s.Mode == KeyMode::Toggle ? "toggle --" : "--") + s.Name + ": " + what;
+      if (s.Mode == KeyMode::Add || s.Mode == KeyMode::Multiply)
+      {
+        std::ostringstream step;
+        step << (s.Mode == KeyMode::Add ? " (+/- " : " (x / divide by ") << s.Step << ")";
+        what += step.str();
+      }
+      if (s.Mode == KeyMode::Choose)
+      {
+        std::string list = s.Choices;
+        std::replace(list.begin(), list.end(), '|', ' ');
+        what += " (" + list + ")";
+      }
+    }
+    Wrap(os, "  " + keys, what);
+  }
+  return os.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTyndallOptions::GetHelp(const char* description)
+{
+  std::ostringstream os;
+  os << (description ? description : "") << "\n";
+  std::vector<std::string> groups;
+  for (const Spec& s : kOptions)
+  {
+    if ((s.Programs & this->Program) && s.Type != Kind::Action &&
+      std::find(groups.begin(), groups.end(), s.Group) == groups.end())
+    {
+      groups.push_back(s.Group);
+    }
+  }
+  for (const std::string& group : groups)
+  {
+    os << group << ":\n";
+    for (const Spec& s : kOptions)
+    {
+      if (!(s.Programs & this->Program) || s.Type == Kind::Action || group != s.Group)
+      {
+        continue;
+      }
+      std::string left = std::string("  ") + (*s.Short ? std::string(s.Short) + ", " : "") +
+        "--" + s.Name + (*s.Metavar ? std::string(" ") + s.Metavar : "");
+      std::string text = s.Help;
+      if (s.Type == Kind::Choice)
+      {
+        std::string list = s.Choices;
+        std::replace(list.begin(), list.end(), '|', ' ');
+        text += ": " + list;
+      }
+      else if (s.Type == Kind::Integer || s.Type == Kind::Number || s.Type == Kind::Pair)
+      {
+        text += ", " + RangeText(s);
+      }
+      if (*s.Default)
+      {
+        text += std::string(" [") + s.Default + "]";
+      }
+      Wrap(os, left, text);
+    }
+    os << "\n";
+  }
+  if (this->Program == VIEWER)
+  {
+    os << "Keys:\n" << this->GetKeyHelp() << "\n";
+  }
+  return os.str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::ParseNumber(const std::string& text, double& value)
+{
+  return ParseStrict(text, false, value);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::ParseInteger(const std::string& text, int lo, int hi, int& value)
+{
+  double v = 0.0;
+  if (!ParseStrict(text, true, v) || v < lo || v > hi)
+  {
+    return false;
+  }
+  value = static_cast<int>(v);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Program: " << (this->Program == RENDER ? "RENDER" : "VIEWER") << "\n";
+  os << indent << "Input: " << this->Input << "\n";
+  for (const auto& value : this->Internals->Values)
+  {
+    os << indent << "--" << value.first;
+    for (double v : value.second.Numbers)
+    {
+      os << " " << v;
+    }
+    os << (value.second.Text.empty() ? "" : " ") << value.second.Text << "\n";
+  }
+  os << indent << "Lights: " << this->Internals->Lights.size() << "\n";
+}

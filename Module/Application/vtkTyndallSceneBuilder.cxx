@@ -1,0 +1,451 @@
+#include "vtkTyndallSceneBuilder.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkCosineNoiseSource.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkTransferFunctionFileReader.h"
+#include "vtkTransferFunctionPresets.h"
+#include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallOptions.h"
+#include "vtkVolume.h"
+#include "vtkVolumeFileReader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+vtkStandardNewMacro(vtkTyndallSceneBuilder);
+vtkCxxSetObjectMacro(vtkTyndallSceneBuilder, Options, vtkTyndallOptions);
+
+namespace
+{
+// The default scene, in one place.
+constexpr double kCloudHalfWidth = 1.0;
+const double kCloudCameraPosition[3] = { 0.0, -0.6, 4.2 };
+const double kSunFrom[3] = { 1.0, 0.3, 0.5 };
+const double kSunColor[3] = { 1.0, 0.9, 0.75 };
+constexpr double kSunIntensity = 1.2;
+const double kSkyBottom[3] = { 0.55, 0.68, 0.82 };
+const double kSkyTop[3] = { 0.16, 0.32, 0.58 };
+constexpr double kViewAngle = 30.0;
+
+void DefaultCloudTransferFunction(vtkVolumeProperty* property)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(8.0, 0.5);
+  vtkNew<vtkColorTransferFunction> albedo;
+  albedo->AddRGBPoint(0.0, 0.95, 0.95, 0.95);
+  property->SetScalarOpacity(opacity);
+  property->SetColor(albedo);
+  property->SetScalarOpacityUnitDistance(0.05);
+}
+
+// Forwards an event (a source's progress or error) as the builder's.
+void Forward(vtkObject*, unsigned long event, void* clientData, void* callData)
+{
+  static_cast<vtkObject*>(clientData)->InvokeEvent(event, callData);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkTyndallSceneBuilder::vtkTyndallSceneBuilder() = default;
+
+//------------------------------------------------------------------------------
+vtkTyndallSceneBuilder::~vtkTyndallSceneBuilder()
+{
+  this->SetOptions(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkTyndallSceneBuilder::GetImage()
+{
+  return this->Image;
+}
+vtkTransmittanceVolumeMapper* vtkTyndallSceneBuilder::GetMapper()
+{
+  return this->Mapper;
+}
+vtkParticipatingMediumProperty* vtkTyndallSceneBuilder::GetProperty()
+{
+  return this->Property;
+}
+vtkVolume* vtkTyndallSceneBuilder::GetVolume()
+{
+  return this->Volume;
+}
+vtkLight* vtkTyndallSceneBuilder::GetKeyLight()
+{
+  return this->KeyLight;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
+{
+  if (!this->Options || !renderer)
+  {
+    vtkErrorMacro(<< "Build: " << (renderer ? "no options" : "no renderer") << ".");
+    return false;
+  }
+  this->DefaultScene = !*this->Options->GetInput();
+  this->BadOptions = false;
+  // The defaults that depend on the scene become the options' values, so
+  // that the viewer's keys step from what is shown.
+  if (!this->Options->IsSet("anisotropy"))
+  {
+    this->Options->SetNumber("anisotropy", this->DefaultScene ? 0.3 : 0.0);
+  }
+  if (!this->Options->IsSet("ambient"))
+  {
+    this->Options->SetNumber("ambient", this->DefaultScene ? 0.45 : 0.25);
+  }
+  this->Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
+  this->Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
+  this->Volume = vtkSmartPointer<vtkVolume>::New();
+  // A transfer-function file is read before the (maybe slow) data.
+  if (!this->ReadTransferFunctionFile() || !this->LoadMedium() || !this->ChooseTransferFunction())
+  {
+    return false;
+  }
+  this->Property->SetInterpolationTypeToLinear();
+  this->Mapper->SetInputConnection(this->Source->GetOutputPort());
+  this->Volume->SetMapper(this->Mapper);
+  this->Volume->SetProperty(this->Property);
+  this->ApplyOptions();
+
+  renderer->AddVolume(this->Volume);
+  renderer->AutomaticLightCreationOff();
+  this->SetUpBackground(renderer);
+  if (!this->SetUpCamera(renderer))
+  {
+    return false;
+  }
+  this->SetUpLights(renderer);
+  renderer->ResetCameraClippingRange();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::Run(vtkAlgorithm* source)
+{
+  // The source's progress and errors are the builder's; its executive's
+  // errors ("returned failure for request") only repeat them.
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetCallback(Forward);
+  forward->SetClientData(this);
+  vtkNew<vtkCallbackCommand> quiet;
+  const unsigned long progressTag = source->AddObserver(vtkCommand::ProgressEvent, forward);
+  const unsigned long errorTag = source->AddObserver(vtkCommand::ErrorEvent, forward);
+  const unsigned long executiveTag =
+    source->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
+  source->Update();
+  source->RemoveObserver(progressTag);
+  source->RemoveObserver(errorTag);
+  source->GetExecutive()->RemoveObserver(executiveTag);
+  this->Source = source;
+  this->Image = vtkImageData::SafeDownCast(source->GetOutputDataObject(0));
+  return this->Image && this->Image->GetNumberOfPoints() > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::LoadMedium()
+{
+  vtkTyndallOptions* o = this->Options;
+  if (this->DefaultScene)
+  {
+    const int n = static_cast<int>(o->GetNumber("resolution"));
+    vtkNew<vtkCosineNoiseSource> cloud;
+    cloud->SetWholeExtent(0, n - 1, 0, n - 1, 0, n - 1);
+    const double spacing = 2.0 * kCloudHalfWidth / (n - 1);
+    cloud->SetSpacing(spacing, spacing, spacing);
+    this->ProgressLabel = "cloud: " + std::to_string(n) + "^3 voxels";
+    return this->Run(cloud);
+  }
+  vtkNew<vtkVolumeFileReader> reader;
+  reader->SetFileName(o->GetInput());
+  if (o->IsSet("grid"))
+  {
+    reader->SetGridName(o->GetText("grid"));
+  }
+  if (o->IsSet("component"))
+  {
+    reader->SetComponent(static_cast<int>(o->GetNumber("component")));
+  }
+  this->ProgressLabel = std::string("loading ") + o->GetInput();
+  // The reader reports its own error (one line starting with the path).
+  return this->Run(reader);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::ReadTransferFunctionFile()
+{
+  vtkTyndallOptions* o = this->Options;
+  this->TransferFunctionFile = nullptr;
+  if (!o->IsSet("transfer-function"))
+  {
+    return true;
+  }
+  this->TransferFunctionFile = vtkSmartPointer<vtkTransferFunctionFileReader>::New();
+  this->TransferFunctionFile->SetFileName(o->GetText("transfer-function"));
+  // Its errors (file and line) are the builder's.
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback(Forward);
+  this->TransferFunctionFile->AddObserver(vtkCommand::ErrorEvent, forward);
+  return this->TransferFunctionFile->Read();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::ChooseTransferFunction()
+{
+  vtkTyndallOptions* o = this->Options;
+  if (this->TransferFunctionFile)
+  {
+    this->TransferFunctionFile->Apply(this->Property);
+    this->TransferFunctionDescription = std::string("file ") + o->GetText("transfer-function");
+    return true;
+  }
+  if (o->IsSet("preset") || !this->DefaultScene)
+  {
+    std::string preset = o->GetText("preset");
+    const bool guessed = preset.empty();
+    if (guessed)
+    {
+      const char* guess = vtkTransferFunctionPresets::GuessPreset(this->Image);
+      preset = guess ? guess : "";
+    }
+    if (preset.empty() ||
+      !vtkTransferFunctionPresets::ApplyToImage(preset.c_str(), this->Property, this->Image))
+    {
+      vtkErrorMacro(<< "cannot apply the preset '" << preset << "'");
+      return false;
+    }
+    this->TransferFunctionDescription = "preset " + preset + (guessed ? " (guessed)" : "");
+    return true;
+  }
+  DefaultCloudTransferFunction(this->Property);
+  this->TransferFunctionDescription = "white cloud";
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyOptions()
+{
+  vtkTyndallOptions* o = this->Options;
+  if (!o || !this->Mapper || !this->Property)
+  {
+    return;
+  }
+  vtkTransmittanceVolumeMapper* mapper = this->Mapper;
+  vtkParticipatingMediumProperty* medium = this->Property;
+  mapper->SetTransmittanceMethod(o->GetChoice("method"));
+  mapper->SetNumberOfCoefficients(static_cast<int>(o->GetNumber("coefficients")));
+  mapper->SetTransmittanceMapSize(static_cast<int>(o->GetNumber("map-size")));
+  mapper->SetLightSampleCount(static_cast<int>(o->GetNumber("light-samples")));
+  mapper->SetSampleDistance(o->GetNumber("sample-distance"));
+  mapper->SetAdaptiveThreshold(o->GetNumber("adaptive-threshold"));
+  mapper->SetJitter(!o->GetFlag("no-jitter"));
+  medium->SetScatteringModel(o->GetChoice("model"));
+  medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
+  medium->SetAmbientIntensity(o->GetNumber("ambient"));
+  medium->SetDensityScale(o->GetNumber("density-scale"));
+  medium->SetLightScale(o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
+  medium->SetEmissionScale(o->GetNumber("emission-scale"));
+  if (medium->GetEmissionScale() > 0.0 && !medium->GetEmissionColor())
+  {
+    // The file's emission lines, else the colour.
+    const bool fromFile = this->TransferFunctionFile && this->TransferFunctionFile->GetHasEmission();
+    medium->SetEmissionColor(
+      fromFile ? this->TransferFunctionFile->GetEmission() : medium->GetRGBTransferFunction());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::SetUpBackground(vtkRenderer* renderer)
+{
+  vtkTyndallOptions* o = this->Options;
+  const double black[3] = { 0.0, 0.0, 0.0 };
+  renderer->SetGradientBackground(this->DefaultScene);
+  renderer->SetBackground(this->DefaultScene ? kSkyBottom : black);
+  renderer->SetBackground2(kSkyTop);
+  double color[3];
+  if (o->IsSet("background"))
+  {
+    o->GetVector("background", color);
+    renderer->SetBackground(color);
+    renderer->SetGradientBackground(o->IsSet("background2"));
+  }
+  if (o->IsSet("background2"))
+  {
+    o->GetVector("background2", color);
+    renderer->SetBackground2(color);
+    renderer->GradientBackgroundOn();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::SetUpCamera(vtkRenderer* renderer)
+{
+  vtkTyndallOptions* o = this->Options;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetViewAngle(o->IsSet("view-angle") ? o->GetNumber("view-angle") : kViewAngle);
+  camera->SetUseHorizontalViewAngle(o->GetFlag("horizontal-view-angle"));
+  if (this->DefaultScene)
+  {
+    camera->SetPosition(kCloudCameraPosition);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+  }
+  else
+  {
+    // Fitted to the data (the image's aspect is needed for the fit).
+    double bounds[6];
+    this->Image->GetBounds(bounds);
+    renderer->SetAspect(o->GetNumber("size", 0) / o->GetNumber("size", 1), 1.0);
+    camera->SetPosition(0.0, 0.0, 1.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    renderer->ResetCamera(bounds);
+  }
+  double v[3];
+  if (o->IsSet("camera-position"))
+  {
+    o->GetVector("camera-position", v);
+    camera->SetPosition(v);
+  }
+  if (o->IsSet("focal-point"))
+  {
+    o->GetVector("focal-point", v);
+    camera->SetFocalPoint(v);
+  }
+  if (o->IsSet("view-up"))
+  {
+    o->GetVector("view-up", v);
+    camera->SetViewUp(v);
+  }
+  double position[3], focal[3], up[3], direction[3], side[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  camera->GetViewUp(up);
+  vtkMath::Subtract(focal, position, direction);
+  if (vtkMath::Norm(direction) < 1e-12)
+  {
+    vtkErrorMacro(<< "the camera position and the focal point coincide");
+    this->BadOptions = true;
+    return false;
+  }
+  vtkMath::Normalize(direction);
+  vtkMath::Normalize(up);
+  vtkMath::Cross(direction, up, side);
+  if (vtkMath::Norm(side) < 1e-6)
+  {
+    vtkErrorMacro(<< "the view-up vector is parallel to the view direction");
+    this->BadOptions = true;
+    return false;
+  }
+  // SetPosition/SetFocalPoint keep the old view-up: make it orthogonal when
+  // the options moved the camera (the built-in views keep their +y up, the
+  // axis the viewer's first orbit turns about).
+  if (o->IsSet("camera-position") || o->IsSet("focal-point") || o->IsSet("view-up"))
+  {
+    camera->OrthogonalizeViewUp();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::SetUpLights(vtkRenderer* renderer)
+{
+  vtkTyndallOptions* o = this->Options;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  this->KeyLight = nullptr;
+  double center[3];
+  this->Image->GetCenter(center);
+  if (o->GetNumberOfLights() == 0)
+  {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    double from[3];
+    if (this->DefaultScene)
+    {
+      // A low sun from the front right.
+      std::copy(kSunFrom, kSunFrom + 3, from);
+      light->SetColor(kSunColor[0], kSunColor[1], kSunColor[2]);
+      light->SetIntensity(kSunIntensity);
+    }
+    else
+    {
+      // A key light from the camera's upper right, in front of the data.
+      double position[3], focal[3], up[3], back[3], right[3];
+      camera->GetPosition(position);
+      camera->GetFocalPoint(focal);
+      camera->GetViewUp(up);
+      vtkMath::Subtract(position, focal, back);
+      vtkMath::Normalize(back);
+      vtkMath::Cross(up, back, right);
+      vtkMath::Normalize(right);
+      for (int k = 0; k < 3; ++k)
+      {
+        from[k] = 0.6 * right[k] + 0.6 * up[k] + 0.55 * back[k];
+      }
+      vtkMath::Normalize(from);
+      std::copy(focal, focal + 3, center);
+      light->SetColor(1.0, 1.0, 1.0);
+      light->SetIntensity(1.0);
+    }
+    light->SetFocalPoint(center);
+    light->SetPosition(center[0] + from[0], center[1] + from[1], center[2] + from[2]);
+    renderer->AddLight(light);
+    this->KeyLight = light;
+    return;
+  }
+  for (int l = 0; l < o->GetNumberOfLights(); ++l)
+  {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToSceneLight();
+    double v[3], color[3];
+    o->GetLightVector(l, v);
+    if (o->GetLightPositional(l))
+    {
+      // A point light: positional with a 90 degree cone (not a spot light),
+      // VTK's default attenuation (1, 0, 0): no fall-off.
+      light->SetPositional(true);
+      light->SetConeAngle(90.0);
+      light->SetPosition(v);
+      light->SetFocalPoint(center);
+    }
+    else
+    {
+      // VTK's directional lights shine from Position towards FocalPoint.
+      light->SetPositional(false);
+      light->SetFocalPoint(0.0, 0.0, 0.0);
+      light->SetPosition(-v[0], -v[1], -v[2]);
+    }
+    o->GetLightColor(l, color);
+    light->SetColor(color);
+    light->SetIntensity(o->GetLightIntensity(l));
+    renderer->AddLight(light);
+    this->KeyLight = this->KeyLight ? this->KeyLight : light;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Options: " << this->Options << "\n";
+  os << indent << "DefaultScene: " << this->DefaultScene << "\n";
+  os << indent << "TransferFunction: " << this->TransferFunctionDescription << "\n";
+}

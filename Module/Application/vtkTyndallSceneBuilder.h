@@ -1,0 +1,147 @@
+/**
+ * @class   vtkTyndallSceneBuilder
+ * @brief   builds the scene of Tyndall's programs from their options
+ *
+ * tyndall-render, tyndall-viewer and the Python examples are thin
+ * front-ends over this class and vtkTyndallOptions: Build() fills a
+ * vtkRenderer with what the options describe, by one set of rules:
+ *
+ * - the medium: without an input the built-in default scene, a procedural
+ *   cosine-noise cloud (vtkCosineNoiseSource, Resolution^3 voxels over
+ *   [-1, 1]^3); with one, the volume read by vtkVolumeFileReader;
+ * - the transfer function: a --transfer-function file
+ *   (vtkTransferFunctionFileReader), a --preset, or for data the guessed
+ *   preset (vtkTransferFunctionPresets::GuessPreset), each applied by
+ *   vtkTransferFunctionPresets::ApplyToImage(); the default scene's white
+ *   cloud otherwise (opacity 0.5 per 0.05 units at density 8, albedo 0.95);
+ * - the medium's and the mapper's settings (vtkParticipatingMediumProperty,
+ *   vtkTransmittanceVolumeMapper): the options, else the defaults: for the
+ *   default scene anisotropy 0.3 and ambient 0.45, for data 0 and 0.25;
+ *   adaptive ETM, 8 coefficients, 256^2 maps;
+ * - the camera: the default scene's fixed view (from (0, -0.6, 4.2) at the
+ *   origin, view angle 30), or a fit to the data's bounds looking down -z,
+ *   +y up; then --camera-position, --focal-point, --view-up, --view-angle;
+ * - the lights: the given ones; else the default scene's low sun from the
+ *   front right (warm white, intensity 1.2), or for data a white key light
+ *   from the camera's upper right in front of the data;
+ * - the background: the default scene's sky gradient, or black; then
+ *   --background and --background2.
+ *
+ * ApplyOptions() pushes the medium's and the mapper's settings again after
+ * the options changed (the viewer's keys), without reloading anything.
+ *
+ * Errors (an unreadable input or transfer-function file, a degenerate
+ * camera) are reported with vtkErrorMacro and Build() returns false.
+ * During Build() the loading of the medium fires ProgressEvent (call data:
+ * a double* in [0, 1]) with GetProgressLabel() saying what is loading.
+ *
+ * @sa vtkTyndallOptions
+ */
+
+#ifndef vtkTyndallSceneBuilder_h
+#define vtkTyndallSceneBuilder_h
+
+#include "TyndallApplicationModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <string> // For std::string
+
+class vtkAlgorithm;
+class vtkImageData;
+class vtkLight;
+class vtkParticipatingMediumProperty;
+class vtkRenderer;
+class vtkTransferFunctionFileReader;
+class vtkTransmittanceVolumeMapper;
+class vtkTyndallOptions;
+class vtkVolume;
+
+class TYNDALLAPPLICATION_EXPORT vtkTyndallSceneBuilder : public vtkObject
+{
+public:
+  static vtkTyndallSceneBuilder* New();
+  vtkTypeMacro(vtkTyndallSceneBuilder, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The options the scene is built from.
+   */
+  void SetOptions(vtkTyndallOptions* options);
+  vtkGetObjectMacro(Options, vtkTyndallOptions);
+  ///@}
+
+  /**
+   * Loads the medium and fills `renderer` (its volume, lights, camera and
+   * background; automatic light creation is turned off). False (with an
+   * error) when something cannot be used.
+   */
+  bool Build(vtkRenderer* renderer);
+
+  /**
+   * Sets the medium's and the mapper's settings from the options again.
+   */
+  void ApplyOptions();
+
+  ///@{
+  /**
+   * What Build() made (null before a successful Build()).
+   */
+  vtkImageData* GetImage();
+  vtkTransmittanceVolumeMapper* GetMapper();
+  vtkParticipatingMediumProperty* GetProperty();
+  vtkVolume* GetVolume();
+  /// The first light (the sun, the key light or the first given light).
+  vtkLight* GetKeyLight();
+  ///@}
+
+  /// Whether the built scene is the built-in default scene.
+  vtkGetMacro(DefaultScene, bool);
+
+  /**
+   * Whether the last Build() failed because the options contradict each
+   * other (a camera whose position and focal point coincide, a view-up
+   * along the view direction) rather than because an input could not be
+   * used: programs treat it as a bad command line.
+   */
+  vtkGetMacro(BadOptions, bool);
+
+  /// How the transfer function was chosen ("preset CT (guessed)", "file tf.txt", ...).
+  const char* GetTransferFunctionDescription() { return this->TransferFunctionDescription.c_str(); }
+
+  /// What is loading during a ProgressEvent ("cloud: 128^3 voxels", "loading FILE").
+  const char* GetProgressLabel() { return this->ProgressLabel.c_str(); }
+
+protected:
+  vtkTyndallSceneBuilder();
+  ~vtkTyndallSceneBuilder() override;
+
+  vtkTyndallOptions* Options = nullptr;
+  bool DefaultScene = true;
+  bool BadOptions = false;
+  std::string TransferFunctionDescription;
+  std::string ProgressLabel;
+
+private:
+  vtkTyndallSceneBuilder(const vtkTyndallSceneBuilder&) = delete;
+  void operator=(const vtkTyndallSceneBuilder&) = delete;
+
+  bool ReadTransferFunctionFile();
+  bool LoadMedium();
+  bool ChooseTransferFunction();
+  bool SetUpCamera(vtkRenderer* renderer);
+  void SetUpLights(vtkRenderer* renderer);
+  void SetUpBackground(vtkRenderer* renderer);
+  bool Run(vtkAlgorithm* source);
+
+  vtkSmartPointer<vtkAlgorithm> Source;
+  vtkSmartPointer<vtkImageData> Image;
+  vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
+  vtkSmartPointer<vtkParticipatingMediumProperty> Property;
+  vtkSmartPointer<vtkVolume> Volume;
+  vtkSmartPointer<vtkLight> KeyLight;
+  vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
+};
+
+#endif

@@ -1,0 +1,243 @@
+// vtkVolumeFileReader: one small volume written in every format VTK and
+// Tyndall can write (VTK XML, MetaImage, NIfTI, legacy VTK, OpenVDB) reads
+// back with the same values, an extent starting at 0 (world positions kept)
+// and its format in the field data; multi-component scalars need a
+// component; bad paths and files give one error line starting with the path
+// and an empty output; the shared sample volumes (when present) read with
+// the format their extension names.
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMetaImageWriter.h"
+#include "vtkNIFTIImageWriter.h"
+#include "vtkNew.h"
+#include "vtkOpenVDBImageWriter.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
+#include "vtkStructuredPointsWriter.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkVolumeFileReader.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << std::endl;
+    ++failures;
+  }
+}
+
+// A 6 x 5 x 4 image, extent starting at (2, 1, 0), values 10 i + j - k.
+vtkSmartPointer<vtkImageData> MakeImage(int components = 1)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(2, 7, 1, 5, 0, 3);
+  image->SetSpacing(0.5, 0.25, 1.0);
+  image->SetOrigin(1.0, -2.0, 0.5);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("density");
+  values->SetNumberOfComponents(components);
+  values->SetNumberOfTuples(6 * 5 * 4);
+  for (int k = 0, n = 0; k < 4; ++k)
+  {
+    for (int j = 0; j < 5; ++j)
+    {
+      for (int i = 0; i < 6; ++i, ++n)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          values->SetComponent(n, c, 10.0 * i + j - k + 100.0 * c);
+        }
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+std::string Format(vtkImageData* image)
+{
+  auto* array =
+    vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray("TyndallFormat"));
+  return array && array->GetNumberOfValues() ? array->GetValue(0) : "";
+}
+
+// Reads `path` and checks it against MakeImage() (component `component`).
+void CheckRead(
+  const std::string& path, const std::string& format, bool keepsOrigin, int component = -1)
+{
+  vtkNew<vtkVolumeFileReader> reader;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(path.c_str());
+  reader->SetComponent(component);
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  Check(!errors->GetError(), format + ": no error (" + errors->GetErrorMessage() + ")");
+  Check(Format(image) == format && reader->GetFormatName() == format, format + ": the format");
+  const int* extent = image->GetExtent();
+  Check(extent[0] == 0 && extent[1] == 5 && extent[2] == 0 && extent[3] == 4 && extent[4] == 0 &&
+      extent[5] == 3,
+    format + ": 6 x 5 x 4 points, extent from 0");
+  double first[3];
+  image->TransformIndexToPhysicalPoint(0, 0, 0, first);
+  // The first point of MakeImage() is at origin + spacing * (2, 1, 0).
+  Check(!keepsOrigin ||
+      (std::abs(first[0] - 2.0) < 1e-6 && std::abs(first[1] + 1.75) < 1e-6 &&
+        std::abs(first[2] - 0.5) < 1e-6),
+    format + ": the first point keeps its world position");
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  bool same =
+    scalars && scalars->GetNumberOfComponents() == 1 && scalars->GetNumberOfTuples() == 120;
+  const double offset = component > 0 ? 100.0 * component : 0.0;
+  for (int k = 0, n = 0; same && k < 4; ++k)
+  {
+    for (int j = 0; j < 5; ++j)
+    {
+      for (int i = 0; i < 6; ++i, ++n)
+      {
+        same = same && std::abs(scalars->GetComponent(n, 0) - (10.0 * i + j - k + offset)) < 1e-5;
+      }
+    }
+  }
+  Check(same, format + ": the values");
+}
+
+// Reading `path` fails with an error containing `text`, and an empty output.
+void CheckError(const std::string& path, const std::string& text, const std::string& what,
+  const char* grid = nullptr, int component = -1)
+{
+  vtkNew<vtkVolumeFileReader> reader;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(path.c_str());
+  reader->SetGridName(grid);
+  reader->SetComponent(component);
+  reader->Update();
+  const bool ok = errors->GetError() && errors->GetErrorMessage().find(text) != std::string::npos &&
+    reader->GetOutput()->GetNumberOfPoints() == 0;
+  if (!ok)
+  {
+    std::cerr << what << ": expected an error with '" << text << "', got '"
+              << errors->GetErrorMessage() << "'" << std::endl;
+  }
+  Check(ok, what);
+}
+}
+
+int TestVolumeFileReader(int, char*[])
+{
+  const std::string dir = "TestVolumeFileReader";
+  vtksys::SystemTools::MakeDirectory(dir);
+  auto image = MakeImage();
+  {
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(image);
+    w->SetFileName((dir + "/volume.vti").c_str());
+    w->Write();
+  }
+  {
+    vtkNew<vtkMetaImageWriter> w;
+    w->SetInputData(image);
+    w->SetFileName((dir + "/volume.mhd").c_str());
+    w->Write();
+  }
+  {
+    vtkNew<vtkNIFTIImageWriter> w;
+    w->SetInputData(image);
+    w->SetFileName((dir + "/volume.nii.gz").c_str());
+    w->Write();
+  }
+  {
+    vtkNew<vtkStructuredPointsWriter> w;
+    w->SetInputData(image);
+    w->SetFileName((dir + "/volume.vtk").c_str());
+    w->Write();
+  }
+  {
+    vtkNew<vtkOpenVDBImageWriter> w;
+    w->SetInputData(image);
+    w->SetFileName((dir + "/volume.vdb").c_str());
+    w->Write();
+  }
+  CheckRead(dir + "/volume.vti", "VTK XML", true);
+  CheckRead(dir + "/volume.mhd", "MetaImage", false);
+  CheckRead(dir + "/volume.nii.gz", "NIfTI", false);
+  CheckRead(dir + "/volume.vtk", "VTK legacy", false);
+  CheckRead(dir + "/volume.vdb", "OpenVDB", false);
+
+  // Multi-component scalars: refused, or one component kept.
+  {
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(MakeImage(3));
+    w->SetFileName((dir + "/rgb.vti").c_str());
+    w->Write();
+  }
+  CheckError(dir + "/rgb.vti", "have 3 components; choose one", "three components refused");
+  CheckRead(dir + "/rgb.vti", "VTK XML", true, 2);
+  CheckError(dir + "/rgb.vti", "component 3 requested", "a component out of range", nullptr, 3);
+
+  // Bad paths and files.
+  CheckError(dir + "/absent.vti", "absent.vti: no such file", "a missing file");
+  CheckError("", "no input path", "no path");
+  std::ofstream(dir + "/notes.txt") << "hello\n";
+  CheckError(
+    dir + "/notes.txt", "unknown volume format (extension '.txt')", "an unknown extension");
+  std::ofstream(dir + "/fake.vti") << "not xml\n";
+  CheckError(dir + "/fake.vti", "fake.vti: not a VTK XML file", "a file not of its format");
+  std::ofstream(dir + "/fake.mhd") << "garbage\n";
+  CheckError(dir + "/fake.mhd", "fake.mhd: ", "a bad MetaImage header");
+  CheckError(dir + "/volume.vti", "only meaningful for .vdb", "a grid name for a .vti", "density");
+  CheckError(dir, "none of the directory's", "a directory without DICOM files");
+  {
+    auto flat = vtkSmartPointer<vtkImageData>::New();
+    flat->SetDimensions(6, 5, 1);
+    flat->AllocateScalars(VTK_FLOAT, 1);
+    flat->GetPointData()->GetScalars()->Fill(1.0);
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(flat);
+    w->SetFileName((dir + "/flat.vti").c_str());
+    w->Write();
+  }
+  CheckError(dir + "/flat.vti", "at least 2 points along each axis", "a flat image");
+
+  // The shared samples, when present.
+  const std::string shared = TYNDALL_SHARED_DATA;
+  const struct
+  {
+    const char* File;
+    const char* Format;
+  } samples[] = { { "/volumes/HeadMRVolume.mhd", "MetaImage" },
+    { "/volumes/headsq/quarter.nhdr", "NRRD" }, { "/volumes/neghip.slc", "SLC" },
+    { "/volumes/ironProt.vtk", "VTK legacy" }, { "/vdb/smoke.vdb", "OpenVDB" } };
+  for (const auto& sample : samples)
+  {
+    const std::string path = shared + sample.File;
+    if (!vtksys::SystemTools::FileExists(path))
+    {
+      std::cout << "skipped (absent): " << path << std::endl;
+      continue;
+    }
+    vtkNew<vtkVolumeFileReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    Check(reader->GetOutput()->GetNumberOfPoints() > 1000 &&
+        Format(reader->GetOutput()) == sample.Format,
+      std::string(sample.File) + " reads as " + sample.Format);
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
