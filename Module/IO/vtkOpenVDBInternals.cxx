@@ -87,6 +87,19 @@ public:
       {
         this->Skip(numBytes, "a metadata value");
       }
+      else if (type == openvdb::BoolMetadata::staticTypeName())
+      {
+        // OpenVDB reads the byte straight into a bool.
+        this->Need(1, "a boolean metadata value");
+        uint8_t value = 0;
+        this->Is.read(reinterpret_cast<char*>(&value), 1);
+        if (value > 1 || numBytes != 1)
+        {
+          OPENVDB_THROW(openvdb::IoError,
+            "corrupted file: a boolean metadata value is " << int(value) << " (" << numBytes
+                                                           << " bytes), not 0 or 1");
+        }
+      }
       else if (type == openvdb::io::DelayedLoadMetadata::staticTypeName())
       {
         this->DelayedLoad(numBytes);
@@ -196,6 +209,39 @@ private:
   uint64_t FileSize;
 };
 
+// Checks the keys of a grid's root table. OpenVDB keys a root tile by the
+// origin the file states (it aligns only a child's own origin), so a damaged
+// file can hold a key off the root's grid; one near 2^31 overflows every
+// bounding box OpenVDB computes later (origin + 4095).
+template <class GridT>
+bool CheckRootKeysOf(const openvdb::GridBase& base)
+{
+  const GridT* grid = dynamic_cast<const GridT*>(&base);
+  if (!grid)
+  {
+    return false;
+  }
+  using RootT = typename GridT::TreeType::RootNodeType;
+  constexpr int32_t mask = int32_t(RootT::ChildNodeType::DIM) - 1;
+  for (auto it = grid->tree().root().cbeginChildAll(); it; ++it)
+  {
+    const openvdb::Coord key = it.getCoord();
+    if ((key.x() & mask) || (key.y() & mask) || (key.z() & mask))
+    {
+      OPENVDB_THROW(openvdb::IoError,
+        "corrupted file: a root " << (it.isChildNode() ? "child" : "tile") << " at " << key
+                                  << " is off the root's " << (mask + 1) << "-voxel grid");
+    }
+  }
+  return true;
+}
+
+void CheckRootKeys(const openvdb::GridBase& grid)
+{
+  CheckRootKeysOf<openvdb::FloatGrid>(grid) || CheckRootKeysOf<openvdb::DoubleGrid>(grid) ||
+    CheckRootKeysOf<openvdb::Vec3SGrid>(grid) || CheckRootKeysOf<openvdb::Vec3DGrid>(grid);
+}
+
 // Walks a grid's tree (topology, then buffers) as OpenVDB 10 reads it, for
 // files of format version 222 or later and trees of the standard 5-4-3
 // configuration, checking every length against the end of the grid's block
@@ -223,7 +269,20 @@ public:
     this->S.Skip(this->ValueSize, "the background value");
     const uint32_t numTiles = this->S.U32("the root's tile count");
     const uint32_t numChildren = this->S.U32("the root's child count");
-    this->S.Skip(uint64_t(numTiles) * (12 + this->ValueSize + 1), "the root's tiles");
+    // Each tile: origin, value, active flag.
+    this->S.Need(uint64_t(numTiles) * (12 + this->ValueSize + 1), "the root's tiles");
+    for (uint32_t n = 0; n < numTiles; ++n)
+    {
+      this->S.Skip(12 + this->ValueSize, "a root tile's origin and value");
+      uint8_t active = 0;
+      this->Is.read(reinterpret_cast<char*>(&active), 1);
+      if (active > 1)
+      {
+        // OpenVDB reads the byte straight into a bool.
+        OPENVDB_THROW(openvdb::IoError,
+          "corrupted file: a root tile's active flag is " << int(active) << ", not 0 or 1");
+      }
+    }
     // The smallest child (two 4096-byte masks) bounds the count.
     this->S.Need(uint64_t(numChildren) * 8204, "the root's children");
     std::map<openvdb::Coord, Upper> children; // the root's table: later entries win
@@ -339,10 +398,12 @@ private:
       this->Is.read(reinterpret_cast<char*>(&stated), 8);
       if (stated <= 0)
       {
-        if (stated == std::numeric_limits<int64_t>::min() || uint64_t(-stated) != bytes)
+        // |stated| computed unsigned: -INT64_MIN does not fit in int64_t.
+        const uint64_t magnitude = uint64_t(0) - uint64_t(stated);
+        if (magnitude != bytes)
         {
           OPENVDB_THROW(openvdb::IoError,
-            "corrupted file: an uncompressed chunk states " << -stated << " bytes where " << bytes
+            "corrupted file: an uncompressed chunk states " << magnitude << " bytes where " << bytes
                                                             << " are expected");
         }
         this->S.Skip(bytes, "an uncompressed chunk");
@@ -666,7 +727,9 @@ openvdb::GridBase::Ptr SafeFile::ReadGrid(const std::string& name)
   {
     if (this->Descriptors[i].gridName() == name)
     {
-      return this->ReadGrid(static_cast<int>(i));
+      openvdb::GridBase::Ptr grid = this->ReadGrid(static_cast<int>(i));
+      CheckRootKeys(*grid);
+      return grid;
     }
   }
   OPENVDB_THROW(openvdb::KeyError, "no grid named \"" << name << "\"");

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 using namespace tyndall_vdb_test;
@@ -235,6 +236,12 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
       WriteBytes(dir + "/zip-overflow.vdb", zip);
       ExpectFailure(dir + "/zip-overflow.vdb", "states 4096 bytes where 2048 are expected",
         "a raw chunk longer than its buffer");
+      // The most negative size (the fuzzer's; its negation overflows int64).
+      const int64_t lowest = std::numeric_limits<int64_t>::min();
+      std::memcpy(&zip[at], &lowest, 8);
+      WriteBytes(dir + "/zip-lowest.vdb", zip);
+      ExpectFailure(dir + "/zip-lowest.vdb", "states 9223372036854775808 bytes where 2048",
+        "a raw chunk stating -2^63 bytes");
     }
   }
   // (2) A Blosc chunk whose header claims more compressed bytes than the
@@ -374,6 +381,46 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
     sheared->setTransform(openvdb::math::Transform::createLinearTransform(m));
     WriteGrids(dir + "/sheared.vdb", { sheared });
     ExpectFailure(dir + "/sheared.vdb", "sheared transform", "a sheared transform");
+  }
+
+  // Damage OpenVDB itself does not notice (the fuzzer's findings): a root
+  // tile keyed off the root's 4096-voxel grid near 2^31 (OpenVDB's bounding
+  // boxes then overflow int32), a tile's active flag and a boolean metadata
+  // value of 3 (OpenVDB reads the byte straight into a bool).
+  {
+    openvdb::FloatGrid::Ptr grid = MakeGrid("density");
+    grid->tree().addTile(3, openvdb::Coord(12288, 8192, -4096), 0.5f, false);
+    grid->insertMeta("tyndall_flag", openvdb::BoolMetadata(true));
+    WriteGrids(dir + "/keys.vdb", { grid });
+    const std::vector<char> bytes = ReadBytes(dir + "/keys.vdb");
+    const std::string all(bytes.begin(), bytes.end());
+    const int32_t key[3] = { 12288, 8192, -4096 };
+    const size_t at = all.find(std::string(reinterpret_cast<const char*>(key), 12));
+    Check(at != std::string::npos, "found the root tile");
+    if (at != std::string::npos)
+    {
+      std::vector<char> corrupt = bytes;
+      const int32_t top = std::numeric_limits<int32_t>::max();
+      std::memcpy(&corrupt[at], &top, 4);
+      WriteBytes(dir + "/key-top.vdb", corrupt);
+      ExpectFailure(dir + "/key-top.vdb", "is off the root's 4096-voxel grid",
+        "a root tile keyed at x = 2^31 - 1");
+      corrupt = bytes;
+      corrupt[at + 12 + 4] = 3; // after the origin and the float value
+      WriteBytes(dir + "/tile-flag.vdb", corrupt);
+      ExpectFailure(dir + "/tile-flag.vdb", "active flag is 3", "a tile's active flag of 3");
+    }
+    const std::string name = "tyndall_flag";
+    const size_t meta = all.find(name + std::string("\x04\0\0\0bool\x01\0\0\0\x01", 13));
+    Check(meta != std::string::npos, "found the boolean metadata");
+    if (meta != std::string::npos)
+    {
+      std::vector<char> corrupt = bytes;
+      corrupt[meta + name.size() + 12] = 3;
+      WriteBytes(dir + "/meta-flag.vdb", corrupt);
+      ExpectFailure(
+        dir + "/meta-flag.vdb", "boolean metadata value is 3", "a boolean metadata value of 3");
+    }
   }
 
   // Absurd dimensions, and dimensions too large for the memory limit (an

@@ -5,6 +5,14 @@
 // errors reported through vtkErrorMacro are the expected outcome for most
 // inputs.
 //
+// The target runs on one thread (VTK's SMP tools and oneTBB, which OpenVDB
+// uses): coverage gathered on worker threads varies from run to run, and
+// with it the inputs libFuzzer derives, so a fixed -seed would not give the
+// same test twice. The reader's memory limit is 8 MiB: large enough for every
+// seed and for the limit's own refusal path, small enough that an input
+// describing a 60 MB box does not take the instrumented build half a minute
+// (libFuzzer would report that as a hang; the release reader takes 0.05 s).
+//
 // With TYNDALL_FUZZ_WRITE_SEEDS=DIR in the environment, the target first
 // writes a few small valid .vdb files into DIR (fog, uncompressed, several
 // grid types, a level set, half precision) to seed the corpus.
@@ -12,10 +20,12 @@
 #include "vtkObject.h"
 #include "vtkOpenVDBImageReader.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetSphere.h>
+#include <tbb/global_control.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -162,6 +172,20 @@ void RemoveScratch()
   std::remove(scratch.c_str());
 }
 
+// OpenVDB writes a random UUID into every file header (21 bytes in, 36
+// characters); a fixed one makes the seeds, and so the whole run, the same
+// every time.
+void FixUuid(const std::string& path)
+{
+  std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+  char header[57] = {};
+  if (file.read(header, sizeof(header)) && header[21 + 8] == '-' && header[21 + 35] != '-')
+  {
+    file.seekp(21);
+    file.write("00000000-0000-4000-8000-000000000000", 36);
+  }
+}
+
 void WriteSeeds(const std::string& dir)
 {
   openvdb::FloatGrid::Ptr fog = openvdb::FloatGrid::create(0.0f);
@@ -217,16 +241,27 @@ void WriteSeeds(const std::string& dir)
     openvdb::io::File file(dir + "/seed-half.vdb");
     file.write(openvdb::GridPtrVec{ half });
   }
+  for (const char* name : { "fog", "uncompressed", "multi", "levelset", "half" })
+  {
+    FixUuid(dir + "/seed-" + name + ".vdb");
+  }
 }
 }
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
+  static tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  vtkSMPTools::SetBackend("Sequential");
   openvdb::initialize();
   vtkObject::GlobalWarningDisplayOff(); // errors are expected; keep the log short
+  // TYNDALL_FUZZ_SCRATCH names the scratch file (the test gives one of its
+  // own, the same every run: the name appears in the reader's messages, and a
+  // name that changes changes the coverage); otherwise one in TMPDIR.
+  const char* fixed = std::getenv("TYNDALL_FUZZ_SCRATCH");
   const char* tmp = std::getenv("TMPDIR");
-  scratch = std::string(tmp && *tmp ? tmp : "/tmp") + "/tyndall-fuzz-openvdb-" +
-    std::to_string(static_cast<long>(getpid())) + ".vdb";
+  scratch = fixed && *fixed ? std::string(fixed)
+                            : std::string(tmp && *tmp ? tmp : "/tmp") + "/tyndall-fuzz-openvdb-" +
+      std::to_string(static_cast<long>(getpid())) + ".vdb";
   std::atexit(RemoveScratch);
   if (const char* seeds = std::getenv("TYNDALL_FUZZ_WRITE_SEEDS"))
   {
@@ -243,7 +278,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   vtkOpenVDBImageReader* reader = vtkOpenVDBImageReader::New();
   reader->SetFileName(scratch.c_str());
-  reader->SetMemoryLimit(256); // absurd boxes must be refused, not allocated
+  reader->SetMemoryLimit(8); // absurd boxes must be refused, not allocated
   reader->SetConvertLevelSetToFog(size > 8 && (data[8] & 1));
   reader->UpdateInformation();
   for (int i = 0; i < reader->GetNumberOfGrids(); ++i)
