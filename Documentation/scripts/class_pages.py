@@ -1,6 +1,7 @@
 """Writes Documentation/classes/<Class>.md, one page per public Tyndall
 class, from the Doxygen comments of Module/*/vtk*.h: the class comment, then
-every documented public method or parameter group. Run from the repository
+every documented public method or parameter group. Internal classes (their
+comment says "Internal to Tyndall::...") are left out. Run from the repository
 root after changing a header:
 
     python3 Documentation/scripts/class_pages.py
@@ -29,8 +30,9 @@ def page(header):
     name = os.path.splitext(os.path.basename(header))[0]
     module = os.path.basename(os.path.dirname(header))
     head = re.search(r"/\*\*(.*?)\*/", text, re.S)
-    if not head or "@class" not in head.group(1):
-        return None
+    internal = head and re.search(r"[Ii]nternal to\s+Tyndall::", re.sub(r"\s*\*\s*", " ", head.group(1)))
+    if not head or "@class" not in head.group(1) or internal:
+        return None  # not a class, or an internal one (Documentation/architecture.md)
     body = clean(head.group(1))
     body = re.sub(r"@class\s+\S+\s*\n?", "", body)
     brief = re.search(r"@brief\s+(.*)", body)
@@ -61,6 +63,8 @@ def page(header):
 
 def main():
     os.makedirs(OUT, exist_ok=True)
+    for old in glob.glob(os.path.join(OUT, "vtk*.md")):
+        os.remove(old)
     index = ["# Tyndall's classes", "",
              "One page per public class, generated from the headers' Doxygen comments by "
              "`Documentation/scripts/class_pages.py`.", ""]

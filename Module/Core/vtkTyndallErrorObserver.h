@@ -2,8 +2,9 @@
  * @class   vtkTyndallErrorObserver
  * @brief   collects the error messages of VTK objects as one-line texts, for programs
  *
- * Tyndall's programs report a failure as one line on stderr. Watch() an
- * object and its vtkErrorMacro messages ("ERROR: In file, line N\nclass
+ * Tyndall's programs report a failure as one line on stderr, and
+ * vtkVolumeFileReader reports an inner reader's failure as its own. Watch()
+ * an object and its vtkErrorMacro messages ("ERROR: In file, line N\nclass
  * (0x...): text\n\n") are kept as "text" (GetMessages()) instead of being
  * printed. Not wrapped (Python has its own error handling).
  */
@@ -11,13 +12,13 @@
 #ifndef vtkTyndallErrorObserver_h
 #define vtkTyndallErrorObserver_h
 
-#include "TyndallApplicationModule.h" // For export macro
+#include "TyndallCoreModule.h" // For export macro
 #include "vtkCommand.h"
 
 #include <string> // For std::string
 #include <vector> // For std::vector
 
-class TYNDALLAPPLICATION_EXPORT vtkTyndallErrorObserver : public vtkCommand
+class TYNDALLCORE_EXPORT vtkTyndallErrorObserver : public vtkCommand
 {
 public:
   static vtkTyndallErrorObserver* New();

@@ -1,5 +1,6 @@
 #include "vtkVolumeFileReader.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDICOMImageReader.h"
@@ -23,6 +24,7 @@
 #include "vtkSLCReader.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkTyndallErrorObserver.h"
 #include "vtkXMLImageDataReader.h"
 #include "vtksys/Directory.hxx"
 #include "vtksys/SystemTools.hxx"
@@ -30,7 +32,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
-#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -38,54 +39,6 @@ vtkStandardNewMacro(vtkVolumeFileReader);
 
 namespace
 {
-// Collects an inner reader's error messages (instead of printing them) and
-// forwards its progress.
-class InnerObserver : public vtkCommand
-{
-public:
-  static InnerObserver* New() { return new InnerObserver; }
-  void Execute(vtkObject*, unsigned long event, void* callData) override
-  {
-    if (event == vtkCommand::ProgressEvent)
-    {
-      if (this->Progress && callData)
-      {
-        this->Progress(*static_cast<double*>(callData));
-      }
-      return;
-    }
-    if (event == vtkCommand::ErrorEvent && callData)
-    {
-      this->Errors.push_back(Simplify(static_cast<const char*>(callData)));
-    }
-  }
-
-  // VTK's messages read "ERROR: In file, line N\nclass (0x...): text\n\n":
-  // keep "text".
-  static std::string Simplify(std::string message)
-  {
-    const auto newline = message.find('\n');
-    if (message.rfind("ERROR: In ", 0) == 0 && newline != std::string::npos)
-    {
-      message = message.substr(newline + 1);
-      const auto colon = message.find("): ");
-      if (colon != std::string::npos)
-      {
-        message = message.substr(colon + 3);
-      }
-    }
-    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
-    {
-      message.pop_back();
-    }
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    return message;
-  }
-
-  std::vector<std::string> Errors;
-  std::function<void(double)> Progress;
-};
-
 std::string Lower(std::string text)
 {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -313,7 +266,7 @@ bool vtkVolumeFileReader::ReadDirectory(const std::string& path)
   vtkNew<vtkDICOMImageReader> reader;
   // Files that are not DICOM (a DICOMDIR, notes) are skipped with a warning
   // each: keep them quiet.
-  vtkNew<InnerObserver> quiet;
+  vtkNew<vtkTyndallErrorObserver> quiet;
   reader->AddObserver(vtkCommand::WarningEvent, quiet);
   reader->SetDirectoryName(path.c_str());
   if (!this->RunReader(reader, path, "DICOM"))
@@ -419,14 +372,14 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
   {
     vtkNew<vtkDataSetReader> reader;
     reader->SetFileName(path.c_str());
-    vtkNew<InnerObserver> quiet; // ReadOutputType reports errors of its own
-    reader->AddObserver(vtkCommand::ErrorEvent, quiet);
+    vtkNew<vtkTyndallErrorObserver> quiet; // ReadOutputType reports errors of its own
+    quiet->Watch(reader);
     const int type = reader->ReadOutputType();
     reader->RemoveObserver(quiet);
     if (type < 0)
     {
       this->Error = path + ": not a legacy VTK data file" +
-        (quiet->Errors.empty() ? std::string() : " (" + quiet->Errors.front() + ")");
+        (quiet->HasErrors() ? " (" + quiet->GetMessages().front() + ")" : std::string());
       return false;
     }
     if (type != VTK_STRUCTURED_POINTS && type != VTK_IMAGE_DATA)
@@ -450,19 +403,24 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
 bool vtkVolumeFileReader::RunReader(
   vtkAlgorithm* reader, const std::string& path, const char* format)
 {
-  vtkNew<InnerObserver> observer;
-  observer->Progress = [this](double p) { this->UpdateProgress(p); };
-  reader->AddObserver(vtkCommand::ErrorEvent, observer);
-  reader->AddObserver(vtkCommand::ProgressEvent, observer);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
+  // The inner reader's errors become this reader's one line; its progress is ours.
+  vtkNew<vtkTyndallErrorObserver> errors;
+  errors->Watch(reader);
+  errors->Watch(reader->GetExecutive());
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(this);
+  progress->SetCallback([](vtkObject*, unsigned long, void* self, void* fraction)
+    { static_cast<vtkVolumeFileReader*>(self)->UpdateProgress(*static_cast<double*>(fraction)); });
+  reader->AddObserver(vtkCommand::ProgressEvent, progress);
   reader->Update();
-  reader->RemoveObserver(observer);
-  reader->GetExecutive()->RemoveObserver(observer);
+  reader->RemoveObserver(errors);
+  reader->RemoveObserver(progress);
+  reader->GetExecutive()->RemoveObserver(errors);
 
   vtkDataObject* output = reader->GetOutputDataObject(0);
-  if (!observer->Errors.empty())
+  if (errors->HasErrors())
   {
-    this->Error = path + ": " + observer->Errors.front();
+    this->Error = path + ": " + errors->GetMessages().front();
     return false;
   }
   auto* image = vtkImageData::SafeDownCast(output);

@@ -117,6 +117,21 @@ public:
   vtkGetMacro(LightStepSize, double);
   ///@}
 
+  /**
+   * Renders `volume` as seen by `renderer`'s active camera and lights into a
+   * width x height image (each in [1, 16384]). Returns the image, owned by
+   * this object and valid until the next Render() (see the class
+   * description for its arrays), or nullptr on bad input (with an error) or
+   * when aborted.
+   */
+  vtkImageData* Render(vtkRenderer* renderer, vtkVolume* volume, int width, int height);
+
+  /**
+   * The image of the last successful Render(); empty before one and after a
+   * failed or aborted one.
+   */
+  vtkImageData* GetOutput();
+
   ///@{
   /**
    * Camera rays stop when their transmittance T_v, and shadow rays when their
@@ -139,26 +154,6 @@ public:
   vtkBooleanMacro(AbortExecute, bool);
   ///@}
 
-  /**
-   * Progress of the current render, in [0, 1].
-   */
-  vtkGetMacro(Progress, double);
-
-  /**
-   * Renders `volume` as seen by `renderer`'s active camera and lights into a
-   * width x height image (each in [1, 16384]). Returns the image, owned by
-   * this object and valid until the next Render() (see the class
-   * description for its arrays), or nullptr on bad input (with an error) or
-   * when aborted.
-   */
-  vtkImageData* Render(vtkRenderer* renderer, vtkVolume* volume, int width, int height);
-
-  /**
-   * The image of the last successful Render(); empty before one and after a
-   * failed or aborted one.
-   */
-  vtkImageData* GetOutput();
-
   ///@{
   /**
    * Composites the last render over a constant background colour (by default
@@ -172,6 +167,11 @@ public:
   vtkImageData* Composite();
   vtkImageData* Composite(const double background[3]);
   ///@}
+
+  /**
+   * Progress of the current render, in [0, 1].
+   */
+  vtkGetMacro(Progress, double);
 
   ///@{
   /**
