@@ -92,16 +92,22 @@ double vtkTransmittanceFrame::GetStepLength() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceFrame::HasMissingData() const
+{
+  return this->Textures && this->Textures->GetValidityTexture() != nullptr;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
 {
   const vtkTyndallTransferTable& table = this->Medium->GetTable();
   const int volumeUnit = this->Textures->GetVolumeTexture()->GetTextureUnit();
-  vtkTextureObject* validity = this->Textures->GetValidityTexture();
   program->SetUniformi("volumeTexture", volumeUnit);
-  // Without NaN no validity texture is bound: point the sampler at the
-  // volume's unit (same sampler type), where it is never read.
-  program->SetUniformi("validityTexture", validity ? validity->GetTextureUnit() : volumeUnit);
-  program->SetUniformi("hasMissing", validity ? 1 : 0);
+  if (vtkTextureObject* validity = this->Textures->GetValidityTexture())
+  {
+    // Declared only by the missing-data variant (HasMissingData()).
+    program->SetUniformi("validityTexture", validity->GetTextureUnit());
+  }
   program->SetUniformi("transferTexture", this->Textures->GetTransferTexture()->GetTextureUnit());
   program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
   program->SetUniform3f("volumeTexScale", this->Textures->GetTextureScale());

@@ -68,6 +68,12 @@ public:
   /// Sets the shared uniforms (medium, table, light frusta) on `program`.
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
+  /**
+   * Whether the medium has missing data (a validity texture): the shaders'
+   * TYNDALL_MISSING_DATA variant (vtkTransmittanceShaderSource).
+   */
+  bool HasMissingData() const;
+
   /// Whether some light uses a map method.
   bool NeedsMaps() const;
 

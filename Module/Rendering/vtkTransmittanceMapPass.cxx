@@ -6,7 +6,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -134,38 +133,24 @@ bool vtkTransmittanceMapPass::Allocate(const vtkTransmittanceFrame& frame, vtkOb
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceMapPass::ReadyProgram(const vtkTransmittanceFrame& frame)
+vtkShaderProgram* vtkTransmittanceMapPass::ReadyProgram(const vtkTransmittanceFrame& frame)
 {
-  std::string fs =
-    vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::MAP_BUILD);
+  std::string fs = vtkTransmittanceShaderSource::GetFragmentShader(
+    vtkTransmittanceShaderSource::MAP_BUILD, frame.HasMissingData());
   vtkShaderProgram::Substitute(
     fs, "//TYNDALL::MapOutputs", MapOutputs(frame.Layers, frame.BoundsLayer));
-  if (!this->Quad || fs != this->QuadSource)
-  {
-    if (this->Quad)
-    {
-      this->Quad->ReleaseGraphicsResources(frame.Window);
-    }
-    this->Quad.reset(new vtkOpenGLQuadHelper(frame.Window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
-    this->QuadSource = fs;
-  }
-  else
-  {
-    frame.Window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  return this->Quad->Program && this->Quad->Program->GetCompiled();
+  return this->Quad.Ready(frame.Window, fs);
 }
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObject* reporter)
 {
-  if (!this->ReadyProgram(frame))
+  vtkShaderProgram* program = this->ReadyProgram(frame);
+  if (!program)
   {
     vtkErrorWithObjectMacro(reporter, << "The transmittance-map shader did not compile.");
     return false;
   }
-  vtkShaderProgram* program = this->Quad->Program;
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   frame.SetMediumUniforms(program);
   program->SetUniformi("method", s.Method);
@@ -206,7 +191,7 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
     if (complete)
     {
       program->SetUniformi("lightIndex", l);
-      this->Quad->Render();
+      this->Quad.Render();
     }
     // vtkOpenGLFramebufferObject keeps an attachment of the same texture
     // even for another slice: detach before the next light's slices.
@@ -291,14 +276,9 @@ void vtkTransmittanceMapPass::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(window);
-  }
+  this->Quad.Release(window);
   this->MapTexture = nullptr;
   this->Framebuffer = nullptr;
-  this->Quad.reset();
-  this->QuadSource.clear();
   this->BuiltKey.clear();
   this->Slices = this->Size = 0;
 }

@@ -22,15 +22,14 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkSmartPointer.h"            // For vtkSmartPointer
+#include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
 
-#include <memory> // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkImageData;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
 class vtkWindow;
@@ -78,13 +77,12 @@ private:
 
   std::vector<double> Key(const vtkTransmittanceFrame& frame) const;
   bool Allocate(const vtkTransmittanceFrame& frame, vtkObject* reporter);
-  bool ReadyProgram(const vtkTransmittanceFrame& frame);
+  vtkShaderProgram* ReadyProgram(const vtkTransmittanceFrame& frame);
   bool Build(const vtkTransmittanceFrame& frame, vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> MapTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::string QuadSource;
+  vtkTransmittanceShaderQuad Quad;
   std::vector<double> BuiltKey;
   int Slices = 0;
   int Size = 0;

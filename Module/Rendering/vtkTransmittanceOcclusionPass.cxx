@@ -5,7 +5,6 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -117,14 +116,6 @@ bool vtkTransmittanceOcclusionPass::Render(const vtkTransmittanceFrame& frame, v
     vtkErrorWithObjectMacro(reporter, << "Could not allocate the light-space occlusion textures.");
     return false;
   }
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(frame.Window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::OCCLUSION)
-        .c_str(),
-      ""));
-  }
   vtkOpenGLState* state = frame.State;
   vtkOpenGLState::ScopedglViewport savedViewport(state);
   vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
@@ -177,9 +168,9 @@ bool vtkTransmittanceOcclusionPass::RenderLight(
   this->Framebuffer->AddColorAttachment(0, this->OcclusionTexture, light);
   this->Framebuffer->ActivateDrawBuffers(1);
   state->vtkglDisable(GL_DEPTH_TEST);
-  frame.Window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  vtkShaderProgram* program = this->Quad->Program;
-  const bool compiled = program && program->GetCompiled();
+  vtkShaderProgram* program = this->Quad.Ready(frame.Window,
+    vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::OCCLUSION));
+  const bool compiled = program != nullptr;
   if (compiled)
   {
     vtkTransmittanceScopedTextures textures({ this->LightDepthTexture });
@@ -188,7 +179,7 @@ bool vtkTransmittanceOcclusionPass::RenderLight(
     program->SetUniformi("lightIndex", light);
     program->SetUniformf("nearDistance", static_cast<float>(frustum->GetNearDistance()));
     program->SetUniformf("farDistance", static_cast<float>(frustum->GetFarDistance()));
-    this->Quad->Render();
+    this->Quad.Render();
   }
   else
   {
@@ -215,15 +206,11 @@ void vtkTransmittanceOcclusionPass::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(window);
-  }
+  this->Quad.Release(window);
   this->OcclusionTexture = nullptr;
   this->LightDepthTexture = nullptr;
   this->LightColorTexture = nullptr;
   this->Framebuffer = nullptr;
-  this->Quad.reset();
   this->Slices = this->Size = 0;
 }
 

@@ -18,14 +18,13 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkSmartPointer.h"            // For vtkSmartPointer
+#include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
 
-#include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
 class vtkActor;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
 class vtkWindow;
@@ -65,7 +64,7 @@ private:
   vtkSmartPointer<vtkTextureObject> LightDepthTexture;
   vtkSmartPointer<vtkTextureObject> LightColorTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkTransmittanceShaderQuad Quad;
   std::vector<vtkActor*> Actors; // the occluders, during Render()
   int Slices = 0;
   int Size = 0;

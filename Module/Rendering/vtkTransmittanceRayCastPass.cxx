@@ -4,7 +4,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -55,20 +54,10 @@ vtkTransmittanceRayCastPass::~vtkTransmittanceRayCastPass() = default;
 bool vtkTransmittanceRayCastPass::Render(
   const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkObject* reporter)
 {
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(frame.Window,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::RAY_CAST)
-        .c_str(),
-      ""));
-  }
-  else
-  {
-    frame.Window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program = this->Quad.Ready(frame.Window,
+    vtkTransmittanceShaderSource::GetFragmentShader(
+      vtkTransmittanceShaderSource::RAY_CAST, frame.HasMissingData()));
+  if (!program)
   {
     vtkErrorWithObjectMacro(reporter, << "The ray-casting shader did not compile.");
     return false;
@@ -126,7 +115,7 @@ bool vtkTransmittanceRayCastPass::Render(
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
-  this->Quad->Render();
+  this->Quad.Render();
   return true;
 }
 
@@ -195,11 +184,7 @@ void vtkTransmittanceRayCastPass::WarnAboutLoopLimit(
 //------------------------------------------------------------------------------
 void vtkTransmittanceRayCastPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(window);
-  }
-  this->Quad.reset();
+  this->Quad.Release(window);
   this->SoftwareRenderer = -1;
 }
 

@@ -21,10 +21,8 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
 
-#include <memory> // For std::unique_ptr
-
-class vtkOpenGLQuadHelper;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
@@ -63,7 +61,7 @@ private:
   void SetLightUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const;
   void WarnAboutLoopLimit(const vtkTransmittanceFrame& frame, vtkObject* reporter);
 
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkTransmittanceShaderQuad Quad;
   int SoftwareRenderer = -1; // llvmpipe: 1, other: 0, unknown: -1
   bool WarnedLoopLimit = false;
 };

@@ -16,7 +16,7 @@
 #include <sstream>
 
 //------------------------------------------------------------------------------
-std::string vtkTransmittanceShaderSource::GetConstants()
+std::string vtkTransmittanceShaderSource::GetConstants(bool missingData)
 {
   using M = vtkTransmittanceMapMath;
   std::ostringstream os;
@@ -39,11 +39,12 @@ std::string vtkTransmittanceShaderSource::GetConstants()
   define("NO_OCCLUDER", static_cast<double>(NoOccluder));
   define("VIEW_TERMINATION", static_cast<double>(ViewTermination));
   define("PI", vtkMath::Pi());
+  define("MISSING_DATA", missingData ? 1 : 0);
   return os.str();
 }
 
 //------------------------------------------------------------------------------
-std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass)
+std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, bool missingData)
 {
   std::string source = vtkTransmittanceCommonFS;
   switch (pass)
@@ -58,6 +59,6 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass)
       source += vtkTransmittanceRayCastFS;
       break;
   }
-  vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants());
+  vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(missingData));
   return source;
 }

@@ -17,7 +17,15 @@
  *   vtkTyndallTransferTable::GetTexture();
  * - TYNDALL_NO_OCCLUDER: the occlusion texture's "no opaque surface";
  * - TYNDALL_VIEW_TERMINATION: camera rays stop below this transmittance;
- * - TYNDALL_PI.
+ * - TYNDALL_PI;
+ *
+ * and one variant switch:
+ *
+ * - TYNDALL_MISSING_DATA: 1 when the medium has missing data (NaN voxels,
+ *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise. A
+ *   compile-time switch rather than a uniform: drivers such as llvmpipe run
+ *   both sides of a uniform branch's texture fetch, and one more 3-D fetch
+ *   per sample costs 15 to 45 % of a frame.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -40,10 +48,10 @@ public:
   };
 
   /// The fragment shader of a pass, constants injected.
-  static std::string GetFragmentShader(int pass);
+  static std::string GetFragmentShader(int pass, bool missingData = false);
 
   /// The #define lines that replace `//TYNDALL::Constants`.
-  static std::string GetConstants();
+  static std::string GetConstants(bool missingData = false);
 
   /// What an occlusion texel holds where the light's ray meets no opaque surface.
   static constexpr float NoOccluder = 1.0e30f;

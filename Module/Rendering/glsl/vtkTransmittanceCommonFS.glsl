@@ -7,7 +7,8 @@
 // vtkTransmittanceShaderSource: TYNDALL_MAX_LIGHTS, TYNDALL_MAX_COEFFICIENTS,
 // TYNDALL_COEFFICIENTS_PER_LAYER, the methods TYNDALL_NONE ..
 // TYNDALL_ADAPTIVE_ETM, the table rows TYNDALL_TABLE_ALBEDO_ROW and
-// TYNDALL_TABLE_EMISSION_ROW, TYNDALL_NO_OCCLUDER, TYNDALL_PI.
+// TYNDALL_TABLE_EMISSION_ROW, TYNDALL_NO_OCCLUDER, TYNDALL_PI; and the
+// variant switch TYNDALL_MISSING_DATA (see vtkTransmittanceShaderSource.h).
 //TYNDALL::Constants
 
 // The medium: scalars in a 3-D texture, transfer functions in a 2-D table
@@ -15,10 +16,11 @@
 // extinction per unit length before the density scale; emission row rgb =
 // emission colour).
 uniform sampler3D volumeTexture;
-// NaN voxels (missing data), when there are any: 0 there, 1 elsewhere; a
-// sample whose filtered validity is below 1 is empty.
-uniform int hasMissing;
+#if TYNDALL_MISSING_DATA
+// NaN voxels (missing data): 0 there, 1 elsewhere; a sample whose filtered
+// validity is below 1 is empty.
 uniform sampler3D validityTexture;
+#endif
 uniform sampler2D transferTexture;
 uniform mat4 worldToVolume;  // world -> the medium's box as [0,1]^3
 uniform vec3 volumeTexScale; // box [0,1]^3 -> texture coordinates
@@ -56,11 +58,13 @@ float tyndallExtinction(vec3 x, out vec3 color)
 {
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   vec3 texel = q * volumeTexScale + volumeTexShift;
-  if (hasMissing != 0 && texture(validityTexture, texel).r < 0.999)
+#if TYNDALL_MISSING_DATA
+  if (texture(validityTexture, texel).r < 0.999)
   {
     color = vec3(0.0);
     return 0.0;
   }
+#endif
   float value = texture(volumeTexture, texel).r;
   vec4 tf = texture(transferTexture,
     vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW));
