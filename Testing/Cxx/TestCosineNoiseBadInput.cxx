@@ -1,6 +1,7 @@
 // Bad input to vtkCosineNoise and vtkCosineNoiseSource: each case reports a
 // clear error through VTK's error mechanism and gives a defined result (an
 // empty image, a zero integral, a status code), never a crash or NaN.
+#include "TyndallTestCheck.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkDoubleArray.h"
@@ -16,15 +17,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // Expects exactly one error containing `text` since the last call.
 void ExpectError(vtkTest::ErrorObserver* observer, const std::string& text, const std::string& what)
@@ -147,5 +140,5 @@ int TestCosineNoiseBadInput(int, char*[])
   source->GetOutput()->GetPointData()->GetScalars()->GetRange(range);
   Check(std::isfinite(range[0]) && std::isfinite(range[1]), "finite values");
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

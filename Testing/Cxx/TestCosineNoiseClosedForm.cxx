@@ -8,6 +8,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestQuadrature.h"
 
 #include <cmath>
@@ -16,15 +17,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 void RandomUnit(std::mt19937& rng, double w[3])
 {
@@ -272,5 +265,5 @@ int TestCosineNoiseClosedForm(int, char*[])
     Check(std::abs(a10 / a0 - 0.5) < 1e-15, "gain scales the second octave's amplitude");
   }
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -2,6 +2,7 @@
 // for random rays and targets the depth to the returned distance equals the
 // target; unreachable targets report an escape; signed noise finds the first
 // crossing on its scan grid.
+#include "TyndallTestCheck.h"
 #include "vtkCosineNoise.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -12,15 +13,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 }
 
 int TestCosineNoiseSampleDistance(int, char*[])
@@ -126,5 +119,5 @@ int TestCosineNoiseSampleDistance(int, char*[])
     Check(reached > 100, "signed noise: crossings exercised");
   }
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -2,6 +2,7 @@
 // streamed image assembled from pieces equals the whole bit for bit, the
 // same seed gives the same output, progress is reported, a Transform on the
 // noise is honoured.
+#include "TyndallTestCheck.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
@@ -18,15 +19,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 float ValueAt(vtkImageData* image, int i, int j, int k)
 {
@@ -176,5 +169,5 @@ int TestCosineNoiseSource(int, char*[])
     Check(minimum < 0.0, "ClampNegative off keeps negative values");
   }
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

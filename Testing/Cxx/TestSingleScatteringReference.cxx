@@ -38,6 +38,7 @@
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
 #include "vtkVolume.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestQuadrature.h"
 
 #include <algorithm>
@@ -52,16 +53,7 @@
 namespace
 {
 const double kPi = 3.14159265358979323846;
-int failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // Reports a measured error and checks it against its bound.
 void CheckError(double error, double bound, const std::string& what)
@@ -1136,9 +1128,9 @@ int TestSingleScatteringReference(int, char*[])
   TestConvergence();
   TestCellScalarsAndNaN();
   TestBadInput();
-  if (failures)
+  if (tyndall_test::Failures())
   {
-    std::cerr << failures << " check(s) failed" << std::endl;
+    std::cerr << tyndall_test::Failures() << " check(s) failed" << std::endl;
   }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -2,6 +2,7 @@
 // lines, colour spelt both ways) read and applied to a
 // vtkParticipatingMediumProperty (emission included), and each malformed
 // line reported with its file and line number, leaving nothing applied.
+#include "TyndallTestCheck.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
@@ -18,15 +19,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 std::string Write(const std::string& name, const std::string& text)
 {
@@ -108,5 +101,5 @@ int TestTransferFunctionFileReader(int, char*[])
   Check(!reader->Read() &&
       errors->GetErrorMessage().find("no-such-file.tf: cannot open") != std::string::npos,
     "a missing file");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -6,6 +6,7 @@
 // guess that looks only at the type and the minimum: an MR with a negative
 // minimum, a padded MR, a floating-point MR, a CT, a density; and
 // ApplyToImage.
+#include "TyndallTestCheck.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -28,15 +29,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 bool Close(double a, double b)
 {
@@ -302,5 +295,5 @@ int TestTransferFunctionPresets(int, char*[])
     Check(!P::Apply("Cloud", nullptr, 0.0, 1.0), "no property fails without crashing");
   }
   TestGuessing();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

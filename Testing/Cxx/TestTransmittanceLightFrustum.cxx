@@ -7,6 +7,7 @@
 // that matrix. Directional and positional lights, boxes rotated and scaled,
 // and the refusals (zero direction, light inside the box, field of view over
 // the maximum). No display needed.
+#include "TyndallTestCheck.h"
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -22,16 +23,7 @@
 
 namespace
 {
-int failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // The corners of [-1, 1] x [-0.5, 0.5] x [-2, 2] turned and moved.
 void MakeCorners(vtkTransform* transform, double corners[24])
@@ -162,5 +154,5 @@ int TestTransmittanceLightFrustum(int, char*[])
   Check(worst[0] < 1e-10, "texel -> ray -> texel");
   Check(worst[1] < 1e-10, "the clip matrix maps texel (a, b) to clip (2a - 1, 2b - 1)");
   Check(worst[2] < 1e-7, "depth -> distance along the ray");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

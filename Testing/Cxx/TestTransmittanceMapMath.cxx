@@ -8,6 +8,7 @@
 #include "vtkNew.h"
 #include "vtkTransmittanceMapMath.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestQuadrature.h"
 
 #include <algorithm>
@@ -23,15 +24,7 @@ namespace
 {
 using Math = vtkTransmittanceMapMath;
 
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 constexpr int kProfileSize = 1001; // profile points, s_i = i / 1000
 constexpr double kLength = 2.0;    // world length D of the light ray
@@ -674,5 +667,5 @@ int TestTransmittanceMapMath(int, char*[])
       "ExtinctionFromOpacity gives 0 for invalid input");
   }
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

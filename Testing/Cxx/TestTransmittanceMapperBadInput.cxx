@@ -19,6 +19,7 @@
 #include "vtkVolume.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestScene.h"
 
 #include <cmath>
@@ -28,15 +29,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // Number of pixels that differ from the background colour.
 int CountForeground(vtkRenderWindow* window)
@@ -176,5 +169,5 @@ int TestTransmittanceMapperBadInput(int, char*[])
   window->Render();
   Check(!observer->GetError() && !observer->GetWarning(), "a valid volume renders cleanly");
   Check(CountForeground(window) > sphereOnly + 50, "the valid volume is drawn");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

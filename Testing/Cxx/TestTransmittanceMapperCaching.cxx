@@ -12,21 +12,14 @@
 #include "vtkVolume.h"
 #include "vtk_glew.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestScene.h"
 
 #include <iostream>
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 }
 
 int TestTransmittanceMapperCaching(int, char*[])
@@ -142,5 +135,5 @@ int TestTransmittanceMapperCaching(int, char*[])
   Check(glError == GL_NO_ERROR, "no OpenGL error after release and re-render");
   window->Finalize();
   Check(!errors->GetError(), "no errors after finalizing the window");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

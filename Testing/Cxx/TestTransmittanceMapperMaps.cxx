@@ -35,6 +35,7 @@
 #include "vtkTyndallSceneReader.h"
 #include "vtkVolume.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestScene.h"
 
 #include <algorithm>
@@ -47,16 +48,7 @@
 namespace
 {
 using M = vtkTransmittanceMapMath;
-int failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // The texel ray's segment inside the medium's box: kIn and D (0 if it misses).
 void Segment(const vtkTyndallGridMedium& medium, const double o[3], const double d[3],
@@ -346,5 +338,5 @@ int TestTransmittanceMapperMaps(int, char*[])
   Check(worst[3] <= tolT, "GPU maps reconstruct the CPU twin's transmittance");
   Check(skipped <= texels / 100, "texels on a threshold are rare (at most 1%)");
   Check(slipBest > 10.0, "a half-sample slip of the march would fail this test");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

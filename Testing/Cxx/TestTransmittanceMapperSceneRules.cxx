@@ -28,6 +28,7 @@
 #include "vtkVolume.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "TyndallTestCheck.h"
 #include "TyndallTestImage.h"
 #include "TyndallTestScene.h"
 
@@ -38,17 +39,8 @@
 
 namespace
 {
-int failures = 0;
 constexpr int kSize = 96;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // A volume, its renderer and window, and the CPU reference.
 struct Scene
@@ -318,5 +310,5 @@ int TestTransmittanceMapperSceneRules(int, char*[])
         tyndall_test::PSNR(cpu, eightCpu) == std::numeric_limits<double>::infinity(),
       "lights beyond the eighth are ignored, on both");
   }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -3,6 +3,7 @@
 // and defaults; repeatable lights; errors worded for a user; the viewer's
 // keys change the options their help says they change; Python's
 // ParseArguments() equals Parse().
+#include "TyndallTestCheck.h"
 #include "vtkNew.h"
 #include "vtkStringArray.h"
 #include "vtkTyndallOptions.h"
@@ -14,15 +15,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 bool Parse(vtkTyndallOptions* o, std::vector<std::string> args)
 {
@@ -183,5 +176,5 @@ int TestTyndallOptions(int, char*[])
   Check(o->ParseArguments(args) && o->GetNumber("map-size") == 64 && o->GetChoice("model") == 0 &&
       std::string(o->GetInput()) == "in.vdb",
     "ParseArguments");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -5,6 +5,7 @@
 // a viewer key), a transfer-function file with emission, given lights, and
 // the errors (a missing volume, a bad transfer-function file, a degenerate
 // camera). Nothing is rendered: no display is needed.
+#include "TyndallTestCheck.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
@@ -31,15 +32,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // Builds a renderer from a command line; nullptr (and the errors) on failure.
 vtkSmartPointer<vtkRenderer> Build(vtkTyndallSceneBuilder* builder, std::vector<std::string> args,
@@ -228,5 +221,5 @@ int TestTyndallSceneBuilder(int, char*[])
           std::string::npos,
       "a degenerate camera");
   }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -5,6 +5,7 @@
 // component; bad paths and files give one error line starting with the path
 // and an empty output; the shared sample volumes (when present) read with
 // the format their extension names.
+#include "TyndallTestCheck.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
@@ -30,15 +31,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++failures;
-  }
-}
+using tyndall_test::Check;
 
 // A 6 x 5 x 4 image, extent starting at (2, 1, 0), values 10 i + j - k.
 vtkSmartPointer<vtkImageData> MakeImage(int components = 1)
@@ -239,5 +232,5 @@ int TestVolumeFileReader(int, char*[])
         Format(reader->GetOutput()) == sample.Format,
       std::string(sample.File) + " reads as " + sample.Format);
   }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

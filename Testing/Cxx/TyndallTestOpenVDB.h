@@ -8,6 +8,8 @@
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
 
+#include "TyndallTestCheck.h"
+
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
@@ -22,20 +24,8 @@
 
 namespace tyndall_vdb_test
 {
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << std::endl;
-    ++Failures();
-  }
-}
+using tyndall_test::Check;
+using tyndall_test::Failures;
 
 // The test's scratch directory: <-T dir>/<name>, created empty.
 inline std::string ScratchDir(int argc, char* argv[], const std::string& name)
