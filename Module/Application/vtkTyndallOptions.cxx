@@ -113,8 +113,8 @@ const Spec kOptions[] = {
     "the guessed preset (vtkTransferFunctionPresets::GuessPreset)" },
   { "transfer-function", "", Kind::Text, 0, 0, false, "", "FILE", "", "Transfer function", Both,
     "a transfer-function text file (format below)" },
-  { "camera-position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "",
-    "Camera", Both, "where the camera is" },
+  { "camera-position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",
+    Both, "where the camera is" },
   { "focal-point", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",
     Both, "the point it looks at" },
   { "view-up", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera", Both,
@@ -173,8 +173,8 @@ const Spec kOptions[] = {
     KeyMode::Toggle, "r" },
   { "screenshot", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer,
     "screenshot (tyndall-viewer-NNN.png)", KeyMode::Toggle, "s" },
-  { "quit", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "quit",
-    KeyMode::Toggle, "q\033" },
+  { "quit", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "quit", KeyMode::Toggle,
+    "q\033" },
 };
 
 struct Value
@@ -276,6 +276,70 @@ std::string Wanted(const Spec& s)
   }
 }
 
+// How many arguments an option takes after its name.
+int ArgumentCount(const Spec& spec)
+{
+  switch (spec.Type)
+  {
+    case Kind::Flag:
+    case Kind::Help:
+      return 0;
+    case Kind::Pair:
+      return 2;
+    case Kind::Triple:
+    case Kind::Light:
+      return 3;
+    case Kind::LightSet:
+      return std::string(spec.Name) == "light-color" ? 3 : 1;
+    default:
+      return 1;
+  }
+}
+
+// Reads the arguments of option `arg` (row `spec`) into `value`: a text, a
+// choice or numbers within the row's range. False with `error` otherwise.
+bool ReadValue(const Spec& spec, const std::string& arg, const std::vector<std::string>& args,
+  Value& value, std::string& error)
+{
+  value.Set = true;
+  if (spec.Type == Kind::Text)
+  {
+    value.Text = args[0];
+    if (value.Text.empty())
+    {
+      error = arg + " needs a non-empty " + std::string(spec.Metavar);
+    }
+    return error.empty();
+  }
+  if (spec.Type == Kind::Choice)
+  {
+    const std::vector<std::string> choices = Split(spec.Choices, '|');
+    const auto found = std::find(choices.begin(), choices.end(), args[0]);
+    if (found == choices.end())
+    {
+      error = arg + " needs " + Wanted(spec) + "; got '" + args[0] + "'";
+      return false;
+    }
+    value.Choice = static_cast<int>(found - choices.begin());
+    value.Text = args[0];
+    return true;
+  }
+  const bool integer = spec.Type == Kind::Integer || spec.Type == Kind::Pair;
+  for (const std::string& a : args)
+  {
+    double v = 0.0;
+    const bool parsed = ParseStrict(a, integer, v);
+    const bool inside = spec.Open ? v > spec.Min && v < spec.Max : v >= spec.Min && v <= spec.Max;
+    if (!parsed || !inside)
+    {
+      error = arg + " needs " + Wanted(spec) + ", got '" + a + "'";
+      return false;
+    }
+    value.Numbers.push_back(v);
+  }
+  return true;
+}
+
 void Wrap(std::ostream& os, const std::string& left, const std::string& text)
 {
   constexpr size_t column = 26, width = 80;
@@ -321,6 +385,99 @@ public:
       }
     }
     return nullptr;
+  }
+
+  // The input path, given once (as an operand or with --input).
+  void SetInput(const std::string& path, std::string& input, std::string& error)
+  {
+    if (!input.empty())
+    {
+      error = "more than one input given ('" + input + "' and '" + path + "')";
+      return;
+    }
+    input = path;
+  }
+
+  // Stores a parsed option: a new light, a setting of the latest light, the
+  // input, or a value (checking what the row's range cannot say).
+  void Store(const Spec& spec, const std::string& arg, const Value& value, std::string& input,
+    std::string& error)
+  {
+    const std::string name = spec.Name;
+    const std::vector<double>& n = value.Numbers;
+    if (spec.Type == Kind::Light)
+    {
+      Light light;
+      light.Positional = name == "light-position";
+      std::copy(n.begin(), n.end(), light.Vector);
+      if (!light.Positional && n[0] == 0 && n[1] == 0 && n[2] == 0)
+      {
+        error = "--light-direction needs a non-zero vector";
+        return;
+      }
+      this->Lights.push_back(light);
+    }
+    else if (spec.Type == Kind::LightSet)
+    {
+      if (this->Lights.empty())
+      {
+        error = arg +
+          " applies to the most recent light: give --light-direction or --light-position before "
+          "it";
+      }
+      else if (name == "light-color")
+      {
+        std::copy(n.begin(), n.end(), this->Lights.back().Color);
+      }
+      else
+      {
+        this->Lights.back().Intensity = n[0];
+      }
+    }
+    else if (name == "view-up" && n[0] == 0 && n[1] == 0 && n[2] == 0)
+    {
+      error = "--view-up needs a non-zero vector";
+    }
+    else if (name == "preset" && vtkTransferFunctionPresets::GetPresetIndex(value.Text.c_str()) < 0)
+    {
+      std::string known;
+      for (int p = 0; p < vtkTransferFunctionPresets::GetNumberOfPresets(); ++p)
+      {
+        known += std::string(" ") + vtkTransferFunctionPresets::GetPresetName(p);
+      }
+      error = "unknown preset '" + value.Text + "' (known:" + known + ")";
+    }
+    else if (name == "input")
+    {
+      this->SetInput(value.Text, input, error);
+    }
+    else
+    {
+      this->Values[name] = value;
+    }
+  }
+
+  // Options that depend on others: the first problem, or "".
+  std::string CheckCombinations(const std::string& input) const
+  {
+    auto set = [this](const char* name) { return this->Values.count(name) > 0; };
+    if (input.empty() && set("grid"))
+    {
+      return "--grid needs a .vdb input";
+    }
+    if (input.empty() && set("component"))
+    {
+      return "--component needs an input file";
+    }
+    if (!input.empty() && set("resolution"))
+    {
+      return "--resolution applies to the built-in cloud only, not to an input file";
+    }
+    if (set("preset") && set("transfer-function"))
+    {
+      return "give either --preset or --transfer-function, not both";
+    }
+    return std::string();
   }
 
   // The row of a command-line argument ("--method", "-s").
@@ -372,25 +529,14 @@ bool vtkTyndallOptions::Parse(int argc, char* argv[])
   this->Input.clear();
   this->HelpRequested = false;
   this->ErrorMessage.clear();
-  auto fail = [this](const std::string& message)
-  {
-    if (this->ErrorMessage.empty())
-    {
-      this->ErrorMessage = message;
-    }
-    return false;
-  };
+  std::string error;
   bool endOfOptions = false;
-  for (int i = 1; i < argc; ++i)
+  for (int i = 1; i < argc && error.empty(); ++i)
   {
     const std::string arg = argv[i];
     if (endOfOptions || arg.empty() || arg[0] != '-' || arg == "-")
     {
-      if (!this->Input.empty())
-      {
-        return fail("more than one input given ('" + this->Input + "' and '" + arg + "')");
-      }
-      this->Input = arg;
+      in.SetInput(arg, this->Input, error);
       continue;
     }
     if (arg == "--")
@@ -401,151 +547,34 @@ bool vtkTyndallOptions::Parse(int argc, char* argv[])
     const Spec* spec = vtkInternals::FindArgument(arg, this->Program);
     if (!spec)
     {
-      return fail("unknown option '" + arg + "' (see --help)");
+      error = "unknown option '" + arg + "' (see --help)";
+      break;
     }
-    // The arguments the option takes.
-    size_t count = 0;
-    switch (spec->Type)
+    const int count = ArgumentCount(*spec);
+    if (i + count >= argc)
     {
-      case Kind::Flag:
-      case Kind::Help:
-        count = 0;
-        break;
-      case Kind::Pair:
-        count = 2;
-        break;
-      case Kind::Triple:
-      case Kind::Light:
-        count = 3;
-        break;
-      case Kind::LightSet:
-        count = std::string(spec->Name) == "light-color" ? 3 : 1;
-        break;
-      default:
-        count = 1;
+      error = arg + " needs " + Wanted(*spec);
+      break;
     }
-    if (i + static_cast<int>(count) >= argc)
-    {
-      return fail(arg + " needs " + Wanted(*spec));
-    }
-    std::vector<std::string> args(argv + i + 1, argv + i + 1 + count);
-    i += static_cast<int>(count);
     if (spec->Type == Kind::Help)
     {
       this->HelpRequested = true;
       return true;
     }
+    const std::vector<std::string> args(argv + i + 1, argv + i + 1 + count);
+    i += count;
     Value value;
-    value.Set = true;
-    if (spec->Type == Kind::Text)
+    if (ReadValue(*spec, arg, args, value, error))
     {
-      value.Text = args[0];
-      if (value.Text.empty())
-      {
-        return fail(arg + " needs a non-empty " + std::string(spec->Metavar));
-      }
+      in.Store(*spec, arg, value, this->Input, error);
     }
-    else if (spec->Type == Kind::Choice)
-    {
-      const std::vector<std::string> choices = Split(spec->Choices, '|');
-      const auto found = std::find(choices.begin(), choices.end(), args[0]);
-      if (found == choices.end())
-      {
-        return fail(arg + " needs " + Wanted(*spec) + "; got '" + args[0] + "'");
-      }
-      value.Choice = static_cast<int>(found - choices.begin());
-      value.Text = args[0];
-    }
-    else
-    {
-      const bool integer = spec->Type == Kind::Integer || spec->Type == Kind::Pair;
-      for (const std::string& a : args)
-      {
-        double v = 0.0;
-        const bool parsed = ParseStrict(a, integer, v);
-        const bool inside = spec->Open ? v > spec->Min && v < spec->Max
-                                       : v >= spec->Min && v <= spec->Max;
-        if (!parsed || !inside)
-        {
-          return fail(arg + " needs " + Wanted(*spec) + ", got '" + a + "'");
-        }
-        value.Numbers.push_back(v);
-      }
-    }
-    const std::string name = spec->Name;
-    if (spec->Type == Kind::Light)
-    {
-      Light light;
-      light.Positional = name == "light-position";
-      std::copy(value.Numbers.begin(), value.Numbers.end(), light.Vector);
-      if (!light.Positional && light.Vector[0] == 0 && light.Vector[1] == 0 && light.Vector[2] == 0)
-      {
-        return fail("--light-direction needs a non-zero vector");
-      }
-      in.Lights.push_back(light);
-      continue;
-    }
-    if (spec->Type == Kind::LightSet)
-    {
-      if (in.Lights.empty())
-      {
-        return fail(arg +
-          " applies to the most recent light: give --light-direction or --light-position before "
-          "it");
-      }
-      if (name == "light-color")
-      {
-        std::copy(value.Numbers.begin(), value.Numbers.end(), in.Lights.back().Color);
-      }
-      else
-      {
-        in.Lights.back().Intensity = value.Numbers[0];
-      }
-      continue;
-    }
-    if (name == "view-up" && value.Numbers[0] == 0 && value.Numbers[1] == 0 &&
-      value.Numbers[2] == 0)
-    {
-      return fail("--view-up needs a non-zero vector");
-    }
-    if (name == "preset" && vtkTransferFunctionPresets::GetPresetIndex(value.Text.c_str()) < 0)
-    {
-      std::string known;
-      for (int p = 0; p < vtkTransferFunctionPresets::GetNumberOfPresets(); ++p)
-      {
-        known += std::string(" ") + vtkTransferFunctionPresets::GetPresetName(p);
-      }
-      return fail("unknown preset '" + value.Text + "' (known:" + known + ")");
-    }
-    if (name == "input")
-    {
-      if (!this->Input.empty())
-      {
-        return fail("more than one input given ('" + this->Input + "' and '" + value.Text + "')");
-      }
-      this->Input = value.Text;
-      continue;
-    }
-    in.Values[name] = value;
   }
-  // Options that depend on others.
-  if (this->Input.empty() && this->IsSet("grid"))
+  if (error.empty())
   {
-    return fail("--grid needs a .vdb input");
+    error = in.CheckCombinations(this->Input);
   }
-  if (this->Input.empty() && this->IsSet("component"))
-  {
-    return fail("--component needs an input file");
-  }
-  if (!this->Input.empty() && this->IsSet("resolution"))
-  {
-    return fail("--resolution applies to the built-in cloud only, not to an input file");
-  }
-  if (this->IsSet("preset") && this->IsSet("transfer-function"))
-  {
-    return fail("give either --preset or --transfer-function, not both");
-  }
-  return true;
+  this->ErrorMessage = error;
+  return error.empty();
 }
 
 //------------------------------------------------------------------------------
@@ -638,12 +667,14 @@ void vtkTyndallOptions::SetNumber(const char* name, double value, int i)
   }
   if (v.Numbers.size() <= static_cast<size_t>(i))
   {
-    const size_t previous = v.Numbers.size();
-    v.Numbers.resize(i + 1);
-    for (size_t k = previous; k < v.Numbers.size(); ++k)
+    // Components not given yet keep their current values (the defaults):
+    // read them all before the vector grows (GetNumber reads what it holds).
+    std::vector<double> numbers;
+    for (int k = 0; k <= i; ++k)
     {
-      v.Numbers[k] = this->GetNumber(name, static_cast<int>(k));
+      numbers.push_back(this->GetNumber(name, k));
     }
+    v.Numbers = numbers;
   }
   v.Numbers[i] = std::min(std::max(value, spec->Min), spec->Max);
   if (spec->Type == Kind::Integer)
@@ -828,8 +859,8 @@ std::string vtkTyndallOptions::GetHelp(const char* description)
       {
         continue;
       }
-      std::string left = std::string("  ") + (*s.Short ? std::string(s.Short) + ", " : "") +
-        "--" + s.Name + (*s.Metavar ? std::string(" ") + s.Metavar : "");
+      std::string left = std::string("  ") + (*s.Short ? std::string(s.Short) + ", " : "") + "--" +
+        s.Name + (*s.Metavar ? std::string(" ") + s.Metavar : "");
       std::string text = s.Help;
       if (s.Type == Kind::Choice)
       {

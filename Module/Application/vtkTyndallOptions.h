@@ -75,7 +75,10 @@ public:
   /**
    * The first problem of the last Parse() ("" when it succeeded).
    */
-  const char* GetErrorMessage() { return this->ErrorMessage.c_str(); }
+  const char* GetErrorMessage()
+  {
+    return this->ErrorMessage.c_str();
+  }
 
   /**
    * Whether -h/--help was given.
@@ -92,7 +95,10 @@ public:
   /**
    * The input path ("" for the built-in scene).
    */
-  const char* GetInput() { return this->Input.c_str(); }
+  const char* GetInput()
+  {
+    return this->Input.c_str();
+  }
 
   ///@{
   /**

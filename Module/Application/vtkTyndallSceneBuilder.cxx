@@ -260,12 +260,14 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));
   medium->SetDensityScale(o->GetNumber("density-scale"));
-  medium->SetLightScale(o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
+  medium->SetLightScale(
+    o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
   medium->SetEmissionScale(o->GetNumber("emission-scale"));
   if (medium->GetEmissionScale() > 0.0 && !medium->GetEmissionColor())
   {
     // The file's emission lines, else the colour.
-    const bool fromFile = this->TransferFunctionFile && this->TransferFunctionFile->GetHasEmission();
+    const bool fromFile =
+      this->TransferFunctionFile && this->TransferFunctionFile->GetHasEmission();
     medium->SetEmissionColor(
       fromFile ? this->TransferFunctionFile->GetEmission() : medium->GetRGBTransferFunction());
   }

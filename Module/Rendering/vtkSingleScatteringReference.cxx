@@ -5,12 +5,14 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
+#include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -30,28 +32,10 @@ public:
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 // The most steps one ray may take across the volume's box.
 constexpr double kMaxStepsPerRay = 1.0e7;
 constexpr int kMaxImageSize = 16384;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-inline double Dot(const double a[3], const double b[3])
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-inline double Normalize(double v[3])
-{
-  const double length = std::sqrt(Dot(v, v));
-  if (length > 0.0)
-  {
-    v[0] /= length;
-    v[1] /= length;
-    v[2] /= length;
-  }
-  return length;
-}
 
 // Clips the parameter interval [t0, t1] of the ray o + t d to the box
 // [lo, hi] (all in field index space); false if nothing is left.
@@ -135,12 +119,7 @@ struct Scene
       p[r] += this->B[r];
     }
   }
-  double Phase(double mu) const
-  {
-    const double g = this->G;
-    const double denominator = 1.0 + g * g - 2.0 * g * mu;
-    return (1.0 - g * g) / (4.0 * kPi * denominator * std::sqrt(denominator));
-  }
+  double Phase(double mu) const { return vtkTransmittanceMapMath::HenyeyGreenstein(this->G, mu); }
 };
 
 template <typename T>
@@ -237,7 +216,7 @@ private:
     }
     const double* origin = ends[0];
     double w[3] = { ends[1][0] - origin[0], ends[1][1] - origin[1], ends[1][2] - origin[2] };
-    const double rayLength = Normalize(w);
+    const double rayLength = vtkMath::Normalize(w);
     if (!(rayLength > 0.0))
     {
       return;
@@ -333,7 +312,7 @@ private:
       l[0] = light.Position[0] - x[0];
       l[1] = light.Position[1] - x[1];
       l[2] = light.Position[2] - x[2];
-      const double r = Normalize(l);
+      const double r = vtkMath::Normalize(l);
       if (!(r > 0.0))
       {
         return;
@@ -347,7 +326,7 @@ private:
       factor = 1.0 / denominator;
       if (light.Spot)
       {
-        const double cosPhi = -Dot(l, light.SpotDirection);
+        const double cosPhi = -vtkMath::Dot(l, light.SpotDirection);
         if (cosPhi < light.CosCone)
         {
           return;
@@ -367,7 +346,8 @@ private:
       std::copy(light.ToLightIndex, light.ToLightIndex + 3, dl);
     }
     // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
-    const double weight = factor * s.Phase(Dot(l, w)) * this->LightTransmittance(p, dl, tMax);
+    const double weight =
+      factor * s.Phase(vtkMath::Dot(l, w)) * this->LightTransmittance(p, dl, tMax);
     for (int c = 0; c < 3; ++c)
     {
       in[c] += light.E[c] * weight;
@@ -460,21 +440,13 @@ void SetUpMedium(const vtkTyndallGridMedium& medium, Scene& scene)
   scene.Table = &medium.GetTable();
 }
 
-// The scene's lights with the medium's light scale (single scattering only).
+// The scene's lights (none in the emission-absorption model).
 void SetUpLights(const vtkTyndallSceneReader& tyndall, Scene& scene)
 {
-  const vtkTyndallGridMedium& medium = tyndall.GetMedium();
-  if (!scene.SingleScattering)
-  {
-    return;
-  }
   for (const vtkTyndallLight& light : tyndall.GetLights())
   {
     LightSource source;
-    for (int c = 0; c < 3; ++c)
-    {
-      source.E[c] = medium.GetLightScale() * light.Color[c];
-    }
+    std::copy(light.Irradiance, light.Irradiance + 3, source.E);
     source.Positional = light.Positional;
     if (light.Positional)
     {

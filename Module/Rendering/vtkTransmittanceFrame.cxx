@@ -50,18 +50,13 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
     }
   }
 
-  // The lights (single scattering only), each with its map's frustum.
+  // The lights, each with its map's frustum.
   const std::vector<vtkTyndallLight>& lights = scene.GetLights();
-  const size_t count = this->Medium->GetSingleScattering() ? lights.size() : 0;
-  this->Lights.resize(count);
-  for (size_t l = 0; l < count; ++l)
+  this->Lights.resize(lights.size());
+  for (size_t l = 0; l < lights.size(); ++l)
   {
     Light& light = this->Lights[l];
     light.Source = lights[l];
-    for (int c = 0; c < 3; ++c)
-    {
-      light.Irradiance[c] = this->Medium->GetLightScale() * lights[l].Color[c];
-    }
     if (!light.Frustum)
     {
       light.Frustum = vtkSmartPointer<vtkTransmittanceLightFrustum>::New();

@@ -38,8 +38,6 @@ public:
   struct Light
   {
     vtkTyndallLight Source;
-    /// LightScale * Color: the irradiance before attenuation and shadows.
-    double Irradiance[3] = { 0.0, 0.0, 0.0 };
     /// The method of this light: the mapper's, or BRUTE_FORCE without a frustum.
     int Method = 0;
     bool HasFrustum = false;

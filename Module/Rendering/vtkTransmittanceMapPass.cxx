@@ -60,14 +60,22 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   std::vector<double> key = { double(s.Method), double(s.Coefficients), double(s.MapSize),
     double(s.LightSampleCount), s.AdaptiveThreshold, frame.Medium->GetDensityScale(),
-    double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetTableTime()) };
+    double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetExtinctionTime()) };
   key.insert(key.end(), frame.Corners, frame.Corners + 24);
+  // Per light, its method and, when it has a map, the frustum the map is
+  // built along (which also covers the frustum's padding and field of view).
   for (const vtkTransmittanceFrame::Light& l : frame.Lights)
   {
-    const vtkTyndallLight& p = l.Source;
-    key.insert(key.end(),
-      { double(p.Positional), double(l.Method), p.Position[0], p.Position[1], p.Position[2],
-        p.Direction[0], p.Direction[1], p.Direction[2] });
+    key.push_back(double(l.Method));
+    if (vtkTransmittanceMapMath::IsMapMethod(l.Method))
+    {
+      vtkTransmittanceLightFrustum* f = l.Frustum;
+      key.push_back(double(f->GetPositional()));
+      for (const double* v : { f->GetOrigin(), f->GetAxisX(), f->GetAxisY(), f->GetAxisZ() })
+      {
+        key.insert(key.end(), v, v + 3);
+      }
+    }
   }
   return key;
 }

@@ -51,9 +51,6 @@ public:
   const float* GetTextureScale() const { return this->TextureScale; }
   const float* GetTextureShift() const { return this->TextureShift; }
 
-  /// The downsampling factor of the uploaded scalars (1: full resolution).
-  int GetDownsampling() const { return this->Factor; }
-
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:

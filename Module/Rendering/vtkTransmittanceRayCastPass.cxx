@@ -76,7 +76,6 @@ bool vtkTransmittanceRayCastPass::Render(
   ToColumnMajor(ndcToWorld, ndcToWorldF);
   program->SetUniformMatrix4x4("ndcToWorld", ndcToWorldF);
   program->SetUniformi("depthTexture", inputs.Depth->GetTextureUnit());
-  program->SetUniformi("useDepthTexture", 1);
 
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;
@@ -132,7 +131,7 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
     const vtkTransmittanceFrame::Light& light = frame.Lights[l];
     for (int k = 0; k < 3; ++k)
     {
-      irradiance[l][k] = static_cast<float>(light.Irradiance[k]);
+      irradiance[l][k] = static_cast<float>(light.Source.Irradiance[k]);
       position[l][k] = static_cast<float>(light.Source.Position[k]);
       direction[l][k] = static_cast<float>(light.Source.Direction[k]);
       attenuation[l][k] = static_cast<float>(light.Source.Attenuation[k]);

@@ -16,6 +16,7 @@
 #include "vtkTransmittanceRayCastPass.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkWeakPointer.h"
 
 vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 
@@ -30,7 +31,11 @@ public:
   vtkNew<vtkTransmittanceMapPass> Maps;
   vtkNew<vtkTransmittanceDepthPass> Depth;
   vtkNew<vtkTransmittanceRayCastPass> RayCast;
-  vtkOpenGLRenderWindow* Window = nullptr;
+  // The window the resources live in (weak: it may go before the mapper).
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  // Whether the last Render() went through every pass: the lights, methods,
+  // frusta and maps it reports describe that render, or nothing.
+  bool Complete = false;
 };
 
 //------------------------------------------------------------------------------
@@ -70,6 +75,7 @@ double vtkTransmittanceVolumeMapper::GetLastMapBuildTime()
 void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& in = *this->Internals;
+  in.Complete = false;
   in.Textures->ReleaseGraphicsResources(window);
   in.Occlusion->ReleaseGraphicsResources(window);
   in.Maps->ReleaseGraphicsResources(window);
@@ -89,9 +95,13 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     vtkErrorMacro(<< "vtkTransmittanceVolumeMapper needs an OpenGL render window.");
     return;
   }
+  in.Complete = false;
   if (in.Window && in.Window != window)
   {
+    // Released in their own context, then back to this one.
+    in.Window->MakeCurrent();
     this->ReleaseGraphicsResources(in.Window);
+    window->MakeCurrent();
   }
   in.Window = window;
   if (!in.Scene.Update(renderer, volume, this) ||
@@ -127,28 +137,29 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     inputs.Maps = in.Maps->GetTexture();
     inputs.MapSlices = in.Maps->GetSlices();
   }
-  in.RayCast->Render(in.Frame, inputs, this);
+  in.Complete = in.RayCast->Render(in.Frame, inputs, this);
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetNumberOfRenderedLights()
 {
-  return static_cast<int>(this->Internals->Frame.Lights.size());
+  const vtkInternals& in = *this->Internals;
+  return in.Complete ? static_cast<int>(in.Frame.Lights.size()) : 0;
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLightTransmittanceMethod(int light)
 {
   const auto& lights = this->Internals->Frame.Lights;
-  return light >= 0 && light < static_cast<int>(lights.size()) ? lights[light].Method : -1;
+  return light >= 0 && light < this->GetNumberOfRenderedLights() ? lights[light].Method : -1;
 }
 
 //------------------------------------------------------------------------------
 vtkTransmittanceLightFrustum* vtkTransmittanceVolumeMapper::GetLightFrustum(int light)
 {
   const auto& lights = this->Internals->Frame.Lights;
-  return light >= 0 && light < static_cast<int>(lights.size()) ? lights[light].Frustum.Get()
-                                                               : nullptr;
+  return light >= 0 && light < this->GetNumberOfRenderedLights() ? lights[light].Frustum.Get()
+                                                                 : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -63,9 +63,9 @@
  *
  * Bad input is reported with vtkErrorMacro and leaves the rest of the
  * render intact (see Documentation/rendering-model.md for what the scene
- * reader refuses, and how NaN scalars are rendered); so is a render window
- * without OpenGL 3.2. A volume larger than the GPU's 3-D texture limit is
- * downsampled by the smallest integer factor that fits, with a warning.
+ * reader refuses, and how NaN scalars are rendered); so are a render window
+ * that is not an OpenGL one and a shader that does not compile. A volume larger than the GPU's 3-D
+ * texture limit is downsampled by the smallest integer factor that fits, with a warning.
  *
  * @sa vtkParticipatingMediumProperty vtkSingleScatteringReference
  * vtkTransmittanceMapMath vtkTransmittanceLightFrustum
@@ -189,7 +189,8 @@ public:
 
   ///@{
   /**
-   * The lights of the last Render(), in the renderer's order (switched-on
+   * The lights of the last Render() (none when it failed or after
+   * ReleaseGraphicsResources()), in the renderer's order (switched-on
    * lights with a positive intensity, at most GetMaximumNumberOfLights();
    * none in the emission-absorption model): their number, the method each
    * used (the mapper's, or BRUTE_FORCE for a light without a map; -1 for an
@@ -209,7 +210,8 @@ public:
    * point-data arrays "Coefficients" (NumberOfCoefficients components, the
    * a_j or c_j of Documentation/rendering-model.md) and, for the adaptive
    * methods, "Bounds" (s_min, s_max, T_beyond). Returns false (with an
-   * error) when the light has no map or there is no render window.
+   * error) when the light has no map in the last render (or that render
+   * failed) or there is no render window.
    */
   bool GetTransmittanceMap(int light, vtkImageData* map);
 

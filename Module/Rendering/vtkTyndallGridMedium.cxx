@@ -99,6 +99,9 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
   int cellFlag = 0;
   vtkDataArray* scalars = vtkAbstractMapper::GetScalars(image, mapper->GetScalarMode(),
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  // The image's MTime, not only its extent: VTK's convention lets a program
+  // edit the values in place and mark the image (not the array) modified.
+  // A spacing or origin change then rescans too, which is rare.
   const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(image)),
     static_cast<double>(image->GetMTime()),
     static_cast<double>(reinterpret_cast<uintptr_t>(scalars)),
@@ -295,19 +298,23 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     emission && this->EmissionScale > 0.0;
 
   // What the table depends on (not the property's other settings: changing
-  // the anisotropy or the ambient must not rebuild the GPU's maps).
-  const bool gray = property->GetColorChannels(0) == 1;
-  vtkObject* functions[3] = { property->GetScalarOpacity(0),
-    gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
-         : static_cast<vtkObject*>(property->GetRGBTransferFunction(0)),
-    emission };
-  std::vector<double> key = { double(gray), property->GetScalarOpacityUnitDistance(0),
-    this->FiniteRange[0], this->FiniteRange[1] };
-  for (vtkObject* function : functions)
+  // the anisotropy or the ambient must not rebuild the GPU's maps), the
+  // extinction's part first.
+  auto identify = [](std::vector<double>& key, vtkObject* function)
   {
     key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(function)));
     key.push_back(function ? static_cast<double>(function->GetMTime()) : -1.0);
-  }
+  };
+  std::vector<double> extinction = { property->GetScalarOpacityUnitDistance(0),
+    this->FiniteRange[0], this->FiniteRange[1] };
+  identify(extinction, property->GetScalarOpacity(0));
+  const bool gray = property->GetColorChannels(0) == 1;
+  std::vector<double> key = extinction;
+  key.push_back(double(gray));
+  identify(key,
+    gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+         : static_cast<vtkObject*>(property->GetRGBTransferFunction(0)));
+  identify(key, emission);
   if (key == this->TableKey)
   {
     return true;
@@ -317,8 +324,14 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   std::string error;
   if (!this->Table.Build(property, emission, this->FiniteRange[0], this->FiniteRange[1], error))
   {
+    this->ExtinctionKey.clear();
     vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
     return false;
+  }
+  if (extinction != this->ExtinctionKey)
+  {
+    this->ExtinctionKey = extinction;
+    this->ExtinctionTime.Modified();
   }
   this->TableKey = key;
   return true;

@@ -67,18 +67,16 @@ public:
   ///@{
   /**
    * The scalars as selected (a standard-layout array, the input's own or a
-   * copy), the number of samples per axis and whether they are cell scalars.
+   * copy) and the number of samples per axis.
    */
   vtkDataArray* GetScalars() const { return this->Scalars; }
   const int* GetDimensions() const { return this->Dimensions; }
-  bool GetCellScalars() const { return this->CellScalars; }
   ///@}
 
   ///@{
-  /// The finite scalar range, and the counts of NaN and of +-Inf scalars.
+  /// The finite scalar range, and the count of NaN scalars.
   const double* GetFiniteRange() const { return this->FiniteRange; }
   vtkIdType GetNumberOfNaNScalars() const { return this->NaNCount; }
-  vtkIdType GetNumberOfInfiniteScalars() const { return this->InfCount; }
   ///@}
 
   ///@{
@@ -122,11 +120,15 @@ public:
 
   ///@{
   /**
-   * When the scalars (values, selection, sentinel) and the table last
-   * changed: the GPU re-uploads what is newer than its copy.
+   * When the scalars (values, selection, image) and the table last changed:
+   * the GPU re-uploads what is newer than its copy. The extinction time
+   * covers only what the table's extinction depends on (opacity function,
+   * unit distance, finite range): the transmittance maps are rebuilt on it,
+   * not on a colour or emission edit.
    */
   vtkMTimeType GetScalarsTime() const { return this->ScalarsTime.GetMTime(); }
   vtkMTimeType GetTableTime() const { return this->TableTime.GetMTime(); }
+  vtkMTimeType GetExtinctionTime() const { return this->ExtinctionTime.GetMTime(); }
   ///@}
 
   /**
@@ -204,6 +206,8 @@ private:
   vtkTyndallTransferTable Table;
   std::vector<double> TableKey;
   vtkTimeStamp TableTime;
+  std::vector<double> ExtinctionKey;
+  vtkTimeStamp ExtinctionTime;
   int ScatteringModel = 1;
   double DensityScale = 1.0;
   double ScatteringAnisotropy = 0.0;

@@ -6,9 +6,10 @@
  * (see vtkTyndallSceneReader for which lights are used and how they are placed).
  * Internal to Tyndall::Rendering; not wrapped.
  *
- * The irradiance a medium receives before attenuation and shadowing is
- * LightScale * Color, LightScale being the medium's
- * (vtkParticipatingMediumProperty::GetLightScale()).
+ * The irradiance a medium receives before attenuation and shadowing,
+ * Irradiance, is LightScale * Color, LightScale being the medium's
+ * (vtkParticipatingMediumProperty::GetLightScale()); the scene reader
+ * computes it once for both renderers.
  */
 
 #ifndef vtkTyndallLight_h
@@ -27,6 +28,8 @@ public:
   double Direction[3] = { 0.0, 0.0, -1.0 };
   /// vtkLight's Intensity times its DiffuseColor.
   double Color[3] = { 1.0, 1.0, 1.0 };
+  /// The medium's LightScale times Color.
+  double Irradiance[3] = { 1.0, 1.0, 1.0 };
   /// VTK's attenuation 1 / (a0 + a1 r + a2 r^2) of positional lights.
   double Attenuation[3] = { 1.0, 0.0, 0.0 };
   /// A positional light with ConeAngle < 90 degrees.

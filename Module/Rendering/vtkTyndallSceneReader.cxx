@@ -56,6 +56,17 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
     return false;
   }
   this->UpdateLights(renderer, reporter);
+  if (!this->Medium.GetSingleScattering())
+  {
+    this->Lights.clear();
+  }
+  for (vtkTyndallLight& light : this->Lights)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Irradiance[c] = this->Medium.GetLightScale() * light.Color[c];
+    }
+  }
   return true;
 }
 

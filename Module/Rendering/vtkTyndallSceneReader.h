@@ -20,6 +20,9 @@
  *   (GetTransformedPosition/FocalPoint);
  * - a directional or spot light whose position and focal point coincide has
  *   no direction: it is ignored with a warning;
+ * - in the emission-absorption model no light is used (nothing is shaded);
+ *   in single scattering each light's irradiance is the medium's LightScale
+ *   times the light's colour;
  * - the medium is read by vtkTyndallGridMedium's rules.
  *
  * A warning is given once per change, not once per frame. Internal to

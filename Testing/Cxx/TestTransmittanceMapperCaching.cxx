@@ -2,12 +2,14 @@
 // depend on changes, never for a camera move; parameters clamp to their
 // documented ranges; releasing graphics resources and destroying the window
 // leave no OpenGL error.
+#include "vtkColorTransferFunction.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkVolume.h"
 #include "vtk_glew.h"
@@ -108,7 +110,9 @@ int TestTransmittanceMapperCaching(int, char*[])
   mapper->SetTransmittanceMethodToTFM();
   expect(true, "the method rebuilds");
   property->GetScalarOpacity()->AddPoint(4.0, 0.1);
-  expect(true, "the transfer function rebuilds");
+  expect(true, "the opacity transfer function rebuilds");
+  property->GetRGBTransferFunction()->AddRGBPoint(4.0, 1.0, 0.2, 0.1);
+  expect(false, "the colour transfer function does not touch the maps");
   volume->RotateZ(30.0);
   expect(true, "the volume's matrix rebuilds");
   mapper->SetInputData(tyndall_test::MakeCloud(24));
@@ -119,6 +123,8 @@ int TestTransmittanceMapperCaching(int, char*[])
   renderer->GetActiveCamera()->Azimuth(-60.0);
   renderer->ResetCameraClippingRange();
   expect(false, "a camera move with two lights reuses the maps");
+  mapper->GetLightFrustum(0)->SetPadding(0.2);
+  expect(true, "a light frustum's padding rebuilds");
   mapper->SetTransmittanceMethodToBruteForce();
   expect(false, "brute force builds no map");
   Check(!errors->GetError(), "no errors while rendering");

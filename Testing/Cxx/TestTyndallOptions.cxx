@@ -70,6 +70,15 @@ int TestTyndallOptions(int, char*[])
   Check(Parse(o, {}) && !o->IsSet("coefficients") && !o->GetFlag("no-jitter"),
     "parsing again starts afresh");
 
+  // Setting one component of an unset option keeps the others' defaults.
+  o->SetNumber("size", 800, 1);
+  Check(o->GetNumber("size", 0) == 512 && o->GetNumber("size", 1) == 800,
+    "SetNumber(size, 800, 1) on an unset size: 512 x 800");
+  o->SetNumber("background", 0.5, 2);
+  Check(o->GetNumber("background", 0) == 0 && o->GetNumber("background", 2) == 0.5,
+    "SetNumber on an option without a default: the others 0");
+  Check(Parse(o, {}), "parsing again");
+
   // Lights: repeatable, modifiers apply to the latest.
   Check(Parse(o,
           { "--light-direction", "0", "-1", "0", "--light-color", "1", "0.5", "0.25",

@@ -53,8 +53,11 @@ vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
   return vec2(max(max(tMin.x, tMin.y), tMin.z), min(min(tMax.x, tMax.y), tMax.z));
 }
 
-// Extinction (density scale applied) and colour at a world point.
-float tyndallExtinction(vec3 x, out vec3 color)
+// The medium at a world point: the extinction (density scale applied),
+// returned; the colour (or albedo); and the point's transfer-table
+// coordinate, with which tyndallEmissionColor() reads the emission row
+// without sampling the volume again.
+float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
 {
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   vec3 texel = q * volumeTexScale + volumeTexShift;
@@ -62,28 +65,27 @@ float tyndallExtinction(vec3 x, out vec3 color)
   if (texture(validityTexture, texel).r < 0.999)
   {
     color = vec3(0.0);
+    tableCoord = 0.0;
     return 0.0;
   }
 #endif
   float value = texture(volumeTexture, texel).r;
-  vec4 tf = texture(transferTexture,
-    vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW));
+  tableCoord = value * scalarToTable.x + scalarToTable.y;
+  vec4 tf = texture(transferTexture, vec2(tableCoord, TYNDALL_TABLE_ALBEDO_ROW));
   color = tf.rgb;
   return densityScale * tf.a;
 }
 
 float tyndallExtinction(vec3 x)
 {
-  vec3 unused;
-  return tyndallExtinction(x, unused);
+  vec3 color;
+  float tableCoord;
+  return tyndallMedium(x, color, tableCoord);
 }
 
-vec3 tyndallEmissionColor(vec3 x)
+vec3 tyndallEmissionColor(float tableCoord)
 {
-  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
-  float value = texture(volumeTexture, q * volumeTexScale + volumeTexShift).r;
-  return texture(transferTexture,
-    vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_EMISSION_ROW)).rgb;
+  return texture(transferTexture, vec2(tableCoord, TYNDALL_TABLE_EMISSION_ROW)).rgb;
 }
 
 // The light ray of texel (a, b) of light l.

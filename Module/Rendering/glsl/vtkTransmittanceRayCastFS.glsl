@@ -8,7 +8,6 @@ in vec2 texCoord;
 
 uniform mat4 ndcToWorld;
 uniform sampler2D depthTexture; // the whole window's depth
-uniform int useDepthTexture;
 
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform int method;
@@ -174,11 +173,8 @@ vec3 inScattering(vec3 x, vec3 w)
 void main()
 {
   vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
-  float depthNdc = 1.0;
-  if (useDepthTexture != 0)
-  {
-    depthNdc = 2.0 * texture(depthTexture, gl_FragCoord.xy / vec2(textureSize(depthTexture, 0))).r - 1.0;
-  }
+  float depthNdc =
+    2.0 * texture(depthTexture, gl_FragCoord.xy / vec2(textureSize(depthTexture, 0))).r - 1.0;
   vec3 p0 = unproject(ndc, -1.0);
   vec3 p1 = unproject(ndc, depthNdc);
   vec3 w = normalize(p1 - p0);
@@ -204,7 +200,8 @@ void main()
     float dt = min(stepLength, tFar - t0);
     vec3 x = p0 + (t0 + offset * dt) * w;
     vec3 color;
-    float sigma = tyndallExtinction(x, color);
+    float tableCoord;
+    float sigma = tyndallMedium(x, color, tableCoord);
     if (sigma > 0.0)
     {
       float stepOpacity = 1.0 - exp(-sigma * dt);
@@ -215,7 +212,11 @@ void main()
       }
       else
       {
-        source = color * inScattering(x, w) + emissionScale * tyndallEmissionColor(x);
+        source = color * inScattering(x, w);
+        if (emissionScale > 0.0)
+        {
+          source += emissionScale * tyndallEmissionColor(tableCoord);
+        }
       }
       radiance += Tv * stepOpacity * source;
       Tv *= 1.0 - stepOpacity;
