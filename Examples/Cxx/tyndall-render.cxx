@@ -382,6 +382,11 @@ int main(int argc, char* argv[])
     return builder->GetBadOptions() ? ExitUsage : ExitFailure;
   }
   progress.Report(1.0);
+  if (*builder->GetReadNotes())
+  {
+    // What the loader changed (NIfTI scaling, a 4-D file's frame): said even with -q.
+    std::cerr << "note: " << builder->GetReadNotes() << "\n";
+  }
   if (verbose)
   {
     if (builder->GetDefaultScene())

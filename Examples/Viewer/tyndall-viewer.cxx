@@ -464,6 +464,10 @@ bool Viewer::LoadScene()
     }
     return false;
   }
+  if (*this->Builder->GetReadNotes())
+  {
+    std::cerr << Program << ": note: " << this->Builder->GetReadNotes() << "\n";
+  }
   this->Mapper = this->Builder->GetMapper();
   this->Medium = this->Builder->GetProperty();
   this->Sun = this->Builder->GetKeyLight();

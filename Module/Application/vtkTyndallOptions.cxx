@@ -76,6 +76,16 @@ const Spec kOptions[] = {
   { "component", "", Kind::Integer, 0, 1024, false, "", "N", "", "Input", Both,
     "component of multi-component scalars to render (default: multi-component data is "
     "refused)" },
+  { "frame", "", Kind::Integer, 0, 1000000, false, "", "N", "0", "Input", Both,
+    "time frame of a 4-D file (NIfTI with a time dimension)" },
+  { "no-rescale", "", Kind::Flag, 0, 0, false, "", "", "", "Input", Both,
+    "keep a NIfTI file's stored values (default: apply its scl_slope and scl_inter)" },
+  { "level-set-to-fog", "", Kind::Flag, 0, 0, false, "", "", "", "Input", Both,
+    "read an OpenVDB level set as a fog volume (OpenVDB's sdfToFogVolume: 0 outside, 1 inside, "
+    "a ramp across the narrow band)" },
+  { "memory-limit", "", Kind::Number, 1, 1e9, false, "", "MIB", "4096", "Input", Both,
+    "largest volume to read, in MiB: a file whose header claims more is refused before anything "
+    "is allocated" },
   { "resolution", "-r", Kind::Integer, 8, 512, false, "", "N", "128", "Input", Both,
     "voxels per axis of the built-in cloud (default scene only)" },
   { "method", "", Kind::Choice, 0, 0, false, "none|brute-force|tfm|adaptive-tfm|etm|adaptive-etm",
@@ -465,9 +475,12 @@ public:
     {
       return "--grid needs a .vdb input";
     }
-    if (input.empty() && set("component"))
+    for (const char* name : { "component", "frame", "no-rescale", "level-set-to-fog" })
     {
-      return "--component needs an input file";
+      if (input.empty() && set(name))
+      {
+        return std::string("--") + name + " needs an input file";
+      }
     }
     if (!input.empty() && set("resolution"))
     {

@@ -6,6 +6,7 @@
 #include "vtkCommand.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -14,6 +15,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
+#include "vtkStringArray.h"
 #include "vtkTransferFunctionFileReader.h"
 #include "vtkTransferFunctionPresets.h"
 #include "vtkTransmittanceVolumeMapper.h"
@@ -72,6 +74,18 @@ vtkTyndallSceneBuilder::~vtkTyndallSceneBuilder()
 vtkImageData* vtkTyndallSceneBuilder::GetImage()
 {
   return this->Image;
+}
+const char* vtkTyndallSceneBuilder::GetReadNotes()
+{
+  this->ReadNotes.clear();
+  auto* notes = this->Image ? vtkStringArray::SafeDownCast(
+                                this->Image->GetFieldData()->GetAbstractArray("TyndallReadNotes"))
+                            : nullptr;
+  for (vtkIdType i = 0; notes && i < notes->GetNumberOfValues(); ++i)
+  {
+    this->ReadNotes += (i ? "\n" : "") + notes->GetValue(i);
+  }
+  return this->ReadNotes.c_str();
 }
 vtkTransmittanceVolumeMapper* vtkTyndallSceneBuilder::GetMapper()
 {
@@ -182,6 +196,10 @@ bool vtkTyndallSceneBuilder::LoadMedium()
   {
     reader->SetComponent(static_cast<int>(o->GetNumber("component")));
   }
+  reader->SetMemoryLimit(o->GetNumber("memory-limit"));
+  reader->SetFrame(static_cast<int>(o->GetNumber("frame")));
+  reader->SetRescale(!o->IsSet("no-rescale"));
+  reader->SetConvertLevelSetToFog(o->IsSet("level-set-to-fog"));
   this->ProgressLabel = std::string("loading ") + o->GetInput();
   // The reader reports its own error (one line starting with the path).
   return this->Run(reader);

@@ -110,6 +110,13 @@ public:
   /// How the transfer function was chosen ("preset CT (guessed)", "file tf.txt", ...).
   const char* GetTransferFunctionDescription() { return this->TransferFunctionDescription.c_str(); }
 
+  /**
+   * What the loader did to the data beyond reading it (vtkVolumeFileReader's
+   * notes: NIfTI scaling applied, the frame of a 4-D file), one per line;
+   * "" if nothing. Programs print them.
+   */
+  const char* GetReadNotes();
+
   /// What is loading during a ProgressEvent ("cloud: 128^3 voxels", "loading FILE").
   const char* GetProgressLabel() { return this->ProgressLabel.c_str(); }
 
@@ -122,6 +129,7 @@ protected:
   bool BadOptions = false;
   std::string TransferFunctionDescription;
   std::string ProgressLabel;
+  std::string ReadNotes;
 
 private:
   vtkTyndallSceneBuilder(const vtkTyndallSceneBuilder&) = delete;

@@ -30,13 +30,16 @@ void vtkTyndallErrorObserver::Execute(vtkObject*, unsigned long, void* callData)
 //------------------------------------------------------------------------------
 std::string vtkTyndallErrorObserver::Simplify(const std::string& text)
 {
+  // "ERROR: In file, line N", "Warning: In ...", "Generic Warning: In ...":
+  // drop that line, then an object's "class (0x...): " prefix.
   std::string message = text;
   const auto newline = message.find('\n');
-  if (message.rfind("ERROR: In ", 0) == 0 && newline != std::string::npos)
+  if (newline != std::string::npos && message.find(": In ") < newline)
   {
     message = message.substr(newline + 1);
     const auto colon = message.find("): ");
-    if (colon != std::string::npos)
+    if (message.rfind("vtk", 0) == 0 && colon != std::string::npos &&
+      message.find(" (0x") < colon && colon < message.find('\n'))
     {
       message = message.substr(colon + 3);
     }

@@ -744,7 +744,8 @@ bool vtkOpenVDBImageReader::SelectGrids()
     {
       vtkErrorMacro(<< "Grid '" << info.Name
                     << "' is a level set (a signed distance field, not a density); turn "
-                       "ConvertLevelSetToFog on to read it as a fog volume.");
+                       "ConvertLevelSetToFog on (tyndall-render --level-set-to-fog) to read it "
+                       "as a fog volume: 0 outside, 1 inside, a ramp across the narrow band.");
       in.Selected.clear();
       return false;
     }

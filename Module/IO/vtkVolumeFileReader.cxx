@@ -7,30 +7,38 @@
 #include "vtkDataArray.h"
 #include "vtkDataObjectTypes.h"
 #include "vtkDataSetReader.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMetaImageReader.h"
+#include "vtkNIFTIImageHeader.h"
 #include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenVDBImageReader.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkSLCReader.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkStructuredPointsReader.h"
 #include "vtkTyndallErrorObserver.h"
+#include "vtkVolumeFileChecks.h"
+#include "vtkVolumeFileDicom.h"
 #include "vtkXMLImageDataReader.h"
 #include "vtksys/Directory.hxx"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <vector>
@@ -52,11 +60,12 @@ bool EndsWith(const std::string& text, const std::string& suffix)
     text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Counts a directory's regular files and those that look like DICOM Part 10
-// files ("DICM" at byte 128).
-void CountFiles(const std::string& directory, int& files, int& dicomFiles)
+// Counts a directory's regular files and lists those that look like DICOM
+// Part 10 files ("DICM" at byte 128).
+void ListFiles(const std::string& directory, int& files, std::vector<std::string>& dicomFiles)
 {
-  files = dicomFiles = 0;
+  files = 0;
+  dicomFiles.clear();
   vtksys::Directory dir;
   if (!dir.Load(directory))
   {
@@ -77,11 +86,12 @@ void CountFiles(const std::string& directory, int& files, int& dicomFiles)
       if (fread(header, 1, sizeof(header), file) == sizeof(header) &&
         std::memcmp(header + 128, "DICM", 4) == 0)
       {
-        ++dicomFiles;
+        dicomFiles.push_back(path);
       }
       fclose(file);
     }
   }
+  std::sort(dicomFiles.begin(), dicomFiles.end());
 }
 
 // The first numeric array of `data` when none is active; nullptr if none.
@@ -183,6 +193,7 @@ int vtkVolumeFileReader::RequestInformation(
     this->FormatName.clear();
     this->Modality.clear();
     this->Error.clear();
+    this->Notes.clear();
     const bool ok = this->Read();
     this->ReadTime = this->GetMTime();
     if (!ok)
@@ -250,17 +261,34 @@ bool vtkVolumeFileReader::Read()
 //------------------------------------------------------------------------------
 bool vtkVolumeFileReader::ReadDirectory(const std::string& path)
 {
-  int files = 0, dicomFiles = 0;
-  CountFiles(path, files, dicomFiles);
+  int files = 0;
+  std::vector<std::string> dicomFiles;
+  ListFiles(path, files, dicomFiles);
   if (files == 0)
   {
     this->Error = path + ": the directory holds no files (expected a DICOM series)";
     return false;
   }
-  if (dicomFiles == 0)
+  if (dicomFiles.empty())
   {
     this->Error = path + ": none of the directory's " + std::to_string(files) +
       " files is a DICOM file (no 'DICM' marker at byte 128)";
+    return false;
+  }
+  // VTK's reader trusts every file's pixel data: check them first.
+  std::vector<tyndall_io::DicomSlice> slices(dicomFiles.size());
+  std::string problem;
+  for (size_t i = 0; i < dicomFiles.size() && problem.empty(); ++i)
+  {
+    problem = tyndall_io::ScanDicomFile(dicomFiles[i], slices[i]);
+  }
+  if (problem.empty())
+  {
+    problem = tyndall_io::CheckDicomSeries(slices);
+  }
+  if (!problem.empty())
+  {
+    this->Error = path + ": " + problem;
     return false;
   }
   vtkNew<vtkDICOMImageReader> reader;
@@ -292,8 +320,7 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
     return false;
   }
   fclose(file);
-  const std::string lower = Lower(path);
-  const char* format = FormatOf(lower);
+  const char* format = FormatOf(Lower(path));
   if (!format)
   {
     this->Error = path + ": unknown volume format (extension '" +
@@ -302,106 +329,265 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
     return false;
   }
   const std::string name = format;
-  auto notOfFormat = [&]()
-  {
-    this->Error = path + ": not a " + name + " file";
-    return false;
-  };
   if (name == "OpenVDB")
   {
-    vtkNew<vtkOpenVDBImageReader> reader;
-    reader->SetFileName(path.c_str());
-    if (this->GridName && *this->GridName)
-    {
-      reader->SetGridName(this->GridName);
-    }
-    return this->RunReader(reader, path, format);
+    return this->ReadOpenVDB(path);
+  }
+  if (name == "MetaImage")
+  {
+    return this->ReadMetaImage(path);
+  }
+  if (name == "NIfTI")
+  {
+    return this->ReadNifti(path);
+  }
+  if (name == "VTK legacy")
+  {
+    return this->ReadLegacy(path);
   }
   if (name == "VTK XML")
   {
     vtkNew<vtkXMLImageDataReader> reader;
     if (!reader->CanReadFile(path.c_str()))
     {
-      return notOfFormat();
+      return this->NotOfFormat(path, format);
+    }
+    const std::string problem = tyndall_io::CheckXmlImageHeader(path);
+    if (!problem.empty())
+    {
+      this->Error = path + ": " + problem;
+      return false;
     }
     reader->SetFileName(path.c_str());
     return this->RunReader(reader, path, format);
-  }
-  if (name == "MetaImage")
-  {
-    vtkNew<vtkMetaImageReader> reader;
-    if (!reader->CanReadFile(path.c_str()))
-    {
-      return notOfFormat();
-    }
-    reader->SetFileName(path.c_str());
-    const bool ok = this->RunReader(reader, path, format);
-    this->Modality = reader->GetModality() ? reader->GetModality() : "";
-    // MetaImage names modalities MET_MOD_CT, MET_MOD_MR, ...
-    if (this->Modality.rfind("MET_MOD_", 0) == 0)
-    {
-      this->Modality = this->Modality.substr(8);
-    }
-    if (this->Modality == "UNKNOWN")
-    {
-      this->Modality.clear();
-    }
-    return ok;
   }
   if (name == "NRRD")
   {
     vtkNew<vtkNrrdReader> reader;
     if (!reader->CanReadFile(path.c_str()))
     {
-      return notOfFormat();
+      return this->NotOfFormat(path, format);
     }
-    reader->SetFileName(path.c_str());
-    return this->RunReader(reader, path, format);
-  }
-  if (name == "NIfTI")
-  {
-    vtkNew<vtkNIFTIImageReader> reader;
-    if (!reader->CanReadFile(path.c_str()))
+    const std::string problem = tyndall_io::CheckNrrdHeader(path);
+    if (!problem.empty())
     {
-      return notOfFormat();
-    }
-    reader->SetFileName(path.c_str());
-    return this->RunReader(reader, path, format);
-  }
-  if (name == "VTK legacy")
-  {
-    vtkNew<vtkDataSetReader> reader;
-    reader->SetFileName(path.c_str());
-    vtkNew<vtkTyndallErrorObserver> quiet; // ReadOutputType reports errors of its own
-    quiet->Watch(reader);
-    const int type = reader->ReadOutputType();
-    reader->RemoveObserver(quiet);
-    if (type < 0)
-    {
-      this->Error = path + ": not a legacy VTK data file" +
-        (quiet->HasErrors() ? " (" + quiet->GetMessages().front() + ")" : std::string());
+      this->Error = path + ": " + problem;
       return false;
     }
-    if (type != VTK_STRUCTURED_POINTS && type != VTK_IMAGE_DATA)
-    {
-      this->Error = path + ": not image data (the legacy file holds a " +
-        std::string(vtkDataObjectTypes::GetClassNameFromTypeId(type)) + ", not structured points)";
-      return false;
-    }
-    return this->RunReader(reader, path, format);
+    reader->SetFileName(path.c_str());
+    return this->RunReader(reader, path, format,
+      [&](double bytes) { return tyndall_io::CheckRawData(tyndall_io::NrrdRawData(path), bytes); });
   }
   vtkNew<vtkSLCReader> reader;
   if (!reader->CanReadFile(path.c_str()))
   {
-    return notOfFormat();
+    return this->NotOfFormat(path, format);
   }
   reader->SetFileName(path.c_str());
   return this->RunReader(reader, path, format);
 }
 
 //------------------------------------------------------------------------------
-bool vtkVolumeFileReader::RunReader(
-  vtkAlgorithm* reader, const std::string& path, const char* format)
+bool vtkVolumeFileReader::NotOfFormat(const std::string& path, const char* format)
+{
+  this->Error = path + ": not a " + format + " file";
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::ReadOpenVDB(const std::string& path)
+{
+  vtkNew<vtkOpenVDBImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->SetMemoryLimit(this->MemoryLimit);
+  reader->SetConvertLevelSetToFog(this->ConvertLevelSetToFog);
+  if (this->GridName && *this->GridName)
+  {
+    reader->SetGridName(this->GridName);
+  }
+  return this->RunReader(reader, path, "OpenVDB");
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::ReadMetaImage(const std::string& path)
+{
+  vtkNew<vtkMetaImageReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return this->NotOfFormat(path, "MetaImage");
+  }
+  reader->SetFileName(path.c_str());
+  const bool ok = this->RunReader(reader, path, "MetaImage",
+    [&](double bytes)
+    { return tyndall_io::CheckRawData(tyndall_io::MetaImageRawData(path), bytes); });
+  this->Modality = reader->GetModality() ? reader->GetModality() : "";
+  // MetaImage names modalities MET_MOD_CT, MET_MOD_MR, ...
+  if (this->Modality.rfind("MET_MOD_", 0) == 0)
+  {
+    this->Modality = this->Modality.substr(8);
+  }
+  if (this->Modality == "UNKNOWN")
+  {
+    this->Modality.clear();
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::ReadNifti(const std::string& path)
+{
+  vtkNew<vtkNIFTIImageReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    return this->NotOfFormat(path, "NIfTI");
+  }
+  // VTK 9.1's reader crashes on an unknown datatype code: the header first.
+  const std::string problem = tyndall_io::CheckNiftiHeader(path);
+  if (!problem.empty())
+  {
+    this->Error = path + ": " + problem;
+    return false;
+  }
+  reader->SetFileName(path.c_str());
+  reader->TimeAsVectorOn(); // every frame, then Frame picks one
+  const bool gzip = EndsWith(Lower(path), ".gz");
+  const bool ok = this->RunReader(reader, path, "NIfTI",
+    [&](double bytes)
+    {
+      tyndall_io::RawData raw; // .nii: the voxels follow the header in the file
+      raw.File = gzip ? std::string() : path;
+      raw.Offset = reader->GetNIFTIHeader()->GetVoxOffset();
+      return tyndall_io::CheckRawData(raw, bytes);
+    });
+  return ok && this->ChooseFrame(path, std::max(1, reader->GetTimeDimension())) &&
+    this->ApplyRescale(reader->GetRescaleSlope(), reader->GetRescaleIntercept());
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::ChooseFrame(const std::string& path, int frames)
+{
+  if (this->Frame >= frames)
+  {
+    this->Error = path + ": frame " + std::to_string(this->Frame) +
+      " requested, but the file has " + std::to_string(frames) +
+      (frames == 1 ? " frame (it is not 4-D)" : " frames");
+    return false;
+  }
+  if (frames == 1)
+  {
+    return true;
+  }
+  vtkDataArray* scalars = this->Image->GetPointData()->GetScalars();
+  if (!scalars || scalars->GetNumberOfComponents() % frames != 0)
+  {
+    this->Error = path + ": the time frames do not match the scalars' components";
+    return false;
+  }
+  // The frames are the components, frame after frame.
+  const int perFrame = scalars->GetNumberOfComponents() / frames;
+  vtkSmartPointer<vtkDataArray> one;
+  one.TakeReference(scalars->NewInstance());
+  one->SetName(scalars->GetName());
+  one->SetNumberOfComponents(perFrame);
+  one->SetNumberOfTuples(scalars->GetNumberOfTuples());
+  for (int c = 0; c < perFrame; ++c)
+  {
+    one->CopyComponent(c, scalars, this->Frame * perFrame + c);
+  }
+  this->Image->GetPointData()->SetScalars(one);
+  this->Notes.push_back("frame " + std::to_string(this->Frame) + " of " + std::to_string(frames) +
+    " of a 4-D file (--frame N picks another)");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::ApplyRescale(double slope, double intercept)
+{
+  // NIfTI: scl_slope 0 (or not finite) means "no scaling".
+  if (!this->Rescale || slope == 0.0 || !std::isfinite(slope) || !std::isfinite(intercept) ||
+    (slope == 1.0 && intercept == 0.0))
+  {
+    return true;
+  }
+  vtkDataArray* scalars = this->Image->GetPointData()->GetScalars();
+  vtkSmartPointer<vtkDataArray> scaled;
+  if (scalars->GetDataType() == VTK_DOUBLE)
+  {
+    scaled = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    scaled = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  scaled->SetName(scalars->GetName());
+  scaled->SetNumberOfComponents(scalars->GetNumberOfComponents());
+  scaled->SetNumberOfTuples(scalars->GetNumberOfTuples());
+  const int components = scalars->GetNumberOfComponents();
+  std::vector<double> tuple(components);
+  for (vtkIdType t = 0; t < scalars->GetNumberOfTuples(); ++t)
+  {
+    scalars->GetTuple(t, tuple.data());
+    for (double& v : tuple)
+    {
+      v = v * slope + intercept;
+    }
+    scaled->SetTuple(t, tuple.data());
+  }
+  this->Image->GetPointData()->SetScalars(scaled);
+  std::ostringstream note;
+  note << "NIfTI scaling applied: value = stored x " << slope << " + " << intercept
+       << " (scl_slope, scl_inter; --no-rescale keeps the stored values)";
+  this->Notes.push_back(note.str());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::ReadLegacy(const std::string& path)
+{
+  vtkNew<vtkDataSetReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkTyndallErrorObserver> quiet; // ReadOutputType reports errors of its own
+  quiet->Watch(reader);
+  const int type = reader->ReadOutputType();
+  reader->RemoveObserver(quiet);
+  if (type < 0)
+  {
+    this->Error = path + ": not a legacy VTK data file" +
+      (quiet->HasErrors() ? " (" + quiet->GetMessages().front() + ")" : std::string());
+    return false;
+  }
+  if (type != VTK_STRUCTURED_POINTS && type != VTK_IMAGE_DATA)
+  {
+    this->Error = path + ": not image data (the legacy file holds a " +
+      std::string(vtkDataObjectTypes::GetClassNameFromTypeId(type)) + ", not structured points)";
+    return false;
+  }
+  // The structured points reader itself, so that its messages reach us: it
+  // only warns about data shorter than declared ("Error reading ... data").
+  vtkNew<vtkStructuredPointsReader> points;
+  points->SetFileName(path.c_str());
+  vtkNew<vtkTyndallErrorObserver> warnings;
+  points->AddObserver(vtkCommand::WarningEvent, warnings);
+  if (!this->RunReader(points, path, "VTK legacy"))
+  {
+    return false;
+  }
+  std::vector<std::string> messages = warnings->GetMessages();
+  messages.insert(messages.end(), this->UnobservedMessages.begin(), this->UnobservedMessages.end());
+  for (const std::string& warning : messages)
+  {
+    if (warning.find("Error reading") != std::string::npos)
+    {
+      this->Error = path + ": the data is shorter than the header declares (" + warning + ")";
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::RunReader(vtkAlgorithm* reader, const std::string& path,
+  const char* format, const std::function<std::string(double)>& checkData)
 {
   // The inner reader's errors become this reader's one line; its progress is ours.
   vtkNew<vtkTyndallErrorObserver> errors;
@@ -412,17 +598,53 @@ bool vtkVolumeFileReader::RunReader(
   progress->SetCallback([](vtkObject*, unsigned long, void* self, void* fraction)
     { static_cast<vtkVolumeFileReader*>(self)->UpdateProgress(*static_cast<double*>(fraction)); });
   reader->AddObserver(vtkCommand::ProgressEvent, progress);
-  reader->Update();
+  // Messages of objects nobody observes (vtkGenericWarningMacro in the
+  // readers' helpers, inner objects) reach the output window: keep them.
+  vtkNew<vtkTyndallErrorObserver> unobserved;
+  vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+  const unsigned long warningTag = window->AddObserver(vtkCommand::WarningEvent, unobserved);
+  const unsigned long errorTag = window->AddObserver(vtkCommand::ErrorEvent, unobserved);
+  std::string thrown;
+  bool read = false;
+  try
+  {
+    read = this->RunPasses(reader, path, checkData, errors);
+  }
+  catch (const std::bad_alloc&)
+  {
+    thrown = "out of memory while reading (do the header's sizes fit the file?)";
+  }
+  catch (const std::exception& e)
+  {
+    thrown = std::string("the reader threw an exception: ") + e.what();
+  }
+  catch (...)
+  {
+    thrown = "the reader threw an unknown exception";
+  }
   reader->RemoveObserver(errors);
   reader->RemoveObserver(progress);
   reader->GetExecutive()->RemoveObserver(errors);
-
-  vtkDataObject* output = reader->GetOutputDataObject(0);
-  if (errors->HasErrors())
+  window->RemoveObserver(warningTag);
+  window->RemoveObserver(errorTag);
+  this->UnobservedMessages = unobserved->GetMessages();
+  if (!thrown.empty() || errors->HasErrors())
   {
-    this->Error = path + ": " + errors->GetMessages().front();
+    std::string message = thrown.empty() ? errors->GetMessages().front() : thrown;
+    // The executive's "Algorithm X returned failure for request" says less
+    // than what the reader told the output window.
+    if (message.rfind("Algorithm ", 0) == 0 && !this->UnobservedMessages.empty())
+    {
+      message = this->UnobservedMessages.front();
+    }
+    this->Error = path + ": " + message.substr(0, 400);
     return false;
   }
+  if (!read)
+  {
+    return false; // a header check failed: Error says which
+  }
+  vtkDataObject* output = reader->GetOutputDataObject(0);
   auto* image = vtkImageData::SafeDownCast(output);
   if (!image)
   {
@@ -433,6 +655,36 @@ bool vtkVolumeFileReader::RunReader(
   this->Image = vtkSmartPointer<vtkImageData>::New();
   this->Image->ShallowCopy(image);
   this->FormatName = format;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::RunPasses(vtkAlgorithm* reader, const std::string& path,
+  const std::function<std::string(double)>& checkData, vtkTyndallErrorObserver* errors)
+{
+  // The header first: its claims are checked before any voxel is allocated.
+  reader->UpdateInformation();
+  if (errors->HasErrors())
+  {
+    return false;
+  }
+  if (!vtkImageData::SafeDownCast(reader->GetOutputDataObject(0)))
+  {
+    return true; // not image data: RunReader says what it is
+  }
+  double bytes = 0.0;
+  std::string problem =
+    tyndall_io::CheckInformation(reader->GetOutputInformation(0), this->MemoryLimit, bytes);
+  if (problem.empty() && checkData)
+  {
+    problem = checkData(bytes);
+  }
+  if (!problem.empty())
+  {
+    this->Error = path + ": " + problem;
+    return false;
+  }
+  reader->Update();
   return true;
 }
 
@@ -520,11 +772,32 @@ bool vtkVolumeFileReader::Finish(const std::string& path)
     this->Image = result;
   }
   AddString(this->Image->GetFieldData(), "TyndallFormat", this->FormatName);
+  if (!this->Notes.empty())
+  {
+    vtkNew<vtkStringArray> notes;
+    notes->SetName("TyndallReadNotes");
+    for (const std::string& note : this->Notes)
+    {
+      notes->InsertNextValue(note);
+    }
+    this->Image->GetFieldData()->AddArray(notes);
+  }
   if (!this->Modality.empty())
   {
     AddString(this->Image->GetFieldData(), "TyndallModality", this->Modality);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkVolumeFileReader::GetNotes()
+{
+  this->NotesText.clear();
+  for (const std::string& note : this->Notes)
+  {
+    this->NotesText += (this->NotesText.empty() ? "" : "\n") + note;
+  }
+  return this->NotesText.c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -534,5 +807,9 @@ void vtkVolumeFileReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "GridName: " << (this->GridName ? this->GridName : "(none)") << "\n";
   os << indent << "Component: " << this->Component << "\n";
+  os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
+  os << indent << "Frame: " << this->Frame << "\n";
+  os << indent << "Rescale: " << (this->Rescale ? "on" : "off") << "\n";
+  os << indent << "ConvertLevelSetToFog: " << (this->ConvertLevelSetToFog ? "on" : "off") << "\n";
   os << indent << "FormatName: " << this->FormatName << "\n";
 }

@@ -30,11 +30,20 @@
  * "SLC", "DICOM") and, when the file names it, "TyndallModality" (the
  * MetaImage "Modality" field: "CT", "MR", ...).
  *
+ * The header is checked before any voxel is read: each VTK reader's
+ * information pass runs first, and the read stops with an error when the
+ * header claims an empty or flat extent, a type that is not numeric, a zero
+ * or non-finite spacing, a non-finite origin, more voxel bytes than
+ * MemoryLimit, or (uncompressed MetaImage, NRRD and NIfTI data) more voxel
+ * bytes than its file holds. Exceptions thrown by a reader (std::bad_alloc
+ * included) are caught and reported.
+ *
  * Errors (a missing or unreadable path, an unknown extension, a file that is
- * not of its extension's format, a reader's error, data that is not an
- * image, no scalars, a flat image, a bad component) are reported with
+ * not of its extension's format, a failed header check, a reader's error,
+ * data that is not an image, no scalars, a bad component) are reported with
  * vtkErrorMacro as one line that starts with the path, and the output is
  * empty. The inner reader's progress is forwarded (ProgressEvent).
+ * Documentation/io.md lists the bad inputs that are tested.
  *
  * Usable from Python: `from tyndall import vtkVolumeFileReader`.
  *
@@ -48,9 +57,12 @@
 #include "vtkImageAlgorithm.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
-#include <string> // For std::string
+#include <functional> // For std::function
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
 class vtkImageData;
+class vtkTyndallErrorObserver;
 
 class TYNDALLIO_EXPORT vtkVolumeFileReader : public vtkImageAlgorithm
 {
@@ -86,6 +98,59 @@ public:
   vtkGetMacro(Component, int);
   ///@}
 
+  ///@{
+  /**
+   * Memory limit in MiB for the voxels a file's header claims, in [1, 1e9];
+   * default 4096. Checked after the header is read and before any voxel is
+   * allocated (the OpenVDB reader gets the same limit). A header that claims
+   * more is an error that names its dimensions and size.
+   */
+  vtkSetClampMacro(MemoryLimit, double, 1.0, 1.0e9);
+  vtkGetMacro(MemoryLimit, double);
+  ///@}
+
+  ///@{
+  /**
+   * The time frame of a 4-D file (a NIfTI file with a time dimension), in
+   * [0, 1000000]; default 0, the first. A frame the file lacks is an error;
+   * the frame read and their number are noted (GetNotes()).
+   */
+  vtkSetClampMacro(Frame, int, 0, 1000000);
+  vtkGetMacro(Frame, int);
+  ///@}
+
+  ///@{
+  /**
+   * Whether a NIfTI file's scaling (value = stored x scl_slope + scl_inter,
+   * when scl_slope is neither 0 nor 1 or scl_inter is not 0) is applied;
+   * default on. Scaled values are float (double for double data); the
+   * scaling is noted (GetNotes()).
+   */
+  vtkSetMacro(Rescale, bool);
+  vtkGetMacro(Rescale, bool);
+  vtkBooleanMacro(Rescale, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether an OpenVDB level set (a signed distance field) is converted to
+   * a fog volume (vtkOpenVDBImageReader::ConvertLevelSetToFog, OpenVDB's
+   * sdfToFogVolume); default off: a level set is refused with an error that
+   * names this switch.
+   */
+  vtkSetMacro(ConvertLevelSetToFog, bool);
+  vtkGetMacro(ConvertLevelSetToFog, bool);
+  vtkBooleanMacro(ConvertLevelSetToFog, bool);
+  ///@}
+
+  /**
+   * What the last read did to the data beyond reading it, one note per line
+   * (NIfTI scaling applied, the frame of a 4-D file); "" if nothing. The
+   * notes are also in the output's field data as the string array
+   * "TyndallReadNotes", which the programs print.
+   */
+  const char* GetNotes();
+
   /**
    * The format of the last successful read ("OpenVDB", "MetaImage", ...,
    * see the class description); empty before one.
@@ -115,6 +180,10 @@ protected:
   char* FileName = nullptr;
   char* GridName = nullptr;
   int Component = -1;
+  double MemoryLimit = 4096.0;
+  int Frame = 0;
+  bool Rescale = true;
+  bool ConvertLevelSetToFog = false;
 
 private:
   vtkVolumeFileReader(const vtkVolumeFileReader&) = delete;
@@ -124,13 +193,26 @@ private:
   bool Read();
   bool ReadDirectory(const std::string& path);
   bool ReadFile(const std::string& path);
-  bool RunReader(vtkAlgorithm* reader, const std::string& path, const char* format);
+  bool NotOfFormat(const std::string& path, const char* format);
+  bool ReadOpenVDB(const std::string& path);
+  bool ReadMetaImage(const std::string& path);
+  bool ReadNifti(const std::string& path);
+  bool ReadLegacy(const std::string& path);
+  bool ChooseFrame(const std::string& path, int frames);
+  bool ApplyRescale(double slope, double intercept);
+  bool RunReader(vtkAlgorithm* reader, const std::string& path, const char* format,
+    const std::function<std::string(double)>& checkData = nullptr);
+  bool RunPasses(vtkAlgorithm* reader, const std::string& path,
+    const std::function<std::string(double)>& checkData, vtkTyndallErrorObserver* errors);
   bool Finish(const std::string& path);
 
   vtkSmartPointer<vtkImageData> Image;
   std::string FormatName;
   std::string Modality;
   std::string Error;
+  std::vector<std::string> Notes;
+  std::vector<std::string> UnobservedMessages; // output-window messages of the last inner read
+  std::string NotesText;
   vtkMTimeType ReadTime = 0;
 };
 

@@ -2,11 +2,11 @@
 // (Testing/CLI/CMakeLists.txt). Subcommands:
 //
 //   run [--exit 0|nonzero|N] [--stdout-has TEXT]... [--stderr-has TEXT]...
-//       [--stderr-lacks TEXT]... [--remove FILE]... [--skip-unless PATH]...
-//       -- PROGRAM ARGS...
+//       [--stderr-lacks TEXT]... [--remove FILE]... [--absent FILE]...
+//       [--skip-unless PATH]... -- PROGRAM ARGS...
 //     Runs PROGRAM, checks its exit status (default 0) and that its stdout /
 //     stderr contain (or lack) the texts. --remove deletes stale outputs
-//     first.
+//     first; --absent files must not exist afterwards (no picture written).
 //   psnr IMAGE BASELINE MIN_DB [--skip-unless PATH]...
 //     PSNR of two 8-bit PNGs over RGB; fails below MIN_DB or without a
 //     baseline (the message names the candidate to review).
@@ -19,8 +19,11 @@
 //     more than 2 levels (something was drawn on the background).
 //   make-data DIR
 //     Writes the synthetic inputs of the loader tests into DIR.
+//   make-bad-inputs DIR [VDB]
+//     Writes the files of the bad-input matrix (Documentation/bad-inputs.md).
 //
 // Exit status: 0 pass, 1 fail, 125 skipped (CTest SKIP_RETURN_CODE).
+#include "TyndallTestData.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -59,6 +62,8 @@
 
 namespace
 {
+using tyndall_test_data::Blob;
+using tyndall_test_data::WriteText;
 constexpr int Pass = 0;
 constexpr int Fail = 1;
 constexpr int Skip = 125;
@@ -86,7 +91,7 @@ bool SkipUnless(const std::vector<std::string>& args, size_t from)
 int Run(const std::vector<std::string>& args)
 {
   std::string exitSpec = "0";
-  std::vector<std::string> stdoutHas, stderrHas, stderrLacks, removes, skipUnless;
+  std::vector<std::string> stdoutHas, stderrHas, stderrLacks, removes, absent, skipUnless;
   size_t i = 0;
   for (; i < args.size() && args[i] != "--"; ++i)
   {
@@ -106,6 +111,8 @@ int Run(const std::vector<std::string>& args)
       stderrLacks.push_back(value);
     else if (option == "--remove")
       removes.push_back(value);
+    else if (option == "--absent")
+      absent.push_back(value);
     else if (option == "--skip-unless")
       skipUnless.push_back(value);
     else
@@ -124,6 +131,10 @@ int Run(const std::vector<std::string>& args)
     }
   }
   for (const auto& path : removes)
+  {
+    vtksys::SystemTools::RemoveFile(path);
+  }
+  for (const auto& path : absent)
   {
     vtksys::SystemTools::RemoveFile(path);
   }
@@ -194,6 +205,14 @@ int Run(const std::vector<std::string>& args)
     if (err.find(text) == std::string::npos)
     {
       std::cout << "FAIL: stderr lacks '" << text << "'\n";
+      ok = false;
+    }
+  }
+  for (const auto& path : absent)
+  {
+    if (vtksys::SystemTools::PathExists(path))
+    {
+      std::cout << "FAIL: " << path << " was written\n";
       ok = false;
     }
   }
@@ -443,145 +462,6 @@ int NonEmpty(const std::vector<std::string>& args)
   return fraction >= minFraction ? Pass : Fail;
 }
 
-// A 24 x 20 x 16 float blob, optionally with `components` components.
-vtkSmartPointer<vtkImageData> Blob(int components)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(24, 20, 16);
-  image->SetSpacing(1.0, 1.0, 1.5);
-  vtkNew<vtkFloatArray> values;
-  values->SetName("blob");
-  values->SetNumberOfComponents(components);
-  values->SetNumberOfTuples(image->GetNumberOfPoints());
-  vtkIdType id = 0;
-  for (int k = 0; k < 16; ++k)
-  {
-    for (int j = 0; j < 20; ++j)
-    {
-      for (int i = 0; i < 24; ++i, ++id)
-      {
-        const double x = (i - 11.5) / 9.0, y = (j - 9.5) / 8.0, z = (k - 7.5) / 6.0;
-        const double r2 = x * x + y * y + z * z;
-        for (int c = 0; c < components; ++c)
-        {
-          values->SetComponent(id, c, (c + 1) * 100.0 * std::exp(-2.0 * r2));
-        }
-      }
-    }
-  }
-  image->GetPointData()->SetScalars(values);
-  return image;
-}
-
-bool WriteText(const std::string& path, const std::string& text)
-{
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  return static_cast<bool>(out);
-}
-
-// A minimal DICOM Part 10 writer (explicit VR little endian, one CT slice
-// per file, int16 Hounsfield-like values): VTK 9.1 reads DICOM but cannot
-// write it, and the tests need a series.
-class DicomWriter
-{
-public:
-  void Element(uint16_t group, uint16_t element, const char* vr, std::string value)
-  {
-    const bool binary = std::strcmp(vr, "OB") == 0 || std::strcmp(vr, "OW") == 0;
-    if (value.size() % 2)
-    {
-      value += std::strcmp(vr, "UI") == 0 || binary ? '\0' : ' ';
-    }
-    this->U16(group);
-    this->U16(element);
-    this->Bytes.append(vr, 2);
-    if (binary)
-    {
-      this->U16(0);
-      this->U32(static_cast<uint32_t>(value.size()));
-    }
-    else
-    {
-      this->U16(static_cast<uint16_t>(value.size()));
-    }
-    this->Bytes += value;
-  }
-  void UnsignedShort(uint16_t group, uint16_t element, uint16_t value)
-  {
-    std::string v(2, '\0');
-    v[0] = static_cast<char>(value & 0xff);
-    v[1] = static_cast<char>(value >> 8);
-    this->Element(group, element, "US", v);
-  }
-  void U16(uint16_t v)
-  {
-    this->Bytes += static_cast<char>(v & 0xff);
-    this->Bytes += static_cast<char>(v >> 8);
-  }
-  void U32(uint32_t v)
-  {
-    this->U16(static_cast<uint16_t>(v & 0xffff));
-    this->U16(static_cast<uint16_t>(v >> 16));
-  }
-  std::string Bytes;
-};
-
-bool WriteDicomSlice(
-  const std::string& path, int slice, int columns, int rows, const std::vector<int16_t>& pixels)
-{
-  const std::string sopClass = "1.2.840.10008.5.1.4.1.1.2"; // CT Image Storage
-  const std::string instance = "1.2.826.0.1.3680043.9.7433.1." + std::to_string(slice + 1);
-  const std::string syntax = "1.2.840.10008.1.2.1"; // explicit VR little endian
-  DicomWriter meta;
-  meta.Element(0x0002, 0x0001, "OB", std::string("\0\1", 2));
-  meta.Element(0x0002, 0x0002, "UI", sopClass);
-  meta.Element(0x0002, 0x0003, "UI", instance);
-  meta.Element(0x0002, 0x0010, "UI", syntax);
-  DicomWriter data;
-  data.Element(0x0008, 0x0016, "UI", sopClass);
-  data.Element(0x0008, 0x0018, "UI", instance);
-  data.Element(0x0008, 0x0060, "CS", "CT");
-  data.Element(0x0010, 0x0010, "PN", "Tyndall^Blob");
-  data.Element(0x0018, 0x0050, "DS", "2");
-  data.Element(0x0020, 0x000D, "UI", "1.2.826.0.1.3680043.9.7433.2");
-  data.Element(0x0020, 0x000E, "UI", "1.2.826.0.1.3680043.9.7433.3");
-  data.Element(0x0020, 0x0013, "IS", std::to_string(slice + 1));
-  data.Element(0x0020, 0x0032, "DS", "0\\0\\" + std::to_string(2 * slice));
-  data.Element(0x0020, 0x0037, "DS", "1\\0\\0\\0\\1\\0");
-  data.Element(0x0020, 0x1041, "DS", std::to_string(2 * slice));
-  data.UnsignedShort(0x0028, 0x0002, 1);
-  data.Element(0x0028, 0x0004, "CS", "MONOCHROME2");
-  data.UnsignedShort(0x0028, 0x0010, static_cast<uint16_t>(rows));
-  data.UnsignedShort(0x0028, 0x0011, static_cast<uint16_t>(columns));
-  data.Element(0x0028, 0x0030, "DS", "1.5\\1.5");
-  data.UnsignedShort(0x0028, 0x0100, 16);
-  data.UnsignedShort(0x0028, 0x0101, 16);
-  data.UnsignedShort(0x0028, 0x0102, 15);
-  data.UnsignedShort(0x0028, 0x0103, 1);
-  data.Element(0x0028, 0x1052, "DS", "0");
-  data.Element(0x0028, 0x1053, "DS", "1");
-  std::string raw(pixels.size() * 2, '\0');
-  for (size_t k = 0; k < pixels.size(); ++k)
-  {
-    const uint16_t v = static_cast<uint16_t>(pixels[k]);
-    raw[2 * k] = static_cast<char>(v & 0xff);
-    raw[2 * k + 1] = static_cast<char>(v >> 8);
-  }
-  data.Element(0x7FE0, 0x0010, "OW", raw);
-
-  DicomWriter length;
-  length.Element(0x0002, 0x0000, "UL", std::string(4, '\0'));
-  const uint32_t metaLength = static_cast<uint32_t>(meta.Bytes.size());
-  for (int b = 0; b < 4; ++b)
-  {
-    length.Bytes[8 + b] = static_cast<char>((metaLength >> (8 * b)) & 0xff);
-  }
-  std::ofstream out(path, std::ios::binary);
-  out << std::string(128, '\0') << "DICM" << length.Bytes << meta.Bytes << data.Bytes;
-  return static_cast<bool>(out);
-}
-
 int MakeData(const std::vector<std::string>& args)
 {
   if (args.size() != 1)
@@ -598,6 +478,20 @@ int MakeData(const std::vector<std::string>& args)
     writer->SetInputData(blob);
     writer->SetFileName((dir + name).c_str());
     writer->Write();
+  }
+  {
+    // NIfTI scaling (value = stored x 0.5 + 1000) and a 4-D file of 3 frames.
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(blob);
+    writer->SetRescaleSlope(0.5);
+    writer->SetRescaleIntercept(1000.0);
+    writer->SetFileName((dir + "/blob-scaled.nii").c_str());
+    writer->Write();
+    vtkNew<vtkNIFTIImageWriter> frames;
+    frames->SetInputData(Blob(3));
+    frames->SetTimeDimension(3);
+    frames->SetFileName((dir + "/blob-4d.nii.gz").c_str());
+    frames->Write();
   }
   {
     vtkNew<vtkMetaImageWriter> writer;
@@ -666,6 +560,11 @@ int MakeData(const std::vector<std::string>& args)
   }
   WriteText(dir + "/garbage.nii", std::string(2000, 'x'));
   WriteText(dir + "/garbage.vdb", std::string(2000, 'x'));
+  if (!tyndall_test_data::WriteLevelSetSphere(dir + "/levelset.vdb"))
+  {
+    std::cout << "cannot write " << dir << "/levelset.vdb\n";
+    return Fail;
+  }
   WriteText(dir + "/missing-raw.mhd",
     "ObjectType = Image\nNDims = 3\nDimSize = 8 8 8\nElementType = MET_UCHAR\n"
     "ElementDataFile = no-such-file.raw\n");
@@ -686,7 +585,10 @@ int MakeData(const std::vector<std::string>& args)
         pixels[j * 32 + i] = static_cast<int16_t>(r < 6.0 ? 1200 : (r < 15.0 ? 40 : -1000));
       }
     }
-    WriteDicomSlice(dir + "/dicom/slice" + std::to_string(k) + ".dcm", k, 32, 28, pixels);
+    tyndall_test_data::DicomSlice slice;
+    slice.Index = k;
+    slice.Pixels = pixels;
+    tyndall_test_data::WriteDicomSlice(dir + "/dicom/slice" + std::to_string(k) + ".dcm", slice);
   }
   vtksys::SystemTools::MakeDirectory(dir + "/not-dicom");
   WriteText(dir + "/not-dicom/notes.txt", "not DICOM\n");
@@ -713,5 +615,7 @@ int main(int argc, char* argv[])
     return NonEmpty(args);
   if (mode == "make-data")
     return MakeData(args);
+  if (mode == "make-bad-inputs" && (args.size() == 1 || args.size() == 2))
+    return tyndall_test_data::MakeBadInputs(args[0], args.size() == 2 ? args[1] : "");
   return Usage();
 }

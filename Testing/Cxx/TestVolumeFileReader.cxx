@@ -24,6 +24,7 @@
 #include "vtkXMLImageDataWriter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -109,9 +110,116 @@ void CheckRead(
   Check(same, format + ": the values");
 }
 
+void CheckError(const std::string& path, const std::string& text, const std::string& what,
+  const char* grid = nullptr, int component = -1);
+
+// The largest |value - (scale * (10 i + j - k + offset) + shift)| over the
+// points of a 6 x 5 x 4 image read like MakeImage(); infinity if the image
+// is not one.
+double Deviation(vtkImageData* image, double scale, double shift, double offset)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || scalars->GetNumberOfComponents() != 1 || scalars->GetNumberOfTuples() != 120)
+  {
+    return HUGE_VAL;
+  }
+  double worst = 0.0;
+  for (int k = 0, n = 0; k < 4; ++k)
+  {
+    for (int j = 0; j < 5; ++j)
+    {
+      for (int i = 0; i < 6; ++i, ++n)
+      {
+        const double expected = scale * (10.0 * i + j - k + offset) + shift;
+        worst = std::max(worst, std::abs(scalars->GetComponent(n, 0) - expected));
+      }
+    }
+  }
+  return worst;
+}
+
+// Reading `path` with frame `frame` fails with `text`.
+void CheckFrameError(const std::string& path, int frame, const std::string& text)
+{
+  vtkNew<vtkVolumeFileReader> reader;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(path.c_str());
+  reader->SetFrame(frame);
+  reader->Update();
+  Check(errors->GetErrorMessage().find(text) != std::string::npos &&
+      reader->GetOutput()->GetNumberOfPoints() == 0,
+    "frame " + std::to_string(frame) + " of " + path + ": '" + errors->GetErrorMessage() + "'");
+}
+
+// NIfTI: scl_slope / scl_inter applied (or not), the frames of a 4-D file.
+void CheckNifti(const std::string& dir)
+{
+  {
+    vtkNew<vtkNIFTIImageWriter> w;
+    w->SetInputData(MakeImage());
+    w->SetRescaleSlope(2.0);
+    w->SetRescaleIntercept(-10.0);
+    w->SetFileName((dir + "/scaled.nii").c_str());
+    w->Write();
+    vtkNew<vtkNIFTIImageWriter> w4;
+    w4->SetInputData(MakeImage(3));
+    w4->SetTimeDimension(3);
+    w4->SetFileName((dir + "/frames.nii.gz").c_str());
+    w4->Write();
+  }
+  vtkNew<vtkVolumeFileReader> reader;
+  reader->SetFileName((dir + "/scaled.nii").c_str());
+  reader->Update();
+  Check(Deviation(reader->GetOutput(), 2.0, -10.0, 0.0) < 1e-5 &&
+      reader->GetOutput()->GetPointData()->GetScalars()->GetDataType() == VTK_FLOAT,
+    "NIfTI: scl_slope 2 and scl_inter -10 applied, as float");
+  Check(std::string(reader->GetNotes()).find("value = stored x 2 + -10") != std::string::npos,
+    "NIfTI: the scaling is noted");
+  reader->RescaleOff();
+  reader->Update();
+  Check(Deviation(reader->GetOutput(), 1.0, 0.0, 0.0) < 1e-5 && !*reader->GetNotes(),
+    "NIfTI: RescaleOff keeps the stored values");
+
+  reader->SetFileName((dir + "/frames.nii.gz").c_str());
+  reader->Update();
+  Check(Deviation(reader->GetOutput(), 1.0, 0.0, 0.0) < 1e-5 &&
+      std::string(reader->GetNotes()) == "frame 0 of 3 of a 4-D file (--frame N picks another)",
+    "NIfTI 4-D: frame 0 by default, noted");
+  reader->SetFrame(2);
+  reader->Update();
+  Check(Deviation(reader->GetOutput(), 1.0, 0.0, 200.0) < 1e-5, "NIfTI 4-D: frame 2");
+  CheckFrameError(dir + "/frames.nii.gz", 3, "frame 3 requested, but the file has 3 frames");
+  CheckFrameError(dir + "/scaled.nii", 1, "frame 1 requested, but the file has 1 frame");
+}
+
+// Header claims checked before reading: size against the memory limit and
+// against the file.
+void CheckClaims(const std::string& dir)
+{
+  std::ofstream(dir + "/huge.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = 2000 2000 2000\n"
+                                      "ElementType = MET_UCHAR\nElementDataFile = huge.raw\n";
+  std::ofstream(dir + "/huge.raw") << std::string(1000, 'x');
+  CheckError(dir + "/huge.mhd", "8000000000 bytes (7.45 GiB), above the memory limit of 4096 MiB",
+    "a header above the memory limit");
+  vtkNew<vtkVolumeFileReader> reader;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName((dir + "/huge.mhd").c_str());
+  reader->SetMemoryLimit(10000.0);
+  reader->Update();
+  Check(errors->GetErrorMessage().find("truncated: the header claims 8000000000 bytes") !=
+        std::string::npos &&
+      errors->GetErrorMessage().find("which holds 1000 bytes") != std::string::npos,
+    "within a larger memory limit, the short raw file is refused (" + errors->GetErrorMessage() +
+      ")");
+}
+
 // Reading `path` fails with an error containing `text`, and an empty output.
 void CheckError(const std::string& path, const std::string& text, const std::string& what,
-  const char* grid = nullptr, int component = -1)
+  const char* grid, int component)
 {
   vtkNew<vtkVolumeFileReader> reader;
   vtkNew<vtkTest::ErrorObserver> errors;
@@ -207,6 +315,9 @@ int TestVolumeFileReader(int, char*[])
     w->Write();
   }
   CheckError(dir + "/flat.vti", "at least 2 points along each axis", "a flat image");
+
+  CheckNifti(dir);
+  CheckClaims(dir);
 
   // The shared samples, when present.
   const std::string shared = TYNDALL_SHARED_DATA;

@@ -1,0 +1,53 @@
+/**
+ * @file   vtkVolumeFileDicom.h
+ * @brief  what a DICOM series' files say about their pixels, checked before VTK reads them
+ *         (private to Tyndall::IO)
+ *
+ * vtkDICOMImageReader (VTK 9.1) sizes the volume from the first slice and
+ * reads every file's pixel data into it without checking: a truncated file
+ * or a slice of another size gives a picture of whatever memory held, and
+ * a compressed transfer syntax gives noise. ScanDicomFile() walks a Part 10
+ * file's elements (explicit or implicit VR little endian, sequences of
+ * defined or undefined length) up to its pixel data and records what the
+ * checks and the placement of the volume need; CheckDicomSeries() compares
+ * the slices. Plain functions in namespace tyndall_io, not wrapped, not
+ * installed.
+ */
+
+#ifndef vtkVolumeFileDicom_h
+#define vtkVolumeFileDicom_h
+
+#include <cstdint> // For std::int64_t
+#include <string>  // For std::string
+#include <vector>  // For std::vector
+
+namespace tyndall_io
+{
+/// One DICOM file as far as the checks need it.
+struct DicomSlice
+{
+  std::string File;
+  std::string TransferSyntax;
+  int Rows = 0;
+  int Columns = 0;
+  int BitsAllocated = 0;
+  int SamplesPerPixel = 1;
+  std::vector<double> Position;     ///< Image Position (Patient), 3 values when present
+  std::vector<double> Orientation;  ///< Image Orientation (Patient), 6 values when present
+  std::vector<double> PixelSpacing; ///< row spacing, column spacing
+  double Slope = 1.0;
+  double Intercept = 0.0;
+  std::int64_t PixelOffset = -1; ///< where the pixel data's value starts
+  std::int64_t PixelLength = -1; ///< its length in bytes
+};
+
+/// Reads `path` into `slice`; "" when its pixel data is present, whole and
+/// uncompressed, else the problem.
+std::string ScanDicomFile(const std::string& path, DicomSlice& slice);
+
+/// The slices agree in size, bits and samples; "" or the problem (naming
+/// two files that differ).
+std::string CheckDicomSeries(const std::vector<DicomSlice>& slices);
+}
+
+#endif
