@@ -1,7 +1,13 @@
 #include "vtkOpenVDBInternals.h"
 
+#include "vtk_zlib.h"
+
 #include <openvdb/io/DelayedLoadMetadata.h>
 #include <openvdb/io/io.h>
+
+#ifdef TYNDALL_HAVE_BLOSC
+#include <blosc.h>
+#endif
 
 #include <cstring>
 
@@ -285,7 +291,7 @@ public:
     }
     // The smallest child (two 4096-byte masks) bounds the count.
     this->S.Need(uint64_t(numChildren) * 8204, "the root's children");
-    std::map<openvdb::Coord, Upper> children; // the root's table: later entries win
+    std::map<openvdb::Coord, Upper> children; // the root's table, by origin
     for (uint32_t n = 0; n < numChildren; ++n)
     {
       int32_t origin[3];
@@ -299,7 +305,14 @@ public:
           this->ReadInternal(4096, [&]() { lower.Leaves.push_back(this->ReadLeafTopology()); });
           upper.Children.push_back(std::move(lower));
         });
-      children[openvdb::Coord(origin[0], origin[1], origin[2])] = std::move(upper);
+      const openvdb::Coord key(origin[0], origin[1], origin[2]);
+      if (children.count(key))
+      {
+        // RootNode::readTopology would overwrite the first child's table
+        // entry and leak it (with its subtree, about 270 KB).
+        OPENVDB_THROW(openvdb::IoError, "corrupted file: two root children at " << key);
+      }
+      children[key] = std::move(upper);
     }
     for (const auto& child : children)
     {
@@ -339,7 +352,7 @@ private:
     {
       activeCount += static_cast<uint32_t>(__builtin_popcountll(word));
     }
-    this->Values(size, maskBytes, activeCount);
+    this->Values(size, maskBytes, activeCount, true);
     for (uint64_t word : childMask)
     {
       for (int bit = 0; bit < 64; ++bit)
@@ -366,8 +379,13 @@ private:
   }
 
   // io::readCompressedValues for `count` values of a node whose masks take
-  // maskBytes and whose value mask has activeCount bits on.
-  void Values(uint32_t count, uint32_t maskBytes, uint32_t activeCount)
+  // maskBytes and whose value mask has activeCount bits on. With `decode`
+  // (an internal node's values, which OpenVDB reads inside readTopology),
+  // a compressed chunk is also decompressed, as OpenVDB will: a failure
+  // there throws out of RootNode::readTopology and leaks the child node it
+  // was reading (about 270 KB), so it must be found first. Leaf values are
+  // read later, into nodes the tree already owns.
+  void Values(uint32_t count, uint32_t maskBytes, uint32_t activeCount, bool decode = false)
   {
     this->S.Need(1, "a value block's flag");
     int8_t flag = 0;
@@ -410,7 +428,17 @@ private:
       }
       else if (this->Compression & openvdb::io::COMPRESS_BLOSC)
       {
+        const std::streampos chunk = this->Is.tellg();
         this->S.BloscChunk(uint64_t(stated), bytes, "a compressed value block");
+        if (decode)
+        {
+          this->Decode(chunk, uint64_t(stated), bytes, true);
+        }
+      }
+      else if (decode)
+      {
+        this->S.Need(uint64_t(stated), "a compressed chunk");
+        this->Decode(this->Is.tellg(), uint64_t(stated), bytes, false);
       }
       else
       {
@@ -420,6 +448,39 @@ private:
     else
     {
       this->S.Skip(bytes, "uncompressed values");
+    }
+  }
+
+  // Decompresses the chunk of chunkBytes at `chunk` (Blosc or zlib) as
+  // io::bloscFromStream / unzipFromStream will, and throws unless it gives
+  // exactly `bytes` bytes. Leaves the stream after the chunk.
+  void Decode(std::streampos chunk, uint64_t chunkBytes, uint64_t bytes, bool blosc)
+  {
+    std::vector<char> in(chunkBytes), out(bytes + 1);
+    this->Is.seekg(chunk);
+    this->Is.read(in.data(), static_cast<std::streamsize>(chunkBytes));
+    bool ok = false;
+    if (blosc)
+    {
+#ifdef TYNDALL_HAVE_BLOSC
+      const int got = blosc_decompress_ctx(in.data(), out.data(), out.size(), 1);
+      ok = got >= 0 && uint64_t(got) == bytes;
+#else
+      ok = true; // without Blosc's header, only the lengths were checked
+#endif
+    }
+    else
+    {
+      uLongf length = static_cast<uLongf>(out.size());
+      ok = uncompress(reinterpret_cast<Bytef*>(out.data()), &length,
+             reinterpret_cast<const Bytef*>(in.data()), static_cast<uLong>(chunkBytes)) == Z_OK &&
+        uint64_t(length) == bytes;
+    }
+    if (!ok)
+    {
+      OPENVDB_THROW(openvdb::IoError,
+        "corrupted file: a " << (blosc ? "Blosc" : "zlib") << " chunk of an internal node does "
+                             << "not decompress to its " << bytes << " bytes");
     }
   }
 

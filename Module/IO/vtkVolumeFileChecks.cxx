@@ -60,6 +60,23 @@ bool SeveralFiles(const std::string& value)
     value.find(' ') != std::string::npos;
 }
 
+// The voxels in `dataFile`, named by `header`, after `offset` bytes (a list
+// or pattern of files is not followed: File stays empty).
+tyndall_io::RawData External(const std::string& header, const std::string& dataFile,
+  std::int64_t offset, const std::string& encoding)
+{
+  tyndall_io::RawData raw;
+  if (SeveralFiles(dataFile))
+  {
+    raw.Encoding = "several files";
+    return raw;
+  }
+  raw.File = Beside(header, dataFile);
+  raw.Offset = offset;
+  raw.Encoding = encoding;
+  return raw;
+}
+
 bool KnownType(int type)
 {
   switch (type)
@@ -457,14 +474,7 @@ RawData MetaImageRawData(const std::string& path)
     raw.Offset = static_cast<std::int64_t>(in.tellg()) + std::max<std::int64_t>(headerSize, 0);
     return raw;
   }
-  if (SeveralFiles(dataFile))
-  {
-    raw.Encoding = "several files";
-    return raw;
-  }
-  raw.File = Beside(path, dataFile);
-  raw.Offset = headerSize;
-  return raw;
+  return External(path, dataFile, headerSize, raw.Encoding);
 }
 
 //------------------------------------------------------------------------------
@@ -530,14 +540,7 @@ RawData NrrdRawData(const std::string& path)
     raw.Offset = static_cast<std::int64_t>(in.tellg());
     return raw;
   }
-  if (SeveralFiles(dataFile))
-  {
-    raw.Encoding = "several files";
-    return raw;
-  }
-  raw.File = Beside(path, dataFile);
-  raw.Offset = byteSkip;
-  return raw;
+  return External(path, dataFile, byteSkip, raw.Encoding);
 }
 }
 

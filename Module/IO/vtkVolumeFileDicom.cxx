@@ -1,8 +1,18 @@
 #include "vtkVolumeFileDicom.h"
 
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
+#include "vtkShortArray.h"
+#include "vtkSmartPointer.h"
 #include "vtksys/FStream.hxx"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -200,6 +210,18 @@ void Record(const Bytes& b, const Element& e, tyndall_io::DicomSlice& slice)
     case Tag(0x0028, 0x0030):
       slice.PixelSpacing = Numbers(Text(b, e));
       break;
+    case Tag(0x0028, 0x0103):
+      slice.PixelRepresentation = us ? b.U16(e.Value) : 0;
+      break;
+    case Tag(0x0028, 0x0008):
+      slice.NumberOfFrames = std::atoi(Text(b, e).c_str());
+      break;
+    case Tag(0x0008, 0x0060):
+      slice.Modality = Text(b, e);
+      break;
+    case Tag(0x0020, 0x000E):
+      slice.SeriesUID = Text(b, e);
+      break;
     case Tag(0x0028, 0x1052):
       slice.Intercept = std::atof(Text(b, e).c_str());
       break;
@@ -294,12 +316,231 @@ std::string CheckDicomSeries(const std::vector<DicomSlice>& slices)
   for (const DicomSlice& s : slices)
   {
     const DicomSlice& first = slices.front();
+    if (s.NumberOfFrames > 1)
+    {
+      return vtksys::SystemTools::GetFilenameName(s.File) + " holds " +
+        std::to_string(s.NumberOfFrames) + " frames; multi-frame files are not read";
+    }
+    if (s.SeriesUID != first.SeriesUID)
+    {
+      return "the directory mixes two series (" + vtksys::SystemTools::GetFilenameName(first.File) +
+        " and " + vtksys::SystemTools::GetFilenameName(s.File) +
+        " have different Series Instance UIDs); give a directory that holds one";
+    }
     if (s.Rows != first.Rows || s.Columns != first.Columns ||
       s.BitsAllocated != first.BitsAllocated || s.SamplesPerPixel != first.SamplesPerPixel)
     {
       return "the slices differ: " + vtksys::SystemTools::GetFilenameName(first.File) + " has " +
         Size(first) + ", " + vtksys::SystemTools::GetFilenameName(s.File) + " has " + Size(s);
     }
+  }
+  return std::string();
+}
+}
+
+namespace
+{
+std::string Vector(const double v[3])
+{
+  std::ostringstream os;
+  os << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
+  return os.str();
+}
+
+// Row and column directions (unit) from the orientation tag; false if the
+// tag is missing or degenerate.
+bool Directions(const tyndall_io::DicomSlice& s, double row[3], double column[3])
+{
+  if (s.Orientation.size() != 6)
+  {
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    row[a] = s.Orientation[a];
+    column[a] = s.Orientation[3 + a];
+  }
+  const double nr = vtkMath::Normalize(row), nc = vtkMath::Normalize(column);
+  return nr > 1e-6 && nc > 1e-6 && std::abs(vtkMath::Dot(row, column)) < 1e-3;
+}
+
+// A stored pixel value (little endian, `bytes` wide, signed or not).
+double Stored(const unsigned char* p, int bytes, bool isSigned)
+{
+  if (bytes == 1)
+  {
+    return isSigned ? static_cast<signed char>(p[0]) : p[0];
+  }
+  if (bytes == 2)
+  {
+    const std::uint16_t u = static_cast<std::uint16_t>(p[0] | (p[1] << 8));
+    return isSigned ? static_cast<std::int16_t>(u) : u;
+  }
+  const std::uint32_t u = static_cast<std::uint32_t>(p[0]) |
+    (static_cast<std::uint32_t>(p[1]) << 8) | (static_cast<std::uint32_t>(p[2]) << 16) |
+    (static_cast<std::uint32_t>(p[3]) << 24);
+  return isSigned ? static_cast<double>(static_cast<std::int32_t>(u)) : static_cast<double>(u);
+}
+
+// The array type that holds every rescaled value exactly (short, int) or
+// float.
+vtkSmartPointer<vtkDataArray> ValueArray(const std::vector<tyndall_io::DicomSlice>& slices)
+{
+  const tyndall_io::DicomSlice& first = slices.front();
+  bool integral = true;
+  double low = 0.0, high = 0.0;
+  const int bytes = first.BitsAllocated / 8;
+  const bool isSigned = first.PixelRepresentation == 1;
+  const double storedLow = isSigned ? -std::ldexp(1.0, 8 * bytes - 1) : 0.0;
+  const double storedHigh =
+    isSigned ? std::ldexp(1.0, 8 * bytes - 1) - 1 : std::ldexp(1.0, 8 * bytes) - 1;
+  for (size_t k = 0; k < slices.size(); ++k)
+  {
+    const auto& s = slices[k];
+    integral = integral && s.Slope == std::floor(s.Slope) && s.Intercept == std::floor(s.Intercept);
+    const double a = storedLow * s.Slope + s.Intercept, b = storedHigh * s.Slope + s.Intercept;
+    low = k ? std::min({ low, a, b }) : std::min(a, b);
+    high = k ? std::max({ high, a, b }) : std::max(a, b);
+  }
+  if (integral && low >= VTK_SHORT_MIN && high <= VTK_SHORT_MAX)
+  {
+    return vtkSmartPointer<vtkShortArray>::New();
+  }
+  if (integral && low >= VTK_INT_MIN && high <= VTK_INT_MAX)
+  {
+    return vtkSmartPointer<vtkIntArray>::New();
+  }
+  return vtkSmartPointer<vtkFloatArray>::New();
+}
+
+// Fills slice k of `values` from its file's pixel data.
+bool ReadPixels(const tyndall_io::DicomSlice& s, vtkIdType first, vtkDataArray* values)
+{
+  const int bytes = s.BitsAllocated / 8;
+  const vtkIdType count = static_cast<vtkIdType>(s.Rows) * s.Columns;
+  std::vector<unsigned char> raw(static_cast<size_t>(count) * bytes);
+  vtksys::ifstream in(s.File.c_str(), std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(s.PixelOffset));
+  in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size()));
+  if (in.gcount() != static_cast<std::streamsize>(raw.size()))
+  {
+    return false;
+  }
+  const bool isSigned = s.PixelRepresentation == 1;
+  for (vtkIdType p = 0; p < count; ++p)
+  {
+    values->SetTuple1(first + p, Stored(&raw[p * bytes], bytes, isSigned) * s.Slope + s.Intercept);
+  }
+  return true;
+}
+}
+
+namespace tyndall_io
+{
+//------------------------------------------------------------------------------
+std::string ReadDicomSeries(std::vector<DicomSlice> slices, double memoryLimitMiB,
+  vtkImageData* image, std::vector<std::string>& notes)
+{
+  DicomSlice& first = slices.front();
+  if (first.SamplesPerPixel != 1)
+  {
+    return "colour DICOM images (" + std::to_string(first.SamplesPerPixel) +
+      " samples per pixel) are not volumes";
+  }
+  double row[3] = { 1, 0, 0 }, column[3] = { 0, 1, 0 }, normal[3];
+  if (!Directions(first, row, column))
+  {
+    row[0] = column[1] = 1.0;
+    row[1] = row[2] = column[0] = column[2] = 0.0;
+    notes.push_back("DICOM: no usable Image Orientation (Patient); the image axes are used");
+  }
+  vtkMath::Cross(row, column, normal);
+  // Slices sorted by their position along the normal.
+  const bool positioned = std::all_of(
+    slices.begin(), slices.end(), [](const DicomSlice& s) { return s.Position.size() == 3; });
+  std::vector<double> depth(slices.size());
+  for (size_t k = 0; k < slices.size(); ++k)
+  {
+    depth[k] =
+      positioned ? vtkMath::Dot(slices[k].Position.data(), normal) : static_cast<double>(k);
+  }
+  std::vector<size_t> order(slices.size());
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    order[k] = k;
+  }
+  std::stable_sort(
+    order.begin(), order.end(), [&](size_t a, size_t b) { return depth[a] < depth[b]; });
+  if (!positioned)
+  {
+    notes.push_back("DICOM: no Image Position (Patient) in some files; slices in file-name order, "
+                    "1 apart");
+  }
+  const size_t n = slices.size();
+  const double gap = n > 1 ? (depth[order[n - 1]] - depth[order[0]]) / (n - 1) : 1.0;
+  for (size_t k = 1; k < n; ++k)
+  {
+    const double step = depth[order[k]] - depth[order[k - 1]];
+    if (!(std::abs(step - gap) <= 0.01 * std::abs(gap)) || gap <= 0.0)
+    {
+      return "the slices are not evenly spaced along the normal " + Vector(normal) + ": " +
+        vtksys::SystemTools::GetFilenameName(slices[order[k - 1]].File) + " and " +
+        vtksys::SystemTools::GetFilenameName(slices[order[k]].File) + " are " +
+        std::to_string(step) + " mm apart, the mean gap is " + std::to_string(gap) +
+        " mm (a missing slice, two series, or a tilted gantry?)";
+    }
+  }
+  double spacing[3] = { 1.0, 1.0, gap };
+  if (first.PixelSpacing.size() == 2)
+  {
+    spacing[0] = first.PixelSpacing[1]; // between columns: along the row direction
+    spacing[1] = first.PixelSpacing[0]; // between rows: along the column direction
+  }
+  for (double v : spacing)
+  {
+    if (!std::isfinite(v) || v <= 0.0)
+    {
+      return "the spacing " + Vector(spacing) + " is not finite and non-zero along every axis";
+    }
+  }
+  std::vector<DicomSlice> sorted;
+  for (size_t k : order)
+  {
+    sorted.push_back(slices[k]);
+  }
+  vtkSmartPointer<vtkDataArray> values = ValueArray(sorted);
+  const double points = static_cast<double>(first.Columns) * first.Rows * n;
+  if (points * values->GetDataTypeSize() > memoryLimitMiB * 1024.0 * 1024.0)
+  {
+    return "the series claims " + std::to_string(first.Columns) + " x " +
+      std::to_string(first.Rows) + " x " + std::to_string(n) +
+      " points, above the memory limit of " +
+      std::to_string(static_cast<long long>(memoryLimitMiB)) + " MiB";
+  }
+  values->SetName("DICOM");
+  values->SetNumberOfTuples(static_cast<vtkIdType>(points));
+  const vtkIdType perSlice = static_cast<vtkIdType>(first.Columns) * first.Rows;
+  for (size_t k = 0; k < n; ++k)
+  {
+    if (!ReadPixels(sorted[k], static_cast<vtkIdType>(k) * perSlice, values))
+    {
+      return vtksys::SystemTools::GetFilenameName(sorted[k].File) + ": cannot read its pixel data";
+    }
+  }
+  image->SetDimensions(first.Columns, first.Rows, static_cast<int>(n));
+  image->SetSpacing(spacing);
+  image->SetOrigin(
+    positioned ? sorted.front().Position.data() : std::vector<double>(3, 0.0).data());
+  const double direction[9] = { row[0], column[0], normal[0], row[1], column[1], normal[1], row[2],
+    column[2], normal[2] };
+  image->SetDirectionMatrix(direction);
+  image->GetPointData()->SetScalars(values);
+  if (first.Slope != 1.0 || first.Intercept != 0.0)
+  {
+    std::ostringstream note;
+    note << "DICOM rescale applied: value = stored x " << first.Slope << " + " << first.Intercept
+         << " (Rescale Slope, Rescale Intercept)";
+    notes.push_back(note.str());
   }
   return std::string();
 }

@@ -3,7 +3,6 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
-#include "vtkDICOMImageReader.h"
 #include "vtkDataArray.h"
 #include "vtkDataObjectTypes.h"
 #include "vtkDataSetReader.h"
@@ -291,21 +290,25 @@ bool vtkVolumeFileReader::ReadDirectory(const std::string& path)
     this->Error = path + ": " + problem;
     return false;
   }
-  vtkNew<vtkDICOMImageReader> reader;
-  // Files that are not DICOM (a DICOMDIR, notes) are skipped with a warning
-  // each: keep them quiet.
-  vtkNew<vtkTyndallErrorObserver> quiet;
-  reader->AddObserver(vtkCommand::WarningEvent, quiet);
-  reader->SetDirectoryName(path.c_str());
-  if (!this->RunReader(reader, path, "DICOM"))
+  // Read here rather than by vtkDICOMImageReader, which flips the rows, ignores
+  // the orientation tags and trusts every file: the patient frame.
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  try
   {
+    problem = tyndall_io::ReadDicomSeries(slices, this->MemoryLimit, image, this->Notes);
+  }
+  catch (const std::bad_alloc&)
+  {
+    problem = "out of memory while reading the series";
+  }
+  if (!problem.empty())
+  {
+    this->Error = path + ": " + problem;
     return false;
   }
-  if (this->Image->GetNumberOfPoints() <= 0)
-  {
-    this->Error = path + ": no DICOM images found in the directory";
-    return false;
-  }
+  this->Image = image;
+  this->FormatName = "DICOM";
+  this->Modality = slices.front().Modality;
   return true;
 }
 

@@ -14,7 +14,7 @@
  * | .nii .nii.gz | NIfTI-1 | vtkNIFTIImageReader |
  * | .vtk | legacy VTK structured points | vtkDataSetReader |
  * | .slc | SLC | vtkSLCReader |
- * | a directory | a DICOM series (Part 10 files, "DICM" at byte 128) | vtkDICOMImageReader |
+ * | a directory | a DICOM series (Part 10 files, "DICM" at byte 128) | its own (below) |
  *
  * The output is one image with one active one-component numeric scalar
  * array: point scalars, or cell scalars when the file has only those; when
@@ -29,6 +29,15 @@
  * (one of "OpenVDB", "VTK XML", "MetaImage", "NRRD", "NIfTI", "VTK legacy",
  * "SLC", "DICOM") and, when the file names it, "TyndallModality" (the
  * MetaImage "Modality" field: "CT", "MR", ...).
+ *
+ * A DICOM series is read by this class itself, not by vtkDICOMImageReader
+ * (which flips the rows, ignores the orientation tags and trusts every
+ * file): uncompressed little-endian slices, one per file, sorted by their
+ * position along the slice normal and evenly spaced, placed in the patient
+ * frame (origin = the first slice's Image Position (Patient), direction
+ * matrix = row, column and normal directions of Image Orientation
+ * (Patient)), Rescale Slope and Intercept applied; the Modality tag is
+ * kept as "TyndallModality".
  *
  * The header is checked before any voxel is read: each VTK reader's
  * information pass runs first, and the read stops with an error when the

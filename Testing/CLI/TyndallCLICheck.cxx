@@ -57,6 +57,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -462,6 +463,74 @@ int NonEmpty(const std::vector<std::string>& args)
   return fraction >= minFraction ? Pass : Fail;
 }
 
+// An asymmetric CT-like volume (HU): a soft-tissue ball with a bone lump off
+// its centre on every axis, 32 x 28 x 12 at spacing (1.25, 1.5, 2).
+int16_t CtValue(int i, int j, int k)
+{
+  const double x = (i - 15.5) * 1.25, y = (j - 13.5) * 1.5, z = (k - 5.5) * 2.0;
+  const double dx = x - 6.0, dy = y + 5.0, dz = z - 3.0;
+  if (dx * dx + dy * dy + dz * dz < 25.0)
+  {
+    return 1200;
+  }
+  return static_cast<int16_t>(x * x + y * y + z * z < 225.0 ? 40 : -1000);
+}
+
+// The CT volume as a DICOM series (stored HU + 1024 with Rescale Intercept
+// -1024, files named against the order of their positions) and as a
+// MetaImage at the same place; and a DICOM series whose rows run along +y
+// (Image Orientation (Patient) 0\1\0\-1\0\0) beside a VTI with that direction
+// matrix. Each pair must render alike.
+void WriteCtThreeWays(const std::string& dir)
+{
+  const int columns = 32, rows = 28, slices = 12;
+  const double origin[3] = { -20.0, -20.0, 10.0 };
+  vtksys::SystemTools::MakeDirectory(dir + "/ct-dicom");
+  vtksys::SystemTools::MakeDirectory(dir + "/ct-dicom-rotated");
+  std::string raw;
+  auto volume = vtkSmartPointer<vtkImageData>::New();
+  volume->SetDimensions(columns, rows, slices);
+  volume->SetSpacing(1.25, 1.5, 2.0);
+  volume->SetOrigin(origin);
+  volume->AllocateScalars(VTK_SHORT, 1);
+  for (int k = 0; k < slices; ++k)
+  {
+    tyndall_test_data::DicomSlice slice;
+    slice.Index = slices - 1 - k; // file names against the positions
+    slice.Columns = columns;
+    slice.Rows = rows;
+    slice.PixelSpacing = "1.5\\1.25"; // between rows \ between columns
+    slice.Intercept = "-1024";
+    for (int j = 0; j < rows; ++j)
+    {
+      for (int i = 0; i < columns; ++i)
+      {
+        const int16_t hu = CtValue(i, j, k);
+        slice.Pixels.push_back(static_cast<int16_t>(hu + 1024));
+        raw.append(reinterpret_cast<const char*>(&hu), 2);
+        volume->SetScalarComponentFromDouble(i, j, k, 0, hu);
+      }
+    }
+    std::ostringstream position;
+    position << origin[0] << "\\" << origin[1] << "\\" << origin[2] + 2.0 * k;
+    slice.Position = position.str();
+    const std::string name = "/im" + std::to_string(slice.Index) + ".dcm";
+    tyndall_test_data::WriteDicomSlice(dir + "/ct-dicom" + name, slice);
+    slice.Orientation = "0\\1\\0\\-1\\0\\0";
+    tyndall_test_data::WriteDicomSlice(dir + "/ct-dicom-rotated" + name, slice);
+  }
+  WriteText(dir + "/ct.mhd",
+    "ObjectType = Image\nNDims = 3\nDimSize = 32 28 12\nElementSpacing = 1.25 1.5 2\n"
+    "Offset = -20 -20 10\nElementType = MET_SHORT\nElementDataFile = ct.raw\n");
+  WriteText(dir + "/ct.raw", raw);
+  const double rotated[9] = { 0, -1, 0, 1, 0, 0, 0, 0, 1 };
+  volume->SetDirectionMatrix(rotated);
+  vtkNew<vtkXMLImageDataWriter> writer;
+  writer->SetInputData(volume);
+  writer->SetFileName((dir + "/ct-rotated.vti").c_str());
+  writer->Write();
+}
+
 int MakeData(const std::vector<std::string>& args)
 {
   if (args.size() != 1)
@@ -590,6 +659,7 @@ int MakeData(const std::vector<std::string>& args)
     slice.Pixels = pixels;
     tyndall_test_data::WriteDicomSlice(dir + "/dicom/slice" + std::to_string(k) + ".dcm", slice);
   }
+  WriteCtThreeWays(dir);
   vtksys::SystemTools::MakeDirectory(dir + "/not-dicom");
   WriteText(dir + "/not-dicom/notes.txt", "not DICOM\n");
   std::cout << "wrote the loader test data into " << dir << "\n";
