@@ -50,6 +50,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -68,7 +69,7 @@ std::string Description()
     "right-drag zoom, ctrl+left-drag or L+left-drag move the key light.\n"
     "Script commands (--script, --events): orbit AZ EL, pan DX DY, zoom F,\n"
     "light AZ EL, drag BUTTON[+shift|+ctrl|+l] DX DY, key K, frames N,\n"
-    "resize W H, hud on|off, screenshot PATH, quit.\n\n"
+    "resize W H, hud on|off, screenshot PATH, report, quit.\n\n"
     "Volumes it reads:\n";
   return text + vtkVolumeFileReader::GetFormatsDescription();
 }
@@ -278,7 +279,7 @@ std::string ValidateCommand(const Command& c)
   {
     return c.Args.size() == 1 ? "" : "needs one file name";
   }
-  if (c.Verb == "quit")
+  if (c.Verb == "quit" || c.Verb == "report")
   {
     return c.Args.empty() ? "" : "takes no arguments";
   }
@@ -390,6 +391,7 @@ private:
   void Drag(DragMode mode, double dx, double dy);
   void Key(int key);
   void Execute(const Command& c);
+  void Report();
 
   // GLFW callbacks.
   static Viewer* From(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
@@ -920,6 +922,36 @@ void Viewer::Key(int key)
   this->NeedsRender = true;
 }
 
+// One stdout line on the process and its GL context, for soak runs:
+// resident memory and the live OpenGL objects among the first 16384 names.
+void Viewer::Report()
+{
+  long pages = 0, resident = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r"))
+  {
+    if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2)
+    {
+      resident = 0;
+    }
+    std::fclose(f);
+  }
+  glfwMakeContextCurrent(this->Window);
+  int live[5] = { 0, 0, 0, 0, 0 };
+  for (GLuint id = 1; id <= 16384; ++id)
+  {
+    live[0] += glIsTexture(id);
+    live[1] += glIsBuffer(id);
+    live[2] += glIsFramebuffer(id);
+    live[3] += glIsProgram(id);
+    live[4] += glIsVertexArray(id);
+  }
+  std::cout << "report frame " << this->FrameNumber << " rss-mib " << std::fixed
+            << std::setprecision(1) << resident * (sysconf(_SC_PAGESIZE) / 1048576.0)
+            << std::defaultfloat << " textures " << live[0] << " buffers " << live[1]
+            << " framebuffers " << live[2] << " programs " << live[3] << " vertex-arrays "
+            << live[4] << std::endl;
+}
+
 void Viewer::Execute(const Command& c)
 {
   // Arguments were validated when the script was read.
@@ -967,6 +999,10 @@ void Viewer::Execute(const Command& c)
   else if (c.Verb == "quit")
   {
     this->Quit = true;
+  }
+  else if (c.Verb == "report")
+  {
+    this->Report();
   }
   // "frames N" is counted by Run().
   this->NeedsRender = true;

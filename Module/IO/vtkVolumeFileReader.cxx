@@ -14,7 +14,9 @@
 #include "vtkImageExtractComponents.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMetaImageReader.h"
 #include "vtkNIFTIImageHeader.h"
 #include "vtkNIFTIImageReader.h"
@@ -462,8 +464,62 @@ bool vtkVolumeFileReader::ReadNifti(const std::string& path)
       raw.Offset = reader->GetNIFTIHeader()->GetVoxOffset();
       return tyndall_io::CheckRawData(raw, bytes);
     });
-  return ok && this->ChooseFrame(path, std::max(1, reader->GetTimeDimension())) &&
-    this->ApplyRescale(reader->GetRescaleSlope(), reader->GetRescaleIntercept());
+  if (!ok || !this->ChooseFrame(path, std::max(1, reader->GetTimeDimension())) ||
+    !this->ApplyRescale(reader->GetRescaleSlope(), reader->GetRescaleIntercept()))
+  {
+    return false;
+  }
+  // The placement: the sform when its code says it is set, else the qform.
+  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  vtkMatrix4x4* placement = header->GetSFormCode() > 0 ? reader->GetSFormMatrix()
+    : header->GetQFormCode() > 0                       ? reader->GetQFormMatrix()
+                                                       : nullptr;
+  if (placement)
+  {
+    return this->PlaceNifti(path, placement, header->GetSFormCode() > 0 ? "sform" : "qform");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::PlaceNifti(
+  const std::string& path, vtkMatrix4x4* placement, const char* which)
+{
+  // VTK's NIfTI reader gives the image in index x pixdim coordinates and a
+  // matrix from those to NIfTI's RAS millimetres; the other formats (DICOM,
+  // ITK's MetaImage) are in the LPS patient frame: x and y change sign.
+  double spacing[3], axes[3][3], origin[3], first[3];
+  this->Image->GetSpacing(spacing);
+  this->Image->GetOrigin(first);
+  for (int r = 0; r < 3; ++r)
+  {
+    const double sign = r < 2 ? -1.0 : 1.0;
+    origin[r] = sign *
+      (placement->GetElement(r, 0) * first[0] + placement->GetElement(r, 1) * first[1] +
+        placement->GetElement(r, 2) * first[2] + placement->GetElement(r, 3));
+    for (int a = 0; a < 3; ++a)
+    {
+      axes[a][r] = sign * placement->GetElement(r, a) * spacing[a];
+    }
+  }
+  double direction[9];
+  for (int a = 0; a < 3; ++a)
+  {
+    spacing[a] = vtkMath::Norm(axes[a]);
+    if (!std::isfinite(spacing[a]) || spacing[a] == 0.0)
+    {
+      this->Error = path + ": the " + std::string(which) + " matrix is degenerate";
+      return false;
+    }
+    for (int r = 0; r < 3; ++r)
+    {
+      direction[3 * r + a] = axes[a][r] / spacing[a];
+    }
+  }
+  this->Image->SetOrigin(origin);
+  this->Image->SetSpacing(spacing);
+  this->Image->SetDirectionMatrix(direction);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,11 @@
  * "SLC", "DICOM") and, when the file names it, "TyndallModality" (the
  * MetaImage "Modality" field: "CT", "MR", ...).
  *
+ * A NIfTI file with an sform (sform_code > 0) or else a qform is placed by
+ * it, in the LPS patient frame of DICOM and MetaImage (NIfTI's RAS with x
+ * and y negated): origin, spacing and direction matrix; without either it
+ * keeps VTK's placement (origin 0, spacing pixdim).
+ *
  * A DICOM series is read by this class itself, not by vtkDICOMImageReader
  * (which flips the rows, ignores the orientation tags and trusts every
  * file): uncompressed little-endian slices, one per file, sorted by their
@@ -71,6 +76,7 @@
 #include <vector>     // For std::vector
 
 class vtkImageData;
+class vtkMatrix4x4;
 class vtkTyndallErrorObserver;
 
 class TYNDALLIO_EXPORT vtkVolumeFileReader : public vtkImageAlgorithm
@@ -209,6 +215,7 @@ private:
   bool ReadLegacy(const std::string& path);
   bool ChooseFrame(const std::string& path, int frames);
   bool ApplyRescale(double slope, double intercept);
+  bool PlaceNifti(const std::string& path, vtkMatrix4x4* placement, const char* which);
   bool RunReader(vtkAlgorithm* reader, const std::string& path, const char* format,
     const std::function<std::string(double)>& checkData = nullptr);
   bool RunPasses(vtkAlgorithm* reader, const std::string& path,

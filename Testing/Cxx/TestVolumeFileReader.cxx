@@ -12,6 +12,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMetaImageWriter.h"
 #include "vtkNIFTIImageWriter.h"
 #include "vtkNew.h"
@@ -194,6 +195,59 @@ void CheckNifti(const std::string& dir)
   CheckFrameError(dir + "/scaled.nii", 1, "frame 1 requested, but the file has 1 frame");
 }
 
+// NIfTI placement: a qform (or sform) turning the image 90 degrees about z
+// and moving it to (10, 20, 30) in RAS comes out in the LPS frame of the
+// other formats: with MakeImage()'s spacing (0.5, 0.25, 1), RAS x = 10 -
+// 0.25 j, y = 20 + 0.5 i, z = 30 + k (worked out by hand), so index
+// (i, j, k) is at LPS (-10 + 0.25 j, -20 - 0.5 i, 30 + k).
+void CheckNiftiPlacement(const std::string& dir)
+{
+  for (const char* form : { "qform", "sform" })
+  {
+    vtkNew<vtkMatrix4x4> m;
+    const double rows[3][4] = { { 0, -1, 0, 10 }, { 1, 0, 0, 20 }, { 0, 0, 1, 30 } };
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        m->SetElement(r, c, rows[r][c]);
+      }
+    }
+    auto image = MakeImage();
+    image->SetOrigin(0.0, 0.0, 0.0);
+    image->SetExtent(0, 5, 0, 4, 0, 3);
+    vtkNew<vtkNIFTIImageWriter> w;
+    w->SetInputData(image);
+    std::string(form) == "qform" ? w->SetQFormMatrix(m) : w->SetSFormMatrix(m);
+    const std::string path = dir + "/placed-" + form + ".nii";
+    w->SetFileName(path.c_str());
+    w->Write();
+    vtkNew<vtkVolumeFileReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    double worst = 0.0;
+    for (int k : { 0, 3 })
+    {
+      for (int j : { 0, 4 })
+      {
+        for (int i : { 0, 5 })
+        {
+          double p[3];
+          reader->GetOutput()->TransformIndexToPhysicalPoint(i, j, k, p);
+          const double expected[3] = { -10.0 + 0.25 * j, -20.0 - 0.5 * i, 30.0 + k };
+          for (int a = 0; a < 3; ++a)
+          {
+            worst = std::max(worst, std::abs(p[a] - expected[a]));
+          }
+        }
+      }
+    }
+    Check(worst < 1e-5 && Deviation(reader->GetOutput(), 1.0, 0.0, 0.0) < 1e-5,
+      std::string("NIfTI ") + form + ": placed in the LPS frame (worst " + std::to_string(worst) +
+        ")");
+  }
+}
+
 // Header claims checked before reading: size against the memory limit and
 // against the file.
 void CheckClaims(const std::string& dir)
@@ -317,6 +371,7 @@ int TestVolumeFileReader(int, char*[])
   CheckError(dir + "/flat.vti", "at least 2 points along each axis", "a flat image");
 
   CheckNifti(dir);
+  CheckNiftiPlacement(dir);
   CheckClaims(dir);
 
   // The shared samples, when present.
