@@ -16,6 +16,7 @@
 #include <cstring>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace
@@ -75,6 +76,36 @@ tyndall_io::RawData External(const std::string& header, const std::string& dataF
   raw.Offset = offset;
   raw.Encoding = encoding;
   return raw;
+}
+
+// The "field: value" lines of an NRRD header, in order (comments and
+// key:=value lines skipped). The header ends at its first empty line, whose
+// end `end` receives (-1 when the file is all header: a detached one).
+std::vector<std::pair<std::string, std::string>> NrrdFields(
+  const std::string& path, std::int64_t& end)
+{
+  std::vector<std::pair<std::string, std::string>> fields;
+  end = -1;
+  vtksys::ifstream in(path.c_str(), std::ios::binary);
+  std::string line;
+  while (std::getline(in, line) && in.tellg() < (1 << 22))
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      end = static_cast<std::int64_t>(in.tellg());
+      break;
+    }
+    const size_t colon = line.find(": ");
+    if (line[0] != '#' && colon != std::string::npos)
+    {
+      fields.emplace_back(line.substr(0, colon), Trim(line.substr(colon + 2)));
+    }
+  }
+  return fields;
 }
 
 bool KnownType(int type)
@@ -481,44 +512,25 @@ RawData MetaImageRawData(const std::string& path)
 RawData NrrdRawData(const std::string& path)
 {
   RawData raw;
-  vtksys::ifstream in(path.c_str(), std::ios::binary);
-  std::string line, dataFile;
+  std::string dataFile;
   std::string encoding = "raw";
-  std::int64_t byteSkip = 0;
-  bool blank = false;
-  // The header ends at its first empty line (or at the end of a detached
-  // header); fields are "name: value".
-  while (std::getline(in, line) && in.tellg() < (1 << 22))
+  std::int64_t byteSkip = 0, end = -1;
+  for (const auto& f : NrrdFields(path, end))
   {
-    if (!line.empty() && line.back() == '\r')
+    if (f.first == "encoding")
     {
-      line.pop_back();
+      encoding = Lower(f.second);
     }
-    if (line.empty())
+    else if (f.first == "data file" || f.first == "datafile")
     {
-      blank = true;
-      break;
+      dataFile = f.second;
     }
-    const size_t colon = line.find(": ");
-    if (line[0] == '#' || colon == std::string::npos)
+    else if (f.first == "byte skip" || f.first == "byteskip")
     {
-      continue;
-    }
-    const std::string field = line.substr(0, colon);
-    const std::string value = Trim(line.substr(colon + 2));
-    if (field == "encoding")
-    {
-      encoding = Lower(value);
-    }
-    else if (field == "data file" || field == "datafile")
-    {
-      dataFile = value;
-    }
-    else if (field == "byte skip" || field == "byteskip")
-    {
-      byteSkip = std::atoll(value.c_str());
+      byteSkip = std::atoll(f.second.c_str());
     }
   }
+  const bool blank = end >= 0;
   if (encoding == "gzip" || encoding == "gz")
   {
     encoding = "zlib";
@@ -537,7 +549,7 @@ RawData NrrdRawData(const std::string& path)
       return raw;
     }
     raw.File = path;
-    raw.Offset = static_cast<std::int64_t>(in.tellg());
+    raw.Offset = end;
     return raw;
   }
   return External(path, dataFile, byteSkip, raw.Encoding);
@@ -646,25 +658,11 @@ std::string CheckNrrdHeader(const std::string& path)
     "int32", "int32_t", "uint", "unsigned int", "uint32", "uint32_t", "longlong", "long long",
     "long long int", "signed long long", "signed long long int", "int64", "int64_t", "ulonglong",
     "unsigned long long", "unsigned long long int", "uint64", "uint64_t", "float", "double" };
-  vtksys::ifstream in(path.c_str(), std::ios::binary);
-  std::string line;
-  while (std::getline(in, line) && in.tellg() < (1 << 22))
+  std::int64_t headerEnd = -1;
+  for (const auto& f : NrrdFields(path, headerEnd))
   {
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    if (line.empty())
-    {
-      break;
-    }
-    const size_t colon = line.find(": ");
-    if (line[0] == '#' || colon == std::string::npos)
-    {
-      continue;
-    }
-    const std::string field = line.substr(0, colon);
-    const std::string value = Trim(line.substr(colon + 2));
+    const std::string& field = f.first;
+    const std::string& value = f.second;
     if (field == "type" && std::find(std::begin(types), std::end(types), value) == std::end(types))
     {
       return "unknown NRRD type '" + value + "'";
