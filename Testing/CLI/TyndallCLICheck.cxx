@@ -487,6 +487,7 @@ void WriteCtThreeWays(const std::string& dir)
   const double origin[3] = { -20.0, -20.0, 10.0 };
   vtksys::SystemTools::MakeDirectory(dir + "/ct-dicom");
   vtksys::SystemTools::MakeDirectory(dir + "/ct-dicom-rotated");
+  vtksys::SystemTools::MakeDirectory(dir + "/ct-slices");
   std::string raw;
   auto volume = vtkSmartPointer<vtkImageData>::New();
   volume->SetDimensions(columns, rows, slices);
@@ -511,6 +512,14 @@ void WriteCtThreeWays(const std::string& dir)
         volume->SetScalarComponentFromDouble(i, j, k, 0, hu);
       }
     }
+    // The stored values of the slice, raw, for Debian's DICOM tools
+    // (MakeDicomWithGdcm.cmake).
+    std::string stored;
+    for (int16_t v : slice.Pixels)
+    {
+      stored.append(reinterpret_cast<const char*>(&v), 2);
+    }
+    WriteText(dir + "/ct-slices/slice" + std::to_string(k) + ".raw", stored);
     std::ostringstream position;
     position << origin[0] << "\\" << origin[1] << "\\" << origin[2] + 2.0 * k;
     slice.Position = position.str();

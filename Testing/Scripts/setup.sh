@@ -31,6 +31,7 @@ packages=(
   clang libclang-rt-14-dev            # libFuzzer for the reader's fuzz test (Testing/Fuzz)
   libopenexr-dev                      # tyndall-render --exr (linear float OpenEXR output)
   libglfw3-dev libglew-dev            # tyndall-viewer (GLFW window, GLEW)
+  libgdcm-tools dcmtk                 # a DICOM test series made by Debian's tools
 )
 
 install_packages() {
