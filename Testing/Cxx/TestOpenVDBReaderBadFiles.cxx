@@ -423,6 +423,34 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
     }
   }
 
+  // Two root children at one origin: OpenVDB would overwrite the first
+  // child's table entry and leak it (with its subtree).
+  {
+    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName("density");
+    grid->tree().setValue(openvdb::Coord(1, 1, 1), 1.0f);
+    grid->tree().setValue(openvdb::Coord(4100, 1, 1), 1.0f);
+    {
+      openvdb::io::File file(dir + "/twins.vdb");
+      file.setCompression(openvdb::io::COMPRESS_NONE); // no codec bytes to mistake for an origin
+      file.write({ grid });
+      file.close();
+    }
+    const std::vector<char> bytes = ReadBytes(dir + "/twins.vdb");
+    const std::string all(bytes.begin(), bytes.end());
+    const int32_t second[3] = { 4096, 0, 0 }; // the second root child's origin
+    const size_t at = all.find(std::string(reinterpret_cast<const char*>(second), 12));
+    Check(at != std::string::npos, "found the second root child");
+    if (at != std::string::npos)
+    {
+      std::vector<char> corrupt = bytes;
+      std::memset(&corrupt[at], 0, 12); // now also at (0, 0, 0)
+      WriteBytes(dir + "/twins-corrupt.vdb", corrupt);
+      ExpectFailure(dir + "/twins-corrupt.vdb", "two root children at [0, 0, 0]",
+        "two root children at one origin");
+    }
+  }
+
   // Absurd dimensions, and dimensions too large for the memory limit (an
   // active root tile of 4096^3 voxels): refused before any allocation.
   {
