@@ -108,6 +108,21 @@ std::vector<std::pair<std::string, std::string>> NrrdFields(
   return fields;
 }
 
+// A field of type T at byte `at` of a binary header, byte-swapped if asked.
+template <class T>
+T HeaderField(const unsigned char* header, size_t at, bool swap)
+{
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, header + at, sizeof(T));
+  if (swap)
+  {
+    std::reverse(b, b + sizeof(T));
+  }
+  T value;
+  std::memcpy(&value, b, sizeof(T));
+  return value;
+}
+
 bool KnownType(int type)
 {
   switch (type)
@@ -358,21 +373,9 @@ std::string CheckNiftiHeader(const std::string& path)
     return "not a NIfTI file (" + std::to_string(std::max(got, 0)) +
       " bytes, shorter than a NIfTI header)";
   }
-  auto i32 = [&](size_t at, bool swap)
-  {
-    unsigned char b[4];
-    std::memcpy(b, header + at, 4);
-    if (swap)
-    {
-      std::reverse(b, b + 4);
-    }
-    std::int32_t v;
-    std::memcpy(&v, b, 4);
-    return v;
-  };
-  const std::int32_t size = i32(0, false);
+  const std::int32_t size = HeaderField<std::int32_t>(header, 0, false);
   const bool swap = size != 348 && size != 540;
-  const std::int32_t sized = i32(0, swap);
+  const std::int32_t sized = HeaderField<std::int32_t>(header, 0, swap);
   if (sized != 348 && sized != 540)
   {
     return "not a NIfTI file (header size " + std::to_string(size) + ")";
@@ -383,54 +386,14 @@ std::string CheckNiftiHeader(const std::string& path)
     return "not a NIfTI-2 file (its header is cut short)";
   }
   // Field positions: NIfTI-1 (int16 dims, float pixdims), NIfTI-2 (int64, double).
-  auto field = [&](size_t at, int width)
-  {
-    unsigned char b[8];
-    std::memcpy(b, header + at, width);
-    if (swap)
-    {
-      std::reverse(b, b + width);
-    }
-    double v = 0.0;
-    if (width == 2)
-    {
-      std::int16_t x;
-      std::memcpy(&x, b, 2);
-      v = x;
-    }
-    else if (width == 4)
-    {
-      float x;
-      std::memcpy(&x, b, 4);
-      v = x;
-    }
-    else
-    {
-      double x;
-      std::memcpy(&x, b, 8);
-      v = x;
-    }
-    return v;
-  };
-  auto integer8 = [&](size_t at)
-  {
-    unsigned char b[8];
-    std::memcpy(b, header + at, 8);
-    if (swap)
-    {
-      std::reverse(b, b + 8);
-    }
-    std::int64_t x;
-    std::memcpy(&x, b, 8);
-    return static_cast<double>(x);
-  };
-  const int datatype = static_cast<int>(field(two ? 12 : 70, 2));
+  const int datatype = HeaderField<std::int16_t>(header, two ? 12 : 70, swap);
   static const int known[] = { 2, 4, 8, 16, 32, 64, 128, 256, 512, 768, 1024, 1280, 1792, 2304 };
   if (std::find(std::begin(known), std::end(known), datatype) == std::end(known))
   {
     return "unknown NIfTI datatype code " + std::to_string(datatype);
   }
-  const double rank = two ? integer8(16) : field(40, 2);
+  const double rank = two ? static_cast<double>(HeaderField<std::int64_t>(header, 16, swap))
+                          : HeaderField<std::int16_t>(header, 40, swap);
   if (rank < 1 || rank > 7)
   {
     return "impossible NIfTI header: " + std::to_string(static_cast<long long>(rank)) +
@@ -439,7 +402,8 @@ std::string CheckNiftiHeader(const std::string& path)
   double pixdim[3];
   for (int a = 0; a < 3; ++a)
   {
-    pixdim[a] = two ? field(104 + 8 * (a + 1), 8) : field(76 + 4 * (a + 1), 4);
+    pixdim[a] = two ? HeaderField<double>(header, 104 + 8 * (a + 1), swap)
+                    : HeaderField<float>(header, 76 + 4 * (a + 1), swap);
   }
   for (int a = 0; a < std::min(3, static_cast<int>(rank)); ++a)
   {
