@@ -287,9 +287,8 @@ bool vtkVolumeFileReader::ReadDirectory(const std::string& path)
   {
     problem = tyndall_io::CheckDicomSeries(slices);
   }
-  if (!problem.empty())
+  if (this->Refuse(path, problem))
   {
-    this->Error = path + ": " + problem;
     return false;
   }
   // Read here rather than by vtkDICOMImageReader, which flips the rows, ignores
@@ -303,9 +302,8 @@ bool vtkVolumeFileReader::ReadDirectory(const std::string& path)
   {
     problem = "out of memory while reading the series";
   }
-  if (!problem.empty())
+  if (this->Refuse(path, problem))
   {
-    this->Error = path + ": " + problem;
     return false;
   }
   this->Image = image;
@@ -357,10 +355,8 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
     {
       return this->NotOfFormat(path, format);
     }
-    const std::string problem = tyndall_io::CheckXmlImageHeader(path);
-    if (!problem.empty())
+    if (this->Refuse(path, tyndall_io::CheckXmlImageHeader(path)))
     {
-      this->Error = path + ": " + problem;
       return false;
     }
     reader->SetFileName(path.c_str());
@@ -373,10 +369,8 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
     {
       return this->NotOfFormat(path, format);
     }
-    const std::string problem = tyndall_io::CheckNrrdHeader(path);
-    if (!problem.empty())
+    if (this->Refuse(path, tyndall_io::CheckNrrdHeader(path)))
     {
-      this->Error = path + ": " + problem;
       return false;
     }
     reader->SetFileName(path.c_str());
@@ -390,6 +384,17 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
   }
   reader->SetFileName(path.c_str());
   return this->RunReader(reader, path, format);
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumeFileReader::Refuse(const std::string& path, const std::string& problem)
+{
+  if (problem.empty())
+  {
+    return false;
+  }
+  this->Error = path + ": " + problem;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -447,10 +452,8 @@ bool vtkVolumeFileReader::ReadNifti(const std::string& path)
     return this->NotOfFormat(path, "NIfTI");
   }
   // VTK 9.1's reader crashes on an unknown datatype code: the header first.
-  const std::string problem = tyndall_io::CheckNiftiHeader(path);
-  if (!problem.empty())
+  if (this->Refuse(path, tyndall_io::CheckNiftiHeader(path)))
   {
-    this->Error = path + ": " + problem;
     return false;
   }
   reader->SetFileName(path.c_str());
@@ -738,9 +741,8 @@ bool vtkVolumeFileReader::RunPasses(vtkAlgorithm* reader, const std::string& pat
   {
     problem = checkData(bytes);
   }
-  if (!problem.empty())
+  if (this->Refuse(path, problem))
   {
-    this->Error = path + ": " + problem;
     return false;
   }
   reader->Update();

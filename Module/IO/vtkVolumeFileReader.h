@@ -208,6 +208,8 @@ private:
   bool Read();
   bool ReadDirectory(const std::string& path);
   bool ReadFile(const std::string& path);
+  // True (with Error = "path: problem") when a check found a problem.
+  bool Refuse(const std::string& path, const std::string& problem);
   bool NotOfFormat(const std::string& path, const char* format);
   bool ReadOpenVDB(const std::string& path);
   bool ReadMetaImage(const std::string& path);
