@@ -87,9 +87,12 @@ double vtkTransmittanceFrame::GetStepLength() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceFrame::HasMissingData() const
+vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() const
 {
-  return this->Textures && this->Textures->GetValidityTexture() != nullptr;
+  vtkTransmittanceShaderSource::Variant variant;
+  variant.MissingData = this->Textures && this->Textures->GetValidityTexture() != nullptr;
+  variant.SkipEmpty = this->Integrator.SkipEmptySpace;
+  return variant;
 }
 
 //------------------------------------------------------------------------------
@@ -100,8 +103,18 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
   program->SetUniformi("volumeTexture", volumeUnit);
   if (vtkTextureObject* validity = this->Textures->GetValidityTexture())
   {
-    // Declared only by the missing-data variant (HasMissingData()).
+    // Declared only by the missing-data variant (GetShaderVariant()).
     program->SetUniformi("validityTexture", validity->GetTextureUnit());
+  }
+  if (this->Integrator.SkipEmptySpace)
+  {
+    // Declared only by the skipping variant.
+    const int* blocks = this->Textures->GetMajorantGrid().GetBlockCounts();
+    const float blockCount[3] = { float(blocks[0]), float(blocks[1]), float(blocks[2]) };
+    program->SetUniformi("blockTexture", this->Textures->GetBlockTexture()->GetTextureUnit());
+    program->SetUniform3f("blockCount", blockCount);
+    program->SetUniform3f("boxToBlockScale", this->Textures->GetBlockScale());
+    program->SetUniform3f("boxToBlockShift", this->Textures->GetBlockShift());
   }
   program->SetUniformi("transferTexture", this->Textures->GetTransferTexture()->GetTextureUnit());
   program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));

@@ -16,9 +16,10 @@
 #ifndef vtkTransmittanceFrame_h
 #define vtkTransmittanceFrame_h
 
-#include "TyndallRenderingModule.h" // For export macro
-#include "vtkSmartPointer.h"        // For vtkSmartPointer
-#include "vtkTyndallLight.h"        // For vtkTyndallLight
+#include "TyndallRenderingModule.h"       // For export macro
+#include "vtkSmartPointer.h"              // For vtkSmartPointer
+#include "vtkTransmittanceShaderSource.h" // For vtkTransmittanceShaderSource::Variant
+#include "vtkTyndallLight.h"              // For vtkTyndallLight
 
 #include <vector> // For std::vector
 
@@ -54,6 +55,7 @@ public:
     double AdaptiveThreshold = 0.01;
     double SampleDistance = 0.0;
     bool Jitter = true;
+    bool SkipEmptySpace = true;
   };
 
   /**
@@ -67,10 +69,11 @@ public:
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
   /**
-   * Whether the medium has missing data (a validity texture): the shaders'
-   * TYNDALL_MISSING_DATA variant (vtkTransmittanceShaderSource).
+   * The shaders' variant for this frame (vtkTransmittanceShaderSource):
+   * missing data when the medium has a validity texture, empty-space
+   * skipping when the settings ask for it.
    */
-  bool HasMissingData() const;
+  vtkTransmittanceShaderSource::Variant GetShaderVariant() const;
 
   /// Whether some light uses a map method.
   bool NeedsMaps() const;

@@ -60,7 +60,8 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   std::vector<double> key = { double(s.Method), double(s.Coefficients), double(s.MapSize),
     double(s.LightSampleCount), s.AdaptiveThreshold, frame.Medium->GetDensityScale(),
-    double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetExtinctionTime()) };
+    double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetExtinctionTime()),
+    double(s.SkipEmptySpace) };
   key.insert(key.end(), frame.Corners, frame.Corners + 24);
   // Per light, its method and, when it has a map, the frustum the map is
   // built along (which also covers the frustum's padding and field of view).
@@ -144,7 +145,7 @@ bool vtkTransmittanceMapPass::Allocate(const vtkTransmittanceFrame& frame, vtkOb
 vtkShaderProgram* vtkTransmittanceMapPass::ReadyProgram(const vtkTransmittanceFrame& frame)
 {
   std::string fs = vtkTransmittanceShaderSource::GetFragmentShader(
-    vtkTransmittanceShaderSource::MAP_BUILD, frame.HasMissingData());
+    vtkTransmittanceShaderSource::MAP_BUILD, frame.GetShaderVariant());
   vtkShaderProgram::Substitute(
     fs, "//TYNDALL::MapOutputs", MapOutputs(frame.Layers, frame.BoundsLayer));
   return this->Quad.Ready(frame.Window, fs);

@@ -68,7 +68,8 @@ bool vtkTransmittanceMediumTextures::Update(
 {
   const bool sameMedium = this->UploadedMedium == &medium && this->VolumeTexture &&
     this->VolumeTexture->GetContext() == window;
-  if (!sameMedium || medium.GetScalarsTime() > this->ScalarsTime)
+  const bool newScalars = !sameMedium || medium.GetScalarsTime() > this->ScalarsTime;
+  if (newScalars)
   {
     this->ScalarsTime = 0;
     if (!this->UploadScalars(window, medium, reporter))
@@ -77,10 +78,12 @@ bool vtkTransmittanceMediumTextures::Update(
     }
     this->ScalarsTime = medium.GetScalarsTime();
   }
-  if (!sameMedium || medium.GetTableTime() > this->TableTime)
+  if (!sameMedium || medium.GetTableTime() > this->TableTime || newScalars)
   {
     this->TableTime = 0;
-    if (!this->UploadTable(window, medium, reporter))
+    this->BlockRangeTime = newScalars ? this->BlockRangeTime : 0.0;
+    if (!this->UploadTable(window, medium, reporter) ||
+      !this->UploadMajorants(window, medium, reporter))
     {
       return false;
     }
@@ -96,6 +99,10 @@ bool vtkTransmittanceMediumTextures::Update(
     const double n = this->Dimensions[a];
     this->TextureScale[a] = static_cast<float>((high - low) / (this->Factor * n));
     this->TextureShift[a] = static_cast<float>((low / this->Factor + 0.5) / n);
+    // Sample coordinate v = texture coordinate * n - 0.5; block = v / BlockSize.
+    const double perBlock = 1.0 / vtkTyndallMajorantGrid::BlockSize;
+    this->BlockScale[a] = static_cast<float>((high - low) / this->Factor * perBlock);
+    this->BlockShift[a] = static_cast<float>(low / this->Factor * perBlock);
   }
   return true;
 }
@@ -144,6 +151,8 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
     vtkTemplateMacro(Gather(medium, static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), factor,
       this->Dimensions, values.data(), missing ? valid.data() : nullptr));
   }
+  this->BlockRangeTime =
+    this->Majorants.BuildRanges(values.data(), missing ? valid.data() : nullptr, this->Dimensions);
   if (!this->VolumeTexture)
   {
     this->VolumeTexture = vtkSmartPointer<vtkTextureObject>::New();
@@ -199,10 +208,36 @@ bool vtkTransmittanceMediumTextures::UploadTable(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadMajorants(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  this->MajorantTime = this->Majorants.BuildMajorants(medium.GetTable());
+  if (!this->BlockTexture)
+  {
+    this->BlockTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTextureObject* texture = this->BlockTexture;
+  texture->SetContext(window);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->SetWrapR(vtkTextureObject::ClampToEdge);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  const int* counts = this->Majorants.GetBlockCounts();
+  if (!texture->Create3DFromRaw(counts[0], counts[1], counts[2], 1, VTK_FLOAT,
+        const_cast<float*>(this->Majorants.GetMajorants().data())))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the volume's majorant texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture :
-    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get() })
+  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
+         this->TransferTexture.Get(), this->BlockTexture.Get() })
   {
     if (texture)
     {
@@ -212,6 +247,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->VolumeTexture = nullptr;
   this->ValidityTexture = nullptr;
   this->TransferTexture = nullptr;
+  this->BlockTexture = nullptr;
   this->UploadedMedium = nullptr;
   this->ScalarsTime = this->TableTime = 0;
 }
@@ -223,4 +259,9 @@ void vtkTransmittanceMediumTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Dimensions: " << this->Dimensions[0] << " x " << this->Dimensions[1] << " x "
      << this->Dimensions[2] << "\n";
   os << indent << "Downsampling: " << this->Factor << "\n";
+  const int* blocks = this->Majorants.GetBlockCounts();
+  os << indent << "Blocks: " << blocks[0] << " x " << blocks[1] << " x " << blocks[2] << " ("
+     << 100.0 * this->Majorants.GetEmptyFraction() << " % empty)\n";
+  os << indent << "BlockRangeTime: " << this->BlockRangeTime << " s\n";
+  os << indent << "MajorantTime: " << this->MajorantTime << " s\n";
 }

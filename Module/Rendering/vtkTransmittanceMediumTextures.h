@@ -15,6 +15,12 @@
  * to texture coordinates (point scalars: texel centres at the box's corners;
  * cell scalars: the texels fill the box).
  *
+ * It also keeps the volume's vtkTyndallMajorantGrid (block ranges rebuilt
+ * with the scalars, majorants with the table) on the GPU as an R32F 3-D
+ * texture, one texel per block, read with texelFetch: the shaders' empty-
+ * space skipping. GetBlockScale() and GetBlockShift() map the box as
+ * [0, 1]^3 to block coordinates (block b spans [b, b + 1) per axis).
+ *
  * Internal to Tyndall::Rendering.
  */
 
@@ -23,7 +29,8 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkSmartPointer.h"        // For vtkSmartPointer
+#include "vtkTyndallMajorantGrid.h" // For vtkTyndallMajorantGrid
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -50,6 +57,16 @@ public:
   vtkTextureObject* GetTransferTexture() const { return this->TransferTexture; }
   const float* GetTextureScale() const { return this->TextureScale; }
   const float* GetTextureShift() const { return this->TextureShift; }
+  vtkTextureObject* GetBlockTexture() const { return this->BlockTexture; }
+  const float* GetBlockScale() const { return this->BlockScale; }
+  const float* GetBlockShift() const { return this->BlockShift; }
+  const vtkTyndallMajorantGrid& GetMajorantGrid() const { return this->Majorants; }
+
+  ///@{
+  /// Seconds the last block-range and majorant builds took.
+  double GetLastBlockRangeTime() const { return this->BlockRangeTime; }
+  double GetLastMajorantTime() const { return this->MajorantTime; }
+  ///@}
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -65,10 +82,16 @@ private:
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadTable(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadMajorants(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> VolumeTexture;
   vtkSmartPointer<vtkTextureObject> ValidityTexture;
   vtkSmartPointer<vtkTextureObject> TransferTexture;
+  vtkSmartPointer<vtkTextureObject> BlockTexture;
+  vtkTyndallMajorantGrid Majorants;
+  double BlockRangeTime = 0.0;
+  double MajorantTime = 0.0;
   vtkMTimeType ScalarsTime = 0;
   vtkMTimeType TableTime = 0;
   const vtkTyndallGridMedium* UploadedMedium = nullptr;
@@ -76,6 +99,8 @@ private:
   int Factor = 1;
   float TextureScale[3] = { 1.0f, 1.0f, 1.0f };
   float TextureShift[3] = { 0.0f, 0.0f, 0.0f };
+  float BlockScale[3] = { 1.0f, 1.0f, 1.0f };
+  float BlockShift[3] = { 0.0f, 0.0f, 0.0f };
 };
 
 #endif

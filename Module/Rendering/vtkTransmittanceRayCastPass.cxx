@@ -56,7 +56,7 @@ bool vtkTransmittanceRayCastPass::Render(
 {
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
-      vtkTransmittanceShaderSource::RAY_CAST, frame.HasMissingData()));
+      vtkTransmittanceShaderSource::RAY_CAST, frame.GetShaderVariant()));
   if (!program)
   {
     vtkErrorWithObjectMacro(reporter, << "The ray-casting shader did not compile.");

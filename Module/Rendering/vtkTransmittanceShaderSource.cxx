@@ -16,7 +16,7 @@
 #include <sstream>
 
 //------------------------------------------------------------------------------
-std::string vtkTransmittanceShaderSource::GetConstants(bool missingData)
+std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
 {
   using M = vtkTransmittanceMapMath;
   std::ostringstream os;
@@ -39,12 +39,13 @@ std::string vtkTransmittanceShaderSource::GetConstants(bool missingData)
   define("NO_OCCLUDER", static_cast<double>(NoOccluder));
   define("VIEW_TERMINATION", static_cast<double>(ViewTermination));
   define("PI", vtkMath::Pi());
-  define("MISSING_DATA", missingData ? 1 : 0);
+  define("MISSING_DATA", variant.MissingData ? 1 : 0);
+  define("SKIP_EMPTY", variant.SkipEmpty ? 1 : 0);
   return os.str();
 }
 
 //------------------------------------------------------------------------------
-std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, bool missingData)
+std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Variant& variant)
 {
   std::string source = vtkTransmittanceCommonFS;
   switch (pass)
@@ -59,6 +60,6 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, bool missi
       source += vtkTransmittanceRayCastFS;
       break;
   }
-  vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(missingData));
+  vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(variant));
   return source;
 }

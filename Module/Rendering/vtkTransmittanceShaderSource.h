@@ -19,13 +19,14 @@
  * - TYNDALL_VIEW_TERMINATION: camera rays stop below this transmittance;
  * - TYNDALL_PI;
  *
- * and one variant switch:
+ * and the variant switches (Variant), compile-time rather than uniforms:
+ * drivers such as llvmpipe run both sides of a uniform branch's texture
+ * fetch, and one more 3-D fetch per sample costs 15 to 45 % of a frame:
  *
  * - TYNDALL_MISSING_DATA: 1 when the medium has missing data (NaN voxels,
- *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise. A
- *   compile-time switch rather than a uniform: drivers such as llvmpipe run
- *   both sides of a uniform branch's texture fetch, and one more 3-D fetch
- *   per sample costs 15 to 45 % of a frame.
+ *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise;
+ * - TYNDALL_SKIP_EMPTY: 1 when camera rays and map builds skip empty blocks
+ *   of the majorant grid (vtkTyndallMajorantGrid), 0 otherwise.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -47,11 +48,19 @@ public:
     RAY_CAST
   };
 
+  /// The compile-time variants of the shaders.
+  struct Variant
+  {
+    bool MissingData = false;
+    bool SkipEmpty = false;
+  };
+
   /// The fragment shader of a pass, constants injected.
-  static std::string GetFragmentShader(int pass, bool missingData = false);
+  static std::string GetFragmentShader(int pass, const Variant& variant);
+  static std::string GetFragmentShader(int pass) { return GetFragmentShader(pass, Variant()); }
 
   /// The #define lines that replace `//TYNDALL::Constants`.
-  static std::string GetConstants(bool missingData = false);
+  static std::string GetConstants(const Variant& variant);
 
   /// What an occlusion texel holds where the light's ray meets no opaque surface.
   static constexpr float NoOccluder = 1.0e30f;

@@ -72,6 +72,19 @@ double vtkTransmittanceVolumeMapper::GetLastMapBuildTime()
 }
 
 //------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::GetLastEmptySpaceGridTime()
+{
+  const vtkTransmittanceMediumTextures& t = *this->Internals->Textures;
+  return t.GetLastBlockRangeTime() + t.GetLastMajorantTime();
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::GetEmptyBlockFraction()
+{
+  return this->Internals->Textures->GetMajorantGrid().GetEmptyFraction();
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& in = *this->Internals;
@@ -117,10 +130,12 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   settings.AdaptiveThreshold = this->AdaptiveThreshold;
   settings.SampleDistance = this->SampleDistance;
   settings.Jitter = this->Jitter;
+  settings.SkipEmptySpace = this->EmptySpaceSkipping;
   in.Frame.Prepare(renderer, window, in.Scene, *in.Textures, settings);
 
-  vtkTransmittanceScopedTextures medium({ in.Textures->GetVolumeTexture(),
-    in.Textures->GetValidityTexture(), in.Textures->GetTransferTexture() });
+  vtkTransmittanceScopedTextures medium(
+    { in.Textures->GetVolumeTexture(), in.Textures->GetValidityTexture(),
+      in.Textures->GetTransferTexture(), in.Textures->GetBlockTexture() });
   vtkTransmittanceRayCastPass::Inputs inputs;
   if (in.Occlusion->Render(in.Frame, this))
   {
@@ -198,6 +213,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "LightSampleCount: " << this->LightSampleCount << "\n";
   os << indent << "Jitter: " << (this->Jitter ? "On" : "Off") << "\n";
+  os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "MapBuildCount: " << this->GetMapBuildCount() << "\n";
   os << indent << "LastMapBuildTime: " << this->GetLastMapBuildTime() << "\n";
 }

@@ -171,6 +171,33 @@ public:
   vtkBooleanMacro(Jitter, bool);
   ///@}
 
+  ///@{
+  /**
+   * Skip empty space (default on): camera rays and the ETM map builds
+   * (and the adaptive methods' first march) cross blocks of 8^3 voxels whose
+   * largest extinction is zero in one step each, keeping every other sample
+   * where it was, so pictures do not change. The block grid is rebuilt when
+   * the scalars change (a pass over the voxels) and its majorants when the
+   * transfer functions change (cheap; GetLastEmptySpaceGridTime()).
+   */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  /**
+   * Seconds the last update of the empty-space grid took: the block ranges
+   * (when the scalars changed) plus the majorants (when they or the
+   * transfer functions changed); 0 before the first render.
+   */
+  double GetLastEmptySpaceGridTime();
+
+  /**
+   * The fraction of the empty-space grid's blocks that are empty, as of the
+   * last render (0 before the first).
+   */
+  double GetEmptyBlockFraction();
+
   /**
    * How many times the transmittance maps were built.
    */
@@ -236,6 +263,7 @@ protected:
   double SampleDistance = 0.0;
   int LightSampleCount = 128;
   bool Jitter = true;
+  bool EmptySpaceSkipping = true;
 
 private:
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;

@@ -91,7 +91,7 @@ def main():
     exported = [line.split(":", 1)[1].strip() for line in result.stdout.splitlines()
                 if line.startswith("exported:")]
     keys = [os.path.basename(path)[:-len("-scene.json")] for path in exported]
-    check(keys == ["cloud", "dense", "blob", "blob-2"], "exported scenes %s" % keys)
+    check(keys == ["cloud", "dense", "sparse", "blob", "blob-2"], "exported scenes %s" % keys)
 
     for path in exported:
         with open(path) as f:

@@ -15,6 +15,8 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
+
 namespace tyndall_test
 {
 // The built-in cloud (vtkCosineNoiseSource's defaults) at n^3 over [-1, 1]^3.
@@ -41,6 +43,41 @@ inline vtkSmartPointer<vtkImageData> MakeDenseMedium(int n)
   source->GetNoise()->SetOffset(12.0);
   source->Update();
   return source->GetOutput();
+}
+
+// A sparse medium: six Gaussian blobs (peak 8, standard deviation 0.08,
+// cut to exactly 0 below 1 % of the peak) at n^3 over [-1, 1]^3, most of the
+// box empty: the case empty-space skipping is for.
+inline vtkSmartPointer<vtkImageData> MakeSparseBlobs(int n)
+{
+  const double centres[6][3] = { { -0.6, -0.5, -0.4 }, { 0.5, -0.6, 0.1 }, { -0.2, 0.55, 0.5 },
+    { 0.6, 0.4, -0.55 }, { 0.05, -0.05, 0.0 }, { -0.55, 0.2, 0.6 } };
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  image->SetOrigin(-1.0, -1.0, -1.0);
+  const double h = 2.0 / (n - 1);
+  image->SetSpacing(h, h, h);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  float* v = static_cast<float*>(image->GetScalarPointer());
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double x[3] = { -1.0 + i * h, -1.0 + j * h, -1.0 + k * h };
+        double value = 0.0;
+        for (const auto& c : centres)
+        {
+          const double r2 = (x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) +
+            (x[2] - c[2]) * (x[2] - c[2]);
+          value += 8.0 * std::exp(-r2 / (2.0 * 0.08 * 0.08));
+        }
+        *v++ = static_cast<float>(value < 0.08 ? 0.0 : value);
+      }
+    }
+  }
+  return image;
 }
 
 // A white cloud medium: opacity up to `peakOpacity` per 0.05 world units at

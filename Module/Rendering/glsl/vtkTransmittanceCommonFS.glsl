@@ -53,6 +53,58 @@ vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
   return vec2(max(max(tMin.x, tMin.y), tMin.z), min(min(tMax.x, tMax.y), tMax.z));
 }
 
+#if TYNDALL_SKIP_EMPTY
+// Empty-space skipping: vtkTyndallMajorantGrid's blocks, one texel each
+// holding the block's largest table extinction (0: every sample a renderer
+// can take in the block has zero extinction). Block coordinates: block b
+// spans [b, b + 1) per axis.
+uniform sampler3D blockTexture;
+uniform vec3 blockCount;
+uniform vec3 boxToBlockScale; // box [0,1]^3 -> block coordinates
+uniform vec3 boxToBlockShift;
+
+// The world ray (origin, dir) in block coordinates: p(t) = bo + t bd.
+void tyndallBlockRay(vec3 origin, vec3 dir, out vec3 bo, out vec3 bd)
+{
+  bo = (worldToVolume * vec4(origin, 1.0)).xyz * boxToBlockScale + boxToBlockShift;
+  bd = (worldToVolume * vec4(dir, 0.0)).xyz * boxToBlockScale;
+}
+
+// The block holding p(t): returns the t at which the ray leaves it, and
+// whether it is empty.
+float tyndallBlockExit(vec3 bo, vec3 bd, float t, out bool empty)
+{
+  vec3 cell = clamp(floor(bo + t * bd), vec3(0.0), blockCount - 1.0);
+  empty = texelFetch(blockTexture, ivec3(cell), 0).r <= 0.0;
+  vec3 tFace = (cell + step(vec3(0.0), bd) - bo) / bd;
+  tFace = mix(vec3(1e30), tFace, notEqual(bd, vec3(0.0)));
+  return min(min(tFace.x, tFace.y), tFace.z);
+}
+
+// A march whose sample n lies at t(n) = tStart + (n + offset) dt, now at
+// sample n (at ts): when ts has left the last block looked up (tBlockEnd),
+// looks up the block of ts; when that block is empty, advances n to the
+// first sample past it (at most nMax) and returns true: the caller skips.
+// Samples keep their places, so a skip changes no sample that sees the
+// medium; an empty block costs one loop iteration.
+bool tyndallSkipEmpty(vec3 bo, vec3 bd, float ts, inout float tBlockEnd, inout int n,
+  float tStart, float dt, float offset, int nMax)
+{
+  if (ts < tBlockEnd)
+  {
+    return false;
+  }
+  bool empty;
+  tBlockEnd = tyndallBlockExit(bo, bd, ts, empty);
+  if (!empty)
+  {
+    return false;
+  }
+  n = int(clamp(ceil((tBlockEnd - tStart) / dt - offset), float(n + 1), float(nMax)));
+  return true;
+}
+#endif
+
 // The medium at a world point: the extinction (density scale applied),
 // returned; the colour (or albedo); and the point's transfer-table
 // coordinate, with which tyndallEmissionColor() reads the emission row

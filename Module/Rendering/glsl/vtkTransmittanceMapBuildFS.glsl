@@ -26,9 +26,25 @@ float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool e
   float rangeLength = D * (sMax - sMin);
   float du = 1.0 / float(sampleCount);
   float tau = 0.0;
-  for (int n = 0; n < sampleCount; ++n)
+#if TYNDALL_SKIP_EMPTY
+  // ETM projects sigma, zero in empty blocks: they are skipped. TFM projects
+  // the transmittance, which is not zero there: it marches every sample.
+  vec3 bo, bd;
+  tyndallBlockRay(kIn, dir, bo, bd);
+  float tBlockEnd = etm ? -1.0 : 1e30;
+#endif
+  int n = 0;
+  for (int i = 0; i < sampleCount && n < sampleCount; ++i)
   {
     float u = (float(n) + 0.5) * du;
+#if TYNDALL_SKIP_EMPTY
+    if (tyndallSkipEmpty(bo, bd, (sMin + u * (sMax - sMin)) * D, tBlockEnd, n, sMin * D,
+          rangeLength * du, 0.5, sampleCount))
+    {
+      continue;
+    }
+#endif
+    ++n;
     float sigma = tyndallExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
     float opticalStep = sigma * rangeLength * du;
     float value = etm ? sigma * rangeLength : exp(-(tau + 0.5 * opticalStep));
@@ -70,8 +86,21 @@ void main()
       float sMin = -1.0;
       float sMax = 1.0;
       float crossingStep = 0.0; // optical depth of the sample that crossed
-      for (int n = 0; n < sampleCount; ++n)
+#if TYNDALL_SKIP_EMPTY
+      vec3 bo, bd;
+      tyndallBlockRay(kIn, dir, bo, bd);
+      float tBlockEnd = -1.0;
+#endif
+      int n = 0;
+      for (int i = 0; i < sampleCount && n < sampleCount; ++i)
       {
+#if TYNDALL_SKIP_EMPTY
+        if (tyndallSkipEmpty(
+              bo, bd, (float(n) + 0.5) * du * D, tBlockEnd, n, 0.0, du * D, 0.5, sampleCount))
+        {
+          continue;
+        }
+#endif
         float sigma = tyndallExtinction(kIn + (float(n) + 0.5) * du * D * dir);
         if (sMin < 0.0 && sigma > 0.0)
         {
@@ -85,6 +114,7 @@ void main()
           break;
         }
         tau += opticalStep;
+        ++n;
       }
       if (sMin < 0.0)
       {

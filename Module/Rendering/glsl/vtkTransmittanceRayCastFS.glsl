@@ -194,11 +194,31 @@ void main()
   }
   vec3 radiance = vec3(0.0);
   float Tv = 1.0;
-  float t0 = tNear;
-  for (int i = 0; i < maxSteps && t0 < tFar; ++i)
+#if TYNDALL_SKIP_EMPTY
+  vec3 bo, bd;
+  tyndallBlockRay(p0, w, bo, bd);
+  float tBlockEnd = -1.0; // the non-empty block the samples are in ends here
+#endif
+  // Step n spans [tNear + n stepLength, tNear + (n + 1) stepLength), the last
+  // one cut at tFar; its sample lies at `offset` of it.
+  int n = 0;
+  for (int i = 0; i < maxSteps; ++i)
   {
+    float t0 = tNear + float(n) * stepLength;
+    if (!(t0 < tFar))
+    {
+      break;
+    }
     float dt = min(stepLength, tFar - t0);
-    vec3 x = p0 + (t0 + offset * dt) * w;
+    float ts = t0 + offset * dt;
+#if TYNDALL_SKIP_EMPTY
+    if (tyndallSkipEmpty(bo, bd, ts, tBlockEnd, n, tNear, stepLength, offset, maxSteps))
+    {
+      continue;
+    }
+#endif
+    ++n;
+    vec3 x = p0 + ts * w;
     vec3 color;
     float tableCoord;
     float sigma = tyndallMedium(x, color, tableCoord);
@@ -226,7 +246,6 @@ void main()
         break;
       }
     }
-    t0 += dt;
   }
   gl_FragData[0] = vec4(radiance, 1.0 - Tv);
 }

@@ -1,0 +1,146 @@
+#include "vtkTyndallMajorantGrid.h"
+
+#include "vtkNew.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
+#include "vtkTyndallTransferTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace
+{
+// Range maxima over a table in O(1) per query after O(n log n) set-up.
+class RangeMaximum
+{
+public:
+  explicit RangeMaximum(const std::vector<double>& values)
+  {
+    this->Levels.push_back(values);
+    for (size_t width = 2; width <= values.size(); width *= 2)
+    {
+      const std::vector<double>& below = this->Levels.back();
+      std::vector<double> level(values.size() - width + 1);
+      for (size_t i = 0; i < level.size(); ++i)
+      {
+        level[i] = std::max(below[i], below[i + width / 2]);
+      }
+      this->Levels.push_back(std::move(level));
+    }
+  }
+
+  /// The largest value of entries first .. last (inclusive, first <= last).
+  double Query(int first, int last) const
+  {
+    int level = 0;
+    while ((2 << level) <= last - first + 1)
+    {
+      ++level;
+    }
+    const std::vector<double>& v = this->Levels[level];
+    return std::max(v[first], v[last - (1 << level) + 1]);
+  }
+
+private:
+  std::vector<std::vector<double>> Levels;
+};
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallMajorantGrid::BlockOf(int a, double v) const
+{
+  const int b = static_cast<int>(std::floor(v / BlockSize));
+  return std::min(std::max(b, 0), this->Counts[a] - 1);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallMajorantGrid::BuildRanges(
+  const float* values, const unsigned char* valid, const int dims[3])
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Counts[a] = std::max(dims[a] - 1, 0) / BlockSize + 1;
+  }
+  const size_t blocks = static_cast<size_t>(this->Counts[0]) * this->Counts[1] * this->Counts[2];
+  this->Low.assign(blocks, std::numeric_limits<float>::infinity());
+  this->High.assign(blocks, -std::numeric_limits<float>::infinity());
+  this->Majorants.assign(blocks, 0.0f);
+  const int* counts = this->Counts;
+  vtkSMPTools::For(0, counts[1] * counts[2],
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType row = begin; row < end; ++row)
+      {
+        const int by = static_cast<int>(row % counts[1]), bz = static_cast<int>(row / counts[1]);
+        for (int bx = 0; bx < counts[0]; ++bx)
+        {
+          const size_t block = (static_cast<size_t>(bz) * counts[1] + by) * counts[0] + bx;
+          float lo = this->Low[block], hi = this->High[block];
+          // Samples b BlockSize - 1 .. (b + 1) BlockSize + 1 (clamped).
+          auto first = [](int b) { return std::max(b * BlockSize - 1, 0); };
+          auto last = [dims](int b, int a)
+          { return std::min((b + 1) * BlockSize + 1, dims[a] - 1); };
+          const int x0 = first(bx), x1 = last(bx, 0), y1 = last(by, 1), z1 = last(bz, 2);
+          for (int z = first(bz); z <= z1; ++z)
+          {
+            for (int y = first(by); y <= y1; ++y)
+            {
+              const size_t rowStart = (static_cast<size_t>(z) * dims[1] + y) * dims[0];
+              for (int x = x0; x <= x1; ++x)
+              {
+                if (!valid || valid[rowStart + x])
+                {
+                  lo = std::min(lo, values[rowStart + x]);
+                  hi = std::max(hi, values[rowStart + x]);
+                }
+              }
+            }
+          }
+          this->Low[block] = lo;
+          this->High[block] = hi;
+        }
+      }
+    });
+  timer->StopTimer();
+  return timer->GetElapsedTime();
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallMajorantGrid::BuildMajorants(const vtkTyndallTransferTable& table)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  const RangeMaximum maximum(table.Extinction);
+  const int last = static_cast<int>(table.Extinction.size()) - 1;
+  // The table position x = (s - Minimum) * Scale; linear filtering weighs
+  // entries floor(x) and floor(x) + 1, the second with weight x - floor(x):
+  // values in [lo, hi] read entries floor(x_lo) .. ceil(x_hi).
+  auto entry = [&table, last](double s, double (*round)(double))
+  {
+    const double x = round((s - table.Minimum) * table.Scale);
+    return static_cast<int>(std::min(std::max(x, 0.0), static_cast<double>(last)));
+  };
+  for (size_t b = 0; b < this->Majorants.size(); ++b)
+  {
+    this->Majorants[b] = this->Low[b] > this->High[b]
+      ? 0.0f
+      : static_cast<float>(
+          maximum.Query(entry(this->Low[b], std::floor), entry(this->High[b], std::ceil)));
+  }
+  timer->StopTimer();
+  return timer->GetElapsedTime();
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallMajorantGrid::GetEmptyFraction() const
+{
+  if (this->Majorants.empty())
+  {
+    return 0.0;
+  }
+  const auto empty = std::count(this->Majorants.begin(), this->Majorants.end(), 0.0f);
+  return static_cast<double>(empty) / static_cast<double>(this->Majorants.size());
+}
