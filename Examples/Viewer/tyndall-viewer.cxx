@@ -392,6 +392,7 @@ private:
   void Key(int key);
   void Execute(const Command& c);
   void Report();
+  void SetInteracting(bool interacting);
 
   // GLFW callbacks.
   static Viewer* From(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
@@ -421,6 +422,8 @@ private:
   int FrameNumber = 0;
   double LastFrameMs = 0.0;
   std::vector<double> FrameTimes;
+  std::vector<double> DragFrameTimes; // frames drawn while interacting
+  bool Interacting = false;
   std::string PendingScreenshot;
   int ScreenshotCounter = 0;
   int ExitCode = EXIT_SUCCESS;
@@ -660,6 +663,10 @@ void Viewer::UpdateText()
     os << "-- ms";
   }
   os << " | map builds " << this->Mapper->GetMapBuildCount();
+  if (this->Mapper->GetLastImageReduction() > 1)
+  {
+    os << " | 1/" << this->Mapper->GetLastImageReduction() << " size";
+  }
   this->Text->SetInput(os.str().c_str());
   this->Text->SetVisibility(this->ShowText ? 1 : 0);
   // About 65 characters across the window, 9 to 16 points.
@@ -698,6 +705,10 @@ void Viewer::RenderFrame()
   const auto stop = std::chrono::steady_clock::now();
   this->LastFrameMs = std::chrono::duration<double, std::milli>(stop - start).count();
   this->FrameTimes.push_back(this->LastFrameMs);
+  if (this->Interacting)
+  {
+    this->DragFrameTimes.push_back(this->LastFrameMs);
+  }
   ++this->FrameNumber;
 
   if (!this->PendingScreenshot.empty())
@@ -759,7 +770,8 @@ void Viewer::LogFrame()
             << this->LastFrameMs << std::defaultfloat << " map-builds "
             << this->Mapper->GetMapBuildCount() << " method "
             << this->Mapper->GetTransmittanceMethodAsString() << " coefficients "
-            << this->Mapper->GetNumberOfCoefficients() << " command "
+            << this->Mapper->GetNumberOfCoefficients() << " reduction "
+            << this->Mapper->GetLastImageReduction() << " command "
             << (this->CurrentCommand.empty() ? "-" : this->CurrentCommand) << std::endl;
 }
 
@@ -952,8 +964,21 @@ void Viewer::Report()
             << live[4] << std::endl;
 }
 
+// VTK's interactive/still protocol: while a button is down (or a script
+// drags), the render window asks for --interactive-rate frames per second
+// and the mapper reduces the image to meet it; the still rate gives the
+// full-size frame.
+void Viewer::SetInteracting(bool interacting)
+{
+  const double rate = this->Options->GetNumber("interactive-rate");
+  this->Mapper->SetInteractiveAdjustment(rate > 0.0);
+  this->Interacting = interacting && rate > 0.0;
+  this->RenderWindow->SetDesiredUpdateRate(this->Interacting ? rate : 0.0001);
+}
+
 void Viewer::Execute(const Command& c)
 {
+  this->SetInteracting(c.Verb == "drag");
   // Arguments were validated when the script was read.
   auto number = [&c](size_t i) { return std::strtod(c.Args[i].c_str(), nullptr); };
   if (c.Verb == "orbit")
@@ -1052,6 +1077,9 @@ void Viewer::OnButton(GLFWwindow* w, int button, int action, int)
   }
   self->ButtonDown[index] = action == GLFW_PRESS;
   glfwGetCursorPos(w, &self->LastCursor[0], &self->LastCursor[1]);
+  // A release ends the interaction: the next frame is the full-size one.
+  self->SetInteracting(self->ButtonDown[0] || self->ButtonDown[1] || self->ButtonDown[2]);
+  self->NeedsRender = true;
 }
 
 void Viewer::OnScroll(GLFWwindow* w, double, double dy)
@@ -1163,6 +1191,18 @@ int Viewer::Run()
               << std::setprecision(1) << this->FrameTimes.front() << " later-frames-ms mean "
               << sum / t.size() << " median " << t[t.size() / 2] << " min " << t.front() << " max "
               << t.back() << std::defaultfloat << " map-builds " << this->Mapper->GetMapBuildCount()
+              << std::endl;
+  }
+  if (!this->DragFrameTimes.empty())
+  {
+    double sum = 0.0;
+    for (double v : this->DragFrameTimes)
+    {
+      sum += v;
+    }
+    const double mean = sum / this->DragFrameTimes.size();
+    std::cout << "summary drag-frames " << this->DragFrameTimes.size() << " mean-ms " << std::fixed
+              << std::setprecision(1) << mean << " fps " << 1000.0 / mean << std::defaultfloat
               << std::endl;
   }
   return this->ExitCode;

@@ -117,6 +117,8 @@ const Spec kOptions[] = {
     "irradiance per unit of light intensity" },
   { "no-jitter", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "do not jitter the ray samples per pixel", KeyMode::Toggle, "j" },
+  { "no-skip", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "march every sample: no empty-space skipping (same picture, slower; for timing)" },
   { "preset", "", Kind::Text, 0, 0, false, "", "NAME", "", "Transfer function", Both,
     "a named preset (vtkTransferFunctionPresets) over the data's scalar range, unit distance = "
     "the mean voxel spacing; names ignore case, spaces, '-' and '_'. Default for data inputs: "
@@ -175,6 +177,10 @@ const Spec kOptions[] = {
     "run the commands in TEXT (separated by ';'), one per frame" },
   { "verbose", "-v", Kind::Flag, 0, 0, false, "", "", "", "Viewer", Viewer,
     "print a line per frame also without a script" },
+  { "interactive-rate", "", Kind::Number, 0, 1000, false, "", "FPS", "10", "Viewer", Viewer,
+    "frames per second asked while dragging (VTK's desired update rate): the camera rays are "
+    "cast at a reduced size to meet it, shadows on, and the frame after the drag is full size; "
+    "0: always full size" },
   { "help", "-h", Kind::Help, 0, 0, false, "", "", "", "Help", Both, "show this help and exit" },
   // The viewer's actions: keys without an option.
   { "hud", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "on-screen text on/off",

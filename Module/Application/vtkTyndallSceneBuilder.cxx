@@ -274,6 +274,7 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   mapper->SetSampleDistance(o->GetNumber("sample-distance"));
   mapper->SetAdaptiveThreshold(o->GetNumber("adaptive-threshold"));
   mapper->SetJitter(!o->GetFlag("no-jitter"));
+  mapper->SetEmptySpaceSkipping(!o->GetFlag("no-skip"));
   medium->SetScatteringModel(o->GetChoice("model"));
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));

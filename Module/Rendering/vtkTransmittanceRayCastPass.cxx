@@ -21,15 +21,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 vtkStandardNewMacro(vtkTransmittanceRayCastPass);
 
 namespace
 {
 constexpr int kMaxLights = vtkTyndallSceneReader::MaximumNumberOfLights;
-// llvmpipe's total loop-iteration limit per shader invocation.
-constexpr double kLoopLimit = 65535.0;
+// The most camera steps a ray takes.
+constexpr double kMaxSteps = 1 << 20;
 // Brute-force light marches take this many samples per loop iteration.
 constexpr double kBruteForceUnroll = 8.0;
 
@@ -54,6 +53,7 @@ vtkTransmittanceRayCastPass::~vtkTransmittanceRayCastPass() = default;
 bool vtkTransmittanceRayCastPass::Render(
   const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkObject* reporter)
 {
+  this->LastPassCount = 0;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
       vtkTransmittanceShaderSource::RAY_CAST, frame.GetShaderVariant()));
@@ -63,6 +63,80 @@ bool vtkTransmittanceRayCastPass::Render(
     return false;
   }
   vtkTransmittanceScopedTextures textures({ inputs.Depth, inputs.Maps, inputs.Occlusion });
+  this->SetUniforms(frame, inputs, program);
+
+  const double step = frame.GetStepLength() * std::max(inputs.StepScale, 1.0);
+  program->SetUniformf("stepLength", static_cast<float>(step));
+  const int steps = static_cast<int>(std::min(kMaxSteps, frame.Diagonal / step + 2.0));
+  const int perPass = StepsPerPass(frame);
+  const int passes = (steps + perPass - 1) / perPass;
+  const int reduction = std::max(inputs.Reduction, 1);
+  this->LastPassCount = passes;
+  if (passes == 1 && reduction == 1)
+  {
+    this->DrawDirect(frame, program, steps);
+    return true;
+  }
+  int viewport[4];
+  frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  const int width = (viewport[2] + reduction - 1) / reduction;
+  const int height = (viewport[3] + reduction - 1) / reduction;
+  const float toWindow[4] = { static_cast<float>(viewport[2]) / width,
+    static_cast<float>(viewport[3]) / height, static_cast<float>(viewport[0]),
+    static_cast<float>(viewport[1]) };
+  program->SetUniform4f("fragToWindow", toWindow);
+  program->SetUniformi("accumulate", 1);
+  auto draw = [&](int pass, vtkTextureObject* previous)
+  {
+    program->SetUniformi("previousTexture", previous->GetTextureUnit());
+    program->SetUniformi("firstStep", pass * perPass);
+    program->SetUniformi("endStep", std::min(steps, (pass + 1) * perPass));
+    this->Quad.Render();
+  };
+  return this->Accumulation->Render(frame, viewport, width, height, passes, draw, reporter);
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceRayCastPass::StepsPerPass(const vtkTransmittanceFrame& frame)
+{
+  // Loop iterations of one camera step: the step, the light loop, and a
+  // brute-force light march per brute-force light.
+  double perStep = 1.0 + static_cast<double>(frame.Lights.size());
+  for (const vtkTransmittanceFrame::Light& light : frame.Lights)
+  {
+    if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
+    {
+      perStep += std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll);
+    }
+  }
+  return std::max(1, static_cast<int>(IterationBudget / perStep));
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceRayCastPass::DrawDirect(
+  const vtkTransmittanceFrame& frame, vtkShaderProgram* program, int steps)
+{
+  const float toWindow[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
+  program->SetUniform4f("fragToWindow", toWindow);
+  program->SetUniformi("accumulate", 0);
+  program->SetUniformi("firstStep", 0);
+  program->SetUniformi("endStep", steps);
+  vtkOpenGLState* state = frame.State;
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  this->Quad.Render();
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceRayCastPass::SetUniforms(
+  const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const
+{
   frame.SetMediumUniforms(program);
   if (inputs.Maps)
   {
@@ -76,6 +150,9 @@ bool vtkTransmittanceRayCastPass::Render(
   ToColumnMajor(ndcToWorld, ndcToWorldF);
   program->SetUniformMatrix4x4("ndcToWorld", ndcToWorldF);
   program->SetUniformi("depthTexture", inputs.Depth->GetTextureUnit());
+  // Unread without accumulation, but a 2-D sampler must not share a unit
+  // with the 3-D ones: point it at the depth texture's until a pass sets it.
+  program->SetUniformi("previousTexture", inputs.Depth->GetTextureUnit());
 
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;
@@ -85,11 +162,6 @@ bool vtkTransmittanceRayCastPass::Render(
   program->SetUniformi("layersPerLight", std::max(frame.Layers, 1));
   program->SetUniformi("boundsLayer", std::max(frame.BoundsLayer, 0));
   program->SetUniformi("mapSlices", std::max(inputs.MapSlices, 1));
-  const double step = frame.GetStepLength();
-  this->WarnAboutLoopLimit(frame, reporter);
-  program->SetUniformf("stepLength", static_cast<float>(step));
-  program->SetUniformi(
-    "maxSteps", static_cast<int>(std::min(65536.0, frame.Diagonal / step + 2.0)));
   program->SetUniformi("lightSampleCount", s.LightSampleCount);
   program->SetUniformi("jitter", s.Jitter ? 1 : 0);
   program->SetUniformf("anisotropy", static_cast<float>(medium.GetScatteringAnisotropy()));
@@ -104,18 +176,6 @@ bool vtkTransmittanceRayCastPass::Render(
     program->SetUniformf("occlusionBias", static_cast<float>(2.0 * frame.MinimumSpacing));
   }
   this->SetLightUniforms(frame, program);
-
-  vtkOpenGLState* state = frame.State;
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  this->Quad.Render();
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -151,45 +211,15 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
 }
 
 //------------------------------------------------------------------------------
-void vtkTransmittanceRayCastPass::WarnAboutLoopLimit(
-  const vtkTransmittanceFrame& frame, vtkObject* reporter)
-{
-  if (this->SoftwareRenderer < 0)
-  {
-    const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    this->SoftwareRenderer = name && std::strstr(name, "llvmpipe") ? 1 : 0;
-  }
-  if (this->SoftwareRenderer != 1 || this->WarnedLoopLimit)
-  {
-    return;
-  }
-  // Counted per camera ray: its steps, plus the brute-force light marches.
-  int bruteForceLights = 0;
-  for (const vtkTransmittanceFrame::Light& light : frame.Lights)
-  {
-    bruteForceLights += light.Method == vtkTransmittanceMapMath::BRUTE_FORCE ? 1 : 0;
-  }
-  const double iterations = (frame.Diagonal / frame.GetStepLength() + 2.0) *
-    (1.0 + bruteForceLights * std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
-  if (iterations > kLoopLimit)
-  {
-    vtkWarningWithObjectMacro(reporter,
-      << "llvmpipe stops a shader's loops after 65535 iterations; a camera ray here can need "
-      << iterations << ". Increase SampleDistance or lower LightSampleCount, or rays end early.");
-    this->WarnedLoopLimit = true;
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkTransmittanceRayCastPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Quad.Release(window);
-  this->SoftwareRenderer = -1;
+  this->Accumulation->ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceRayCastPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SoftwareRenderer: " << this->SoftwareRenderer << "\n";
+  os << indent << "LastPassCount: " << this->LastPassCount << "\n";
 }

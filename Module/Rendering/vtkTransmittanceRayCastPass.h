@@ -9,9 +9,20 @@
  * geometry), and blended as premultiplied colour over what was drawn
  * (ONE, ONE_MINUS_SRC_ALPHA).
  *
- * Mesa's llvmpipe stops all loops of a shader invocation after 65535
- * iterations in total, silently: a ray would end early. The pass warns once
- * when a frame can get there.
+ * Bounded work per fragment: Mesa's llvmpipe ends all loops of a shader
+ * invocation after 65535 iterations in total, silently (a ray would stop
+ * early), and other drivers reset a GPU whose shader runs too long. The
+ * pass counts a camera step's loop iterations (the step, the light loop,
+ * each brute-force light march of LightSampleCount / 8 iterations) and gives
+ * each pass at most IterationBudget of them: a ray that needs more is
+ * marched over several passes (vtkTransmittanceAccumulationPass), each
+ * continuing where the last stopped, so every step count gives the same
+ * picture as an unbounded march. With one pass and no reduction the quad
+ * draws straight into the window.
+ *
+ * Inputs::Reduction > 1 renders the rays at 1 / Reduction of the viewport's
+ * width and height and upscales them, and Inputs::StepScale > 1 lengthens
+ * the camera steps (interactive level of detail).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -20,8 +31,10 @@
 #define vtkTransmittanceRayCastPass_h
 
 #include "TyndallRenderingModule.h" // For export macro
+#include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
-#include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
+#include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
+#include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
 
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -43,12 +56,20 @@ public:
     int MapSlices = 1;
     vtkTextureObject* Occlusion = nullptr; // null: no opaque occluders
     int OcclusionSlices = 1;
+    int Reduction = 1;      // rays at 1 / Reduction of the viewport's width and height
+    double StepScale = 1.0; // camera steps StepScale times the frame's
   };
+
+  /// Loop iterations one pass gives a fragment (half of llvmpipe's 65535).
+  static constexpr int IterationBudget = 32768;
 
   /// Draws the medium; false (with an error) when the shader does not compile.
   bool Render(const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkObject* reporter);
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// Passes the last Render() split the rays over.
+  int GetLastPassCount() const { return this->LastPassCount; }
 
 protected:
   vtkTransmittanceRayCastPass();
@@ -58,12 +79,15 @@ private:
   vtkTransmittanceRayCastPass(const vtkTransmittanceRayCastPass&) = delete;
   void operator=(const vtkTransmittanceRayCastPass&) = delete;
 
+  void SetUniforms(
+    const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const;
   void SetLightUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const;
-  void WarnAboutLoopLimit(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+  static int StepsPerPass(const vtkTransmittanceFrame& frame);
+  void DrawDirect(const vtkTransmittanceFrame& frame, vtkShaderProgram* program, int steps);
 
   vtkTransmittanceShaderQuad Quad;
-  int SoftwareRenderer = -1; // llvmpipe: 1, other: 0, unknown: -1
-  bool WarnedLoopLimit = false;
+  vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
+  int LastPassCount = 0;
 };
 
 #endif

@@ -8,6 +8,7 @@
 
 // The GLSL sources, embedded at build time from glsl/*.glsl.
 #include "vtkTransmittanceCommonFS.h"
+#include "vtkTransmittanceCompositeFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
@@ -47,6 +48,10 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
 //------------------------------------------------------------------------------
 std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Variant& variant)
 {
+  if (pass == COMPOSITE)
+  {
+    return vtkTransmittanceCompositeFS;
+  }
   std::string source = vtkTransmittanceCommonFS;
   switch (pass)
   {

@@ -45,7 +45,8 @@ public:
   {
     MAP_BUILD,
     OCCLUSION,
-    RAY_CAST
+    RAY_CAST,
+    COMPOSITE // alone: it shares nothing with the others
   };
 
   /// The compile-time variants of the shaders.

@@ -6,6 +6,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
 #include "vtkTransmittanceDepthPass.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceLightFrustum.h"
@@ -16,7 +17,12 @@
 #include "vtkTransmittanceRayCastPass.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkVolume.h"
 #include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 
@@ -36,7 +42,71 @@ public:
   // Whether the last Render() went through every pass: the lights, methods,
   // frusta and maps it reports describe that render, or nothing.
   bool Complete = false;
+  // Interactive level of detail: the last camera-ray cost per full-size
+  // pixel (0: not measured yet), time and reduction.
+  double SecondsPerPixel = 0.0;
+  double RayCastTime = 0.0;
+  int Reduction = 0;
+  double StepScale = 1.0;
+
+  void ChooseDetail(vtkRenderer* renderer, vtkVolume* volume, bool adjust, int maximum,
+    vtkTransmittanceRayCastPass::Inputs& inputs) const;
+  bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter);
 };
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::vtkInternals::ChooseDetail(vtkRenderer* renderer,
+  vtkVolume* volume, bool adjust, int maximum, vtkTransmittanceRayCastPass::Inputs& inputs) const
+{
+  inputs.Reduction = 1;
+  inputs.StepScale = 1.0;
+  const double allocated = volume->GetAllocatedRenderTime();
+  if (!adjust || !(this->SecondsPerPixel > 0.0) || !(allocated > 0.0))
+  {
+    return;
+  }
+  int size[2], origin[2];
+  renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  // How many times too slow the full frame would be: up to 4x, fewer
+  // pixels; beyond, also steps twice as long (the cost goes as pixels x
+  // steps).
+  const double need = this->SecondsPerPixel * size[0] * size[1] / allocated;
+  if (need <= 1.0)
+  {
+    return;
+  }
+  inputs.StepScale = need > 4.0 ? 2.0 : 1.0;
+  const double r = std::ceil(std::sqrt(need / inputs.StepScale) - 1e-9);
+  inputs.Reduction = static_cast<int>(std::min(std::max(r, 1.0), static_cast<double>(maximum)));
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::CastRays(
+  const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  if (!this->RayCast->Render(this->Frame, inputs, reporter))
+  {
+    return false;
+  }
+  this->Reduction = inputs.Reduction;
+  this->StepScale = inputs.StepScale;
+  this->RayCastTime = 0.0;
+  if (timed)
+  {
+    glFinish();
+    timer->StopTimer();
+    this->RayCastTime = timer->GetElapsedTime();
+    // The cost per full-size pixel: the reduced image has 1 / r^2 of them.
+    int size[2], origin[2];
+    this->Frame.Renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+    const double pixels = std::max(1.0, double(size[0]) * size[1]);
+    this->SecondsPerPixel = this->RayCastTime * inputs.StepScale /
+      (pixels / (double(inputs.Reduction) * inputs.Reduction));
+  }
+  return true;
+}
 
 //------------------------------------------------------------------------------
 vtkTransmittanceVolumeMapper::vtkTransmittanceVolumeMapper()
@@ -152,7 +222,33 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     inputs.Maps = in.Maps->GetTexture();
     inputs.MapSlices = in.Maps->GetSlices();
   }
-  in.Complete = in.RayCast->Render(in.Frame, inputs, this);
+  in.ChooseDetail(
+    renderer, volume, this->InteractiveAdjustment, this->MaximumImageReduction, inputs);
+  in.Complete = in.CastRays(inputs, this->InteractiveAdjustment, this);
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetLastImageReduction()
+{
+  return this->Internals->Complete ? this->Internals->Reduction : 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::GetLastStepScale()
+{
+  return this->Internals->Complete ? this->Internals->StepScale : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetLastRayCastPassCount()
+{
+  return this->Internals->Complete ? this->Internals->RayCast->GetLastPassCount() : 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::GetLastRayCastTime()
+{
+  return this->Internals->Complete ? this->Internals->RayCastTime : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -214,6 +310,8 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightSampleCount: " << this->LightSampleCount << "\n";
   os << indent << "Jitter: " << (this->Jitter ? "On" : "Off") << "\n";
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
+  os << indent << "InteractiveAdjustment: " << (this->InteractiveAdjustment ? "On" : "Off") << "\n";
+  os << indent << "MaximumImageReduction: " << this->MaximumImageReduction << "\n";
   os << indent << "MapBuildCount: " << this->GetMapBuildCount() << "\n";
   os << indent << "LastMapBuildTime: " << this->GetLastMapBuildTime() << "\n";
 }

@@ -154,7 +154,9 @@ public:
   ///@{
   /**
    * Samples per light ray, for building maps and for brute force, in
-   * [1, 2048]; default 128.
+   * [1, 2048]; default 128. Brute force stays right at any count: camera
+   * rays whose light marches need more loop iterations than a driver allows
+   * a fragment are split over several passes (GetLastRayCastPassCount()).
    */
   vtkSetClampMacro(LightSampleCount, int, 1, 2048);
   vtkGetMacro(LightSampleCount, int);
@@ -197,6 +199,61 @@ public:
    * last render (0 before the first).
    */
   double GetEmptyBlockFraction();
+
+  ///@{
+  /**
+   * Interactive level of detail (default on): honour the time VTK's
+   * interactive/still protocol allocates to the volume
+   * (vtkProp::GetAllocatedRenderTime(), from the render window's desired
+   * update rate: high while the user drags, vtkRenderWindowInteractor's
+   * StillUpdateRate when the interaction stops). When the camera rays of a
+   * full-size image would take longer than that (predicted from the last
+   * frame's measured cost per pixel), they are cast at 1 / r of the
+   * viewport's width and height and upscaled, r the smallest integer that
+   * fits, at most MaximumImageReduction; when the full frame would be more
+   * than 4 times too slow, the camera steps are also made twice as long
+   * (GetLastStepScale()). Shadows stay on, with the same maps; the still
+   * frame is the full-size picture. Timing a frame waits for the GPU to
+   * finish the camera rays (glFinish).
+   */
+  vtkSetMacro(InteractiveAdjustment, bool);
+  vtkGetMacro(InteractiveAdjustment, bool);
+  vtkBooleanMacro(InteractiveAdjustment, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The largest reduction of the image's width and height while
+   * interacting, in [1, 8]; default 4 (1 / 16 of the pixels).
+   */
+  vtkSetClampMacro(MaximumImageReduction, int, 1, 8);
+  vtkGetMacro(MaximumImageReduction, int);
+  ///@}
+
+  /**
+   * The reduction the last Render() used (1: full size; 0 before the first
+   * or after a failed render).
+   */
+  int GetLastImageReduction();
+
+  /**
+   * The factor the last Render() lengthened the camera steps by (1 or 2;
+   * 0 before the first or after a failed render).
+   */
+  double GetLastStepScale();
+
+  /**
+   * The passes the last Render() split the camera rays over (each pass
+   * runs a bounded number of loop iterations per pixel; see
+   * LightSampleCount); 0 before the first or after a failed render.
+   */
+  int GetLastRayCastPassCount();
+
+  /**
+   * Seconds the camera rays of the last Render() took (measured with
+   * InteractiveAdjustment on, else 0).
+   */
+  double GetLastRayCastTime();
 
   /**
    * How many times the transmittance maps were built.
@@ -264,6 +321,8 @@ protected:
   int LightSampleCount = 128;
   bool Jitter = true;
   bool EmptySpaceSkipping = true;
+  bool InteractiveAdjustment = true;
+  int MaximumImageReduction = 4;
 
 private:
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;

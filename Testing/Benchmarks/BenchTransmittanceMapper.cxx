@@ -14,7 +14,9 @@
 // CPU reference is slow; the same scene at the same size for both.
 //
 // Per medium, a second table measures empty-space skipping off against on
-// in the same run (frame, map build, the grid's cost, picture difference).
+// in the same run (frame, map build, the grid's cost, picture difference);
+// on the cloud, a last table the frame rate while dragging the camera
+// (interactive level of detail, shadows on).
 //
 // Media: the built-in cloud, a dense medium, sparse blobs (six Gaussian
 // blobs, most of the box empty), and one more per --volume: a
@@ -450,6 +452,44 @@ void MeasureSkipping(Scene& timing, const Options& o)
                "functions do).\n";
 }
 
+// Dragging the camera as VTK's interactor does (desired update rate 10
+// frames per second, then the still rate): frames per second while
+// dragging, with AdaptiveETM shadows, and whether the still frame after it
+// is the picture from before.
+void MeasureInteraction(const Medium& medium, const Options& o)
+{
+  Scene scene = MakeScene(medium, o);
+  scene.Window->SetSize(o.Size, o.Size);
+  scene.Mapper->SetTransmittanceMethodToAdaptiveETM();
+  TimeFrame(scene.Window); // builds the maps
+  const double still = TimeFrame(scene.Window);
+  vtkSmartPointer<vtkImageData> before = Grab(scene.Window);
+  const int builds = scene.Mapper->GetMapBuildCount();
+  const double rate = 10.0;
+  scene.Window->SetDesiredUpdateRate(rate);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  const int frames = 20;
+  double total = 0.0;
+  for (int f = 0; f < frames; ++f)
+  {
+    camera->Azimuth(f < frames / 2 ? 2.0 : -2.0);
+    total += TimeFrame(scene.Window);
+  }
+  const int reduction = scene.Mapper->GetLastImageReduction();
+  const double stepScale = scene.Mapper->GetLastStepScale();
+  scene.Window->SetDesiredUpdateRate(0.0001);
+  TimeFrame(scene.Window);
+  std::cout << "\n## Interaction (" << medium.Name << ", " << o.Size << "^2, AdaptiveETM)\n\n"
+            << "| still frame (s) | frames per second while dragging (asked: " << rate
+            << ") | image reduction | step scale | map builds while dragging | still frame "
+               "after the drag vs before |\n"
+            << "|---|---|---|---|---|---|\n"
+            << "| " << std::setprecision(4) << still << " | " << frames / total << " | 1/"
+            << reduction << " | " << stepScale << " | "
+            << scene.Mapper->GetMapBuildCount() - builds << " | largest difference "
+            << MaxDifference(Grab(scene.Window), before) << "/255 |\n";
+}
+
 // Runs every method on one medium and prints a table; returns the frame
 // times and PSNRs by method.
 Figures RunMedium(const Medium& medium, const Options& o)
@@ -649,6 +689,7 @@ int main(int argc, char* argv[])
   }
   const Figures& cloud = figures[0];
   const Figures& dense = figures[1];
+  MeasureInteraction(media[0], o);
 
   using M = vtkTransmittanceVolumeMapper;
   std::cout << "\n## Bars\n\n";

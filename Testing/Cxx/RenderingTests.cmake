@@ -14,6 +14,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestTransmittanceMapperCaching.cxx
   TestTransmittanceMapperEmptySpace.cxx
+  TestTransmittanceMapperInteractive.cxx
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOccluder.cxx

@@ -3,11 +3,21 @@
 // integrates emission-absorption or single scattering with the light
 // transmittance of the selected method (Documentation/rendering-model.md).
 // Writes premultiplied radiance and alpha = 1 - view transmittance.
+//
+// A ray's steps n = firstStep .. endStep - 1 are marched by one pass: the
+// whole ray in one (drawn straight into the window), or split over several
+// passes (vtkTransmittanceAccumulationPass), each continuing from the state
+// the previous one left in previousTexture (accumulate = 1).
 in vec2 texCoord;
 //VTK::Output::Dec
 
 uniform mat4 ndcToWorld;
 uniform sampler2D depthTexture; // the whole window's depth
+uniform vec4 fragToWindow;      // window pixel = gl_FragCoord.xy * xy + zw
+uniform int firstStep;
+uniform int endStep;
+uniform int accumulate;
+uniform sampler2D previousTexture;
 
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform int method;
@@ -17,7 +27,6 @@ uniform int boundsLayer; // within a light's layers (adaptive methods)
 uniform int mapSlices;
 uniform sampler3D mapTexture;
 uniform float stepLength;
-uniform int maxSteps;
 uniform int lightSampleCount;
 uniform int jitter;
 uniform float anisotropy;
@@ -173,8 +182,14 @@ vec3 inScattering(vec3 x, vec3 w)
 void main()
 {
   vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
+  vec2 windowXY = gl_FragCoord.xy * fragToWindow.xy + fragToWindow.zw;
   float depthNdc =
-    2.0 * texture(depthTexture, gl_FragCoord.xy / vec2(textureSize(depthTexture, 0))).r - 1.0;
+    2.0 * texture(depthTexture, windowXY / vec2(textureSize(depthTexture, 0))).r - 1.0;
+  vec4 previous = vec4(0.0);
+  if (accumulate != 0)
+  {
+    previous = texelFetch(previousTexture, ivec2(gl_FragCoord.xy), 0);
+  }
   vec3 p0 = unproject(ndc, -1.0);
   vec3 p1 = unproject(ndc, depthNdc);
   vec3 w = normalize(p1 - p0);
@@ -182,9 +197,14 @@ void main()
   vec2 range = tyndallIntersectVolume(p0, w);
   float tNear = max(range.x, 0.0);
   float tFar = min(range.y, tDepth);
-  if (!(tNear < tFar))
+  if (!(tNear < tFar) || 1.0 - previous.a < TYNDALL_VIEW_TERMINATION)
   {
-    discard;
+    if (accumulate == 0)
+    {
+      discard;
+    }
+    gl_FragData[0] = previous; // nothing (more) to march
+    return;
   }
   float offset = 0.5;
   if (jitter != 0)
@@ -192,8 +212,8 @@ void main()
     // A fixed per-pixel hash: the same pixel gets the same offset every frame.
     offset = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
   }
-  vec3 radiance = vec3(0.0);
-  float Tv = 1.0;
+  vec3 radiance = previous.rgb;
+  float Tv = 1.0 - previous.a;
 #if TYNDALL_SKIP_EMPTY
   vec3 bo, bd;
   tyndallBlockRay(p0, w, bo, bd);
@@ -201,8 +221,8 @@ void main()
 #endif
   // Step n spans [tNear + n stepLength, tNear + (n + 1) stepLength), the last
   // one cut at tFar; its sample lies at `offset` of it.
-  int n = 0;
-  for (int i = 0; i < maxSteps; ++i)
+  int n = firstStep;
+  for (int i = firstStep; i < endStep && n < endStep; ++i)
   {
     float t0 = tNear + float(n) * stepLength;
     if (!(t0 < tFar))
@@ -212,7 +232,7 @@ void main()
     float dt = min(stepLength, tFar - t0);
     float ts = t0 + offset * dt;
 #if TYNDALL_SKIP_EMPTY
-    if (tyndallSkipEmpty(bo, bd, ts, tBlockEnd, n, tNear, stepLength, offset, maxSteps))
+    if (tyndallSkipEmpty(bo, bd, ts, tBlockEnd, n, tNear, stepLength, offset, endStep))
     {
       continue;
     }

@@ -1,0 +1,77 @@
+/**
+ * @class   vtkTransmittanceAccumulationPass
+ * @brief   runs the camera-ray pass in pieces into an offscreen image, then draws it over the
+ * window
+ *
+ * Two uses share it (vtkTransmittanceRayCastPass):
+ * - a march split over several passes, each continuing the rays where the
+ *   previous one stopped, so that no fragment runs more loop iterations than
+ *   a driver allows (Mesa's llvmpipe ends a fragment's loops silently after
+ *   65535 in all);
+ * - a reduced image while the user interacts (interactive level of detail),
+ *   upscaled with linear filtering.
+ *
+ * Render() clears two RGBA32F images of the reduced size to 0 and calls
+ * `draw(pass, previous)` `passes` times, each drawing into one image with the
+ * other bound as `previous` (the rays' state so far: premultiplied radiance
+ * and 1 - transmittance); then it draws the last image over the renderer's
+ * viewport in the framebuffer that was bound, blended ONE,
+ * ONE_MINUS_SRC_ALPHA (vtkTransmittanceCompositeFS.glsl).
+ *
+ * Internal to Tyndall::Rendering.
+ */
+
+#ifndef vtkTransmittanceAccumulationPass_h
+#define vtkTransmittanceAccumulationPass_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h"            // For vtkSmartPointer
+#include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
+
+#include <functional> // For std::function
+
+class vtkOpenGLFramebufferObject;
+class vtkTextureObject;
+class vtkTransmittanceFrame;
+class vtkWindow;
+
+class TYNDALLRENDERING_EXPORT vtkTransmittanceAccumulationPass : public vtkObject
+{
+public:
+  static vtkTransmittanceAccumulationPass* New();
+  vtkTypeMacro(vtkTransmittanceAccumulationPass, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Draws one pass into the bound image; `previous` holds the passes before it.
+  using DrawFunction = std::function<void(int pass, vtkTextureObject* previous)>;
+
+  /**
+   * Runs `passes` passes into width x height images and composites the
+   * result over `viewport` (x, y, width, height in window pixels). False
+   * (with an error through `reporter`) when the images or their framebuffer
+   * cannot be made.
+   */
+  bool Render(const vtkTransmittanceFrame& frame, const int viewport[4], int width, int height,
+    int passes, const DrawFunction& draw, vtkObject* reporter);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkTransmittanceAccumulationPass();
+  ~vtkTransmittanceAccumulationPass() override;
+
+private:
+  vtkTransmittanceAccumulationPass(const vtkTransmittanceAccumulationPass&) = delete;
+  void operator=(const vtkTransmittanceAccumulationPass&) = delete;
+
+  bool Allocate(const vtkTransmittanceFrame& frame, int width, int height, vtkObject* reporter);
+  bool Composite(const vtkTransmittanceFrame& frame, vtkTextureObject* image, bool upscaled,
+    vtkObject* reporter);
+
+  vtkSmartPointer<vtkTextureObject> Images[2];
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkTransmittanceShaderQuad Quad;
+};
+
+#endif
