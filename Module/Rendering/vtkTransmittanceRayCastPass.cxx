@@ -56,7 +56,7 @@ bool vtkTransmittanceRayCastPass::Render(
   this->LastPassCount = 0;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
-      vtkTransmittanceShaderSource::RAY_CAST, frame.GetShaderVariant()));
+      vtkTransmittanceShaderSource::RAY_CAST, GetVariant(frame, inputs)));
   if (!program)
   {
     vtkErrorWithObjectMacro(reporter, << "The ray-casting shader did not compile.");
@@ -94,6 +94,21 @@ bool vtkTransmittanceRayCastPass::Render(
     this->Quad.Render();
   };
   return this->Accumulation->Render(frame, viewport, width, height, passes, draw, reporter);
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
+  const vtkTransmittanceFrame& frame, const Inputs& inputs)
+{
+  vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
+  if (inputs.Maps && frame.NeedsMaps())
+  {
+    variant.MapLayers = frame.Layers - (frame.BoundsLayer >= 0 ? 1 : 0);
+    variant.AdaptiveMaps = frame.BoundsLayer >= 0;
+  }
+  variant.Occlusion = inputs.Occlusion != nullptr;
+  variant.Emission = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
+  return variant;
 }
 
 //------------------------------------------------------------------------------
@@ -168,7 +183,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   program->SetUniformf("ambient", static_cast<float>(medium.GetAmbientIntensity()));
   program->SetUniformf("emissionScale",
     medium.GetHasEmission() ? static_cast<float>(medium.GetEmissionScale()) : 0.0f);
-  program->SetUniformi("useOcclusion", inputs.Occlusion ? 1 : 0);
   if (inputs.Occlusion)
   {
     program->SetUniformi("occlusionTexture", inputs.Occlusion->GetTextureUnit());

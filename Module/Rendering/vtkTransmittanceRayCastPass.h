@@ -35,6 +35,7 @@
 #include "vtkObject.h"
 #include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
 #include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
+#include "vtkTransmittanceShaderSource.h"     // For vtkTransmittanceShaderSource::Variant
 
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -83,6 +84,8 @@ private:
     const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const;
   void SetLightUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const;
   static int StepsPerPass(const vtkTransmittanceFrame& frame);
+  static vtkTransmittanceShaderSource::Variant GetVariant(
+    const vtkTransmittanceFrame& frame, const Inputs& inputs);
   void DrawDirect(const vtkTransmittanceFrame& frame, vtkShaderProgram* program, int steps);
 
   vtkTransmittanceShaderQuad Quad;

@@ -42,6 +42,10 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("PI", vtkMath::Pi());
   define("MISSING_DATA", variant.MissingData ? 1 : 0);
   define("SKIP_EMPTY", variant.SkipEmpty ? 1 : 0);
+  define("MAP_LAYERS", variant.MapLayers);
+  define("ADAPTIVE_MAPS", variant.AdaptiveMaps ? 1 : 0);
+  define("OCCLUSION", variant.Occlusion ? 1 : 0);
+  define("EMISSION", variant.Emission ? 1 : 0);
   return os.str();
 }
 

@@ -26,7 +26,12 @@
  * - TYNDALL_MISSING_DATA: 1 when the medium has missing data (NaN voxels,
  *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise;
  * - TYNDALL_SKIP_EMPTY: 1 when camera rays and map builds skip empty blocks
- *   of the majorant grid (vtkTyndallMajorantGrid), 0 otherwise.
+ *   of the majorant grid (vtkTyndallMajorantGrid), 0 otherwise;
+ * - the camera rays' TYNDALL_MAP_LAYERS (coefficient layers a map lookup
+ *   reads; 0 when no light has a map), TYNDALL_ADAPTIVE_MAPS (the bounds
+ *   layer), TYNDALL_OCCLUSION (opaque occluders) and TYNDALL_EMISSION: only
+ *   what the frame uses is compiled in (a None frame fetched 6 textures
+ *   per sample, all but 2 of them unused, before).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -54,6 +59,13 @@ public:
   {
     bool MissingData = false;
     bool SkipEmpty = false;
+    ///@{
+    /// The camera rays' variant (RAY_CAST only).
+    int MapLayers = 0; // coefficient layers a map lookup reads; 0: no maps
+    bool AdaptiveMaps = false;
+    bool Occlusion = false;
+    bool Emission = false;
+    ///@}
   };
 
   /// The fragment shader of a pass, constants injected.

@@ -48,15 +48,21 @@ vec3 unproject(vec2 ndcXY, float ndcZ)
   return p.xyz / p.w;
 }
 
-uniform int useOcclusion;
+// What a frame needs is compiled in, not switched by uniforms (llvmpipe
+// fetches the textures of a uniform branch not taken): TYNDALL_OCCLUSION,
+// TYNDALL_EMISSION, TYNDALL_MAP_LAYERS (the coefficient layers a map lookup
+// reads; 0: no light has a map) and TYNDALL_ADAPTIVE_MAPS (bounds layer).
+#if TYNDALL_OCCLUSION
 uniform sampler3D occlusionTexture; // per light: distance to opaque geometry
 uniform int occlusionSlices;
 uniform float occlusionBias;
+#endif
 
 // Whether opaque geometry lies between x and light l.
 bool occluded(int l, vec3 x)
 {
-  if (useOcclusion == 0 || lightHasFrustum[l] == 0)
+#if TYNDALL_OCCLUSION
+  if (lightHasFrustum[l] == 0)
   {
     return false;
   }
@@ -69,6 +75,9 @@ bool occluded(int l, vec3 x)
   tyndallLightRay(l, ab, origin, dir);
   float tOccluder = texture(occlusionTexture, vec3(ab, (float(l) + 0.5) / float(occlusionSlices))).r;
   return dot(x - origin, dir) > tOccluder + occlusionBias;
+#else
+  return false;
+#endif
 }
 
 // Light transmittance from x towards light l (world direction toLight).
@@ -109,6 +118,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
     }
     return exp(-tau * dt);
   }
+#if TYNDALL_MAP_LAYERS > 0
   // Transmittance maps.
   vec2 ab = tyndallLightTexel(l, x);
   vec3 origin, dir;
@@ -120,25 +130,28 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
   }
   float s = (dot(x - origin, dir) - range.x) / (range.y - range.x);
   float c[TYNDALL_MAX_COEFFICIENTS];
-  int first = l * layersPerLight;
-  for (int k = 0; k < TYNDALL_MAX_COEFFICIENTS / TYNDALL_COEFFICIENTS_PER_LAYER; ++k)
+  for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
   {
-    if (TYNDALL_COEFFICIENTS_PER_LAYER * k < coefficientCount)
-    {
-      vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
-      c[4 * k] = v.x;
-      c[4 * k + 1] = v.y;
-      c[4 * k + 2] = v.z;
-      c[4 * k + 3] = v.w;
-    }
+    c[j] = 0.0;
+  }
+  int first = l * layersPerLight;
+  for (int k = 0; k < TYNDALL_MAP_LAYERS; ++k)
+  {
+    vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
+    c[4 * k] = v.x;
+    c[4 * k + 1] = v.y;
+    c[4 * k + 2] = v.z;
+    c[4 * k + 3] = v.w;
   }
   vec3 bounds = vec3(0.0, 1.0, 1.0);
-  if (m == TYNDALL_ADAPTIVE_TFM || m == TYNDALL_ADAPTIVE_ETM)
-  {
-    bounds = texture(mapTexture,
-      vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
-  }
+#if TYNDALL_ADAPTIVE_MAPS
+  bounds =
+    texture(mapTexture, vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
+#endif
   return tyndallReconstruct(m, c, coefficientCount, bounds, clamp(s, 0.0, 1.0));
+#else
+  return 1.0;
+#endif
 }
 
 // In-scattered radiance per unit sigma_s at x, for the view direction w.
@@ -253,10 +266,9 @@ void main()
       else
       {
         source = color * inScattering(x, w);
-        if (emissionScale > 0.0)
-        {
-          source += emissionScale * tyndallEmissionColor(tableCoord);
-        }
+#if TYNDALL_EMISSION
+        source += emissionScale * tyndallEmissionColor(tableCoord);
+#endif
       }
       radiance += Tv * stepOpacity * source;
       Tv *= 1.0 - stepOpacity;
