@@ -54,9 +54,15 @@ bool vtkTransmittanceRayCastPass::Render(
   const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkObject* reporter)
 {
   this->LastPassCount = 0;
+  const double step = frame.GetStepLength() * std::max(inputs.StepScale, 1.0);
+  const int steps = static_cast<int>(std::min(kMaxSteps, frame.Diagonal / step + 2.0));
+  const int perPass = StepsPerPass(frame);
+  const int passes = (steps + perPass - 1) / perPass;
+  const int reduction = std::max(inputs.Reduction, 1);
+  const bool direct = passes == 1 && reduction == 1;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
-      vtkTransmittanceShaderSource::RAY_CAST, GetVariant(frame, inputs)));
+      vtkTransmittanceShaderSource::RAY_CAST, GetVariant(frame, inputs, !direct)));
   if (!program)
   {
     vtkErrorWithObjectMacro(reporter, << "The ray-casting shader did not compile.");
@@ -64,15 +70,9 @@ bool vtkTransmittanceRayCastPass::Render(
   }
   vtkTransmittanceScopedTextures textures({ inputs.Depth, inputs.Maps, inputs.Occlusion });
   this->SetUniforms(frame, inputs, program);
-
-  const double step = frame.GetStepLength() * std::max(inputs.StepScale, 1.0);
   program->SetUniformf("stepLength", static_cast<float>(step));
-  const int steps = static_cast<int>(std::min(kMaxSteps, frame.Diagonal / step + 2.0));
-  const int perPass = StepsPerPass(frame);
-  const int passes = (steps + perPass - 1) / perPass;
-  const int reduction = std::max(inputs.Reduction, 1);
   this->LastPassCount = passes;
-  if (passes == 1 && reduction == 1)
+  if (direct)
   {
     this->DrawDirect(frame, program, steps);
     return true;
@@ -85,7 +85,6 @@ bool vtkTransmittanceRayCastPass::Render(
     static_cast<float>(viewport[3]) / height, static_cast<float>(viewport[0]),
     static_cast<float>(viewport[1]) };
   program->SetUniform4f("fragToWindow", toWindow);
-  program->SetUniformi("accumulate", 1);
   auto draw = [&](int pass, vtkTextureObject* previous)
   {
     program->SetUniformi("previousTexture", previous->GetTextureUnit());
@@ -98,9 +97,10 @@ bool vtkTransmittanceRayCastPass::Render(
 
 //------------------------------------------------------------------------------
 vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
-  const vtkTransmittanceFrame& frame, const Inputs& inputs)
+  const vtkTransmittanceFrame& frame, const Inputs& inputs, bool accumulate)
 {
   vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
+  variant.Accumulate = accumulate;
   if (inputs.Maps && frame.NeedsMaps())
   {
     variant.MapLayers = frame.Layers - (frame.BoundsLayer >= 0 ? 1 : 0);
@@ -133,7 +133,6 @@ void vtkTransmittanceRayCastPass::DrawDirect(
 {
   const float toWindow[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
   program->SetUniform4f("fragToWindow", toWindow);
-  program->SetUniformi("accumulate", 0);
   program->SetUniformi("firstStep", 0);
   program->SetUniformi("endStep", steps);
   vtkOpenGLState* state = frame.State;
@@ -165,9 +164,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   ToColumnMajor(ndcToWorld, ndcToWorldF);
   program->SetUniformMatrix4x4("ndcToWorld", ndcToWorldF);
   program->SetUniformi("depthTexture", inputs.Depth->GetTextureUnit());
-  // Unread without accumulation, but a 2-D sampler must not share a unit
-  // with the 3-D ones: point it at the depth texture's until a pass sets it.
-  program->SetUniformi("previousTexture", inputs.Depth->GetTextureUnit());
 
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;

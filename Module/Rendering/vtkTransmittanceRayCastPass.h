@@ -85,7 +85,7 @@ private:
   void SetLightUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const;
   static int StepsPerPass(const vtkTransmittanceFrame& frame);
   static vtkTransmittanceShaderSource::Variant GetVariant(
-    const vtkTransmittanceFrame& frame, const Inputs& inputs);
+    const vtkTransmittanceFrame& frame, const Inputs& inputs, bool accumulate);
   void DrawDirect(const vtkTransmittanceFrame& frame, vtkShaderProgram* program, int steps);
 
   vtkTransmittanceShaderQuad Quad;

@@ -46,6 +46,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("ADAPTIVE_MAPS", variant.AdaptiveMaps ? 1 : 0);
   define("OCCLUSION", variant.Occlusion ? 1 : 0);
   define("EMISSION", variant.Emission ? 1 : 0);
+  define("ACCUMULATE", variant.Accumulate ? 1 : 0);
   return os.str();
 }
 

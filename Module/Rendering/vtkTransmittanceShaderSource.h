@@ -65,6 +65,7 @@ public:
     bool AdaptiveMaps = false;
     bool Occlusion = false;
     bool Emission = false;
+    bool Accumulate = false; // continues the rays of an earlier pass
     ///@}
   };
 

@@ -7,7 +7,7 @@
 // A ray's steps n = firstStep .. endStep - 1 are marched by one pass: the
 // whole ray in one (drawn straight into the window), or split over several
 // passes (vtkTransmittanceAccumulationPass), each continuing from the state
-// the previous one left in previousTexture (accumulate = 1).
+// the previous one left in previousTexture (TYNDALL_ACCUMULATE).
 in vec2 texCoord;
 //VTK::Output::Dec
 
@@ -16,8 +16,9 @@ uniform sampler2D depthTexture; // the whole window's depth
 uniform vec4 fragToWindow;      // window pixel = gl_FragCoord.xy * xy + zw
 uniform int firstStep;
 uniform int endStep;
-uniform int accumulate;
+#if TYNDALL_ACCUMULATE
 uniform sampler2D previousTexture;
+#endif
 
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform int method;
@@ -198,11 +199,9 @@ void main()
   vec2 windowXY = gl_FragCoord.xy * fragToWindow.xy + fragToWindow.zw;
   float depthNdc =
     2.0 * texture(depthTexture, windowXY / vec2(textureSize(depthTexture, 0))).r - 1.0;
-  vec4 previous = vec4(0.0);
-  if (accumulate != 0)
-  {
-    previous = texelFetch(previousTexture, ivec2(gl_FragCoord.xy), 0);
-  }
+#if TYNDALL_ACCUMULATE
+  vec4 previous = texelFetch(previousTexture, ivec2(gl_FragCoord.xy), 0);
+#endif
   vec3 p0 = unproject(ndc, -1.0);
   vec3 p1 = unproject(ndc, depthNdc);
   vec3 w = normalize(p1 - p0);
@@ -210,23 +209,28 @@ void main()
   vec2 range = tyndallIntersectVolume(p0, w);
   float tNear = max(range.x, 0.0);
   float tFar = min(range.y, tDepth);
+#if TYNDALL_ACCUMULATE
   if (!(tNear < tFar) || 1.0 - previous.a < TYNDALL_VIEW_TERMINATION)
   {
-    if (accumulate == 0)
-    {
-      discard;
-    }
     gl_FragData[0] = previous; // nothing (more) to march
     return;
   }
+  vec3 radiance = previous.rgb;
+  float Tv = 1.0 - previous.a;
+#else
+  if (!(tNear < tFar))
+  {
+    discard;
+  }
+  vec3 radiance = vec3(0.0);
+  float Tv = 1.0;
+#endif
   float offset = 0.5;
   if (jitter != 0)
   {
     // A fixed per-pixel hash: the same pixel gets the same offset every frame.
     offset = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
   }
-  vec3 radiance = previous.rgb;
-  float Tv = 1.0 - previous.a;
 #if TYNDALL_SKIP_EMPTY
   vec3 bo, bd;
   tyndallBlockRay(p0, w, bo, bd);
