@@ -189,17 +189,6 @@ double TimeFrame(vtkRenderWindow* window)
   return timer->GetElapsedTime();
 }
 
-vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->DeepCopy(grab->GetOutput());
-  return image;
-}
-
 bool WritePNG(vtkImageData* image, const std::string& path)
 {
   vtkNew<vtkPNGWriter> writer;
@@ -399,20 +388,6 @@ bool ExportScene(const Medium& medium, const Scene& scene, const Options& o, vtk
   return static_cast<bool>(json);
 }
 
-// The largest difference of two 8-bit pictures, in any channel.
-int MaxDifference(vtkImageData* a, vtkImageData* b)
-{
-  const auto* pa = static_cast<const unsigned char*>(a->GetScalarPointer());
-  const auto* pb = static_cast<const unsigned char*>(b->GetScalarPointer());
-  const vtkIdType n = a->GetNumberOfPoints() * a->GetNumberOfScalarComponents();
-  int worst = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    worst = std::max(worst, std::abs(int(pa[i]) - int(pb[i])));
-  }
-  return worst;
-}
-
 // Empty-space skipping off against on, in one run: frame and map-build
 // times of None and AdaptiveETM, the grid's cost, and how far apart the
 // pictures are.
@@ -433,7 +408,7 @@ void MeasureSkipping(Scene& timing, const Options& o)
       timing.Mapper->SetEmptySpaceSkipping(skip != 0);
       TimeFrame(timing.Window); // compiles the variant, builds the maps
       build[skip] = m == M::NONE ? 0.0 : timing.Mapper->GetLastMapBuildTime();
-      image[skip] = Grab(timing.Window);
+      image[skip] = tyndall_test::Grab(timing.Window);
       frame[skip] = std::numeric_limits<double>::infinity();
       for (int f = 0; f < o.Frames; ++f)
       {
@@ -443,7 +418,8 @@ void MeasureSkipping(Scene& timing, const Options& o)
     }
     std::cout << "| " << vtkTransmittanceMapMath::GetMethodName(m) << " | " << std::setprecision(4)
               << frame[0] << " | " << frame[1] << " | " << frame[0] / frame[1] << "x | " << build[0]
-              << " | " << build[1] << " | " << MaxDifference(image[0], image[1]) << "/255 |\n";
+              << " | " << build[1] << " | " << tyndall_test::MaxDifference(image[0], image[1])
+              << "/255 |\n";
   }
   std::cout << "\nThe grid: " << std::setprecision(3)
             << 100.0 * timing.Mapper->GetEmptyBlockFraction() << " % of blocks empty, built in "
@@ -463,7 +439,7 @@ void MeasureInteraction(const Medium& medium, const Options& o)
   scene.Mapper->SetTransmittanceMethodToAdaptiveETM();
   TimeFrame(scene.Window); // builds the maps
   const double still = TimeFrame(scene.Window);
-  vtkSmartPointer<vtkImageData> before = Grab(scene.Window);
+  vtkSmartPointer<vtkImageData> before = tyndall_test::Grab(scene.Window);
   const int builds = scene.Mapper->GetMapBuildCount();
   const double rate = 10.0;
   scene.Window->SetDesiredUpdateRate(rate);
@@ -485,9 +461,9 @@ void MeasureInteraction(const Medium& medium, const Options& o)
                "after the drag vs before |\n"
             << "|---|---|---|---|---|---|\n"
             << "| " << std::setprecision(4) << still << " | " << frames / total << " | 1/"
-            << reduction << " | " << stepScale << " | "
-            << scene.Mapper->GetMapBuildCount() - builds << " | largest difference "
-            << MaxDifference(Grab(scene.Window), before) << "/255 |\n";
+            << reduction << " | " << stepScale << " | " << scene.Mapper->GetMapBuildCount() - builds
+            << " | largest difference "
+            << tyndall_test::MaxDifference(tyndall_test::Grab(scene.Window), before) << "/255 |\n";
 }
 
 // Runs every method on one medium and prints a table; returns the frame
@@ -534,7 +510,7 @@ Figures RunMedium(const Medium& medium, const Options& o)
     figures.Frame[m] = best;
     reference.Mapper->SetTransmittanceMethod(m);
     reference.Window->Render();
-    images[m] = Grab(reference.Window);
+    images[m] = tyndall_test::Grab(reference.Window);
     figures.PSNR[m] = tyndall_test::PSNR(images[m], cpuImage);
   }
   using M = vtkTransmittanceVolumeMapper;

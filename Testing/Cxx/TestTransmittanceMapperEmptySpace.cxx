@@ -25,6 +25,7 @@
 #include "vtkVolume.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "TyndallTestImage.h"
 #include "TyndallTestScene.h"
 
 #include <algorithm>
@@ -119,30 +120,6 @@ bool CheckMajorants(vtkImageData* data)
   return ok && violations == 0;
 }
 
-vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->DeepCopy(grab->GetOutput());
-  return image;
-}
-
-int MaxDifference(vtkImageData* a, vtkImageData* b)
-{
-  auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
-  auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
-  const vtkIdType n = a->GetNumberOfPoints() * a->GetNumberOfScalarComponents();
-  int worst = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    worst = std::max(worst, std::abs(int(pa[i]) - int(pb[i])));
-  }
-  return worst;
-}
-
 double MaxCoefficientDifference(vtkImageData* a, vtkImageData* b)
 {
   vtkDataArray* ca = a->GetPointData()->GetArray("Coefficients");
@@ -200,7 +177,7 @@ bool CompareScene(const char* name, vtkImageData* data, bool lightInside, bool j
     {
       mapper->SetEmptySpaceSkipping(skip != 0);
       window->Render();
-      images[skip] = Grab(window);
+      images[skip] = tyndall_test::Grab(window);
       if (vtkTransmittanceMapMath::IsMapMethod(m) &&
         !mapper->GetTransmittanceMap(lightInside ? 1 : 0, maps[skip]))
       {
@@ -208,7 +185,7 @@ bool CompareScene(const char* name, vtkImageData* data, bool lightInside, bool j
         return false;
       }
     }
-    const int difference = MaxDifference(images[0], images[1]);
+    const int difference = tyndall_test::MaxDifference(images[0], images[1]);
     const double coefficients =
       vtkTransmittanceMapMath::IsMapMethod(m) ? MaxCoefficientDifference(maps[0], maps[1]) : 0.0;
     std::cout << name << ", " << vtkTransmittanceMapMath::GetMethodName(m)

@@ -21,33 +21,6 @@
 #include <cstdlib>
 #include <iostream>
 
-namespace
-{
-vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->DeepCopy(grab->GetOutput());
-  return image;
-}
-
-int MaxDifference(vtkImageData* a, vtkImageData* b)
-{
-  auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
-  auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
-  const vtkIdType n = a->GetNumberOfPoints() * a->GetNumberOfScalarComponents();
-  int worst = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    worst = std::max(worst, std::abs(int(pa[i]) - int(pb[i])));
-  }
-  return worst;
-}
-}
-
 int TestTransmittanceMapperInteractive(int, char*[])
 {
   int status = EXIT_SUCCESS;
@@ -77,14 +50,14 @@ int TestTransmittanceMapperInteractive(int, char*[])
 
   // The still frame (VTK's default desired update rate: 0.0001 per second).
   window->Render();
-  vtkSmartPointer<vtkImageData> still = Grab(window);
+  vtkSmartPointer<vtkImageData> still = tyndall_test::Grab(window);
   check(mapper->GetLastImageReduction() == 1, "the still frame is full size");
   const int builds = mapper->GetMapBuildCount();
 
   // Interacting: 1000 frames per second asked, which no frame here meets.
   window->SetDesiredUpdateRate(1000.0);
   window->Render();
-  vtkSmartPointer<vtkImageData> moving = Grab(window);
+  vtkSmartPointer<vtkImageData> moving = tyndall_test::Grab(window);
   const int reduction = mapper->GetLastImageReduction();
   std::cout << "interactive frame: reduction " << reduction << ", camera rays "
             << mapper->GetLastRayCastTime() << " s, PSNR against the still frame "
@@ -95,14 +68,14 @@ int TestTransmittanceMapperInteractive(int, char*[])
   check(mapper->GetLightTransmittanceMethod(0) == vtkTransmittanceVolumeMapper::ADAPTIVE_ETM,
     "shadows stay on while interacting");
   check(tyndall_test::PSNR(moving, still) >= 25.0, "the reduced frame resembles the still one");
-  check(MaxDifference(moving, still) > 0, "the reduced frame is a different picture");
+  check(tyndall_test::MaxDifference(moving, still) > 0, "the reduced frame is a different picture");
 
   // The unshadowed picture is further from the still frame than the
   // reduced, shadowed one.
   mapper->SetTransmittanceMethodToNone();
   window->SetDesiredUpdateRate(0.0001);
   window->Render();
-  vtkSmartPointer<vtkImageData> unshadowed = Grab(window);
+  vtkSmartPointer<vtkImageData> unshadowed = tyndall_test::Grab(window);
   std::cout << "unshadowed against still: " << tyndall_test::PSNR(unshadowed, still) << " dB\n";
   check(tyndall_test::PSNR(moving, still) > tyndall_test::PSNR(unshadowed, still) + 3.0,
     "the reduced frame keeps the shadows");
@@ -112,7 +85,8 @@ int TestTransmittanceMapperInteractive(int, char*[])
   window->Render();
   check(mapper->GetLastImageReduction() == 1 && mapper->GetLastStepScale() == 1.0,
     "the still frame after interaction is full size, full detail");
-  check(MaxDifference(Grab(window), still) == 0, "the still frame equals the first one");
+  check(tyndall_test::MaxDifference(tyndall_test::Grab(window), still) == 0,
+    "the still frame equals the first one");
 
   // The adjustment off, or capped at 1.
   window->SetDesiredUpdateRate(1000.0);
@@ -122,6 +96,7 @@ int TestTransmittanceMapperInteractive(int, char*[])
   mapper->InteractiveAdjustmentOff();
   window->Render();
   check(mapper->GetLastImageReduction() == 1, "InteractiveAdjustment off: full size");
-  check(MaxDifference(Grab(window), still) == 0, "InteractiveAdjustment off: the still picture");
+  check(tyndall_test::MaxDifference(tyndall_test::Grab(window), still) == 0,
+    "InteractiveAdjustment off: the still picture");
   return status;
 }

@@ -16,6 +16,7 @@
 #include "vtkPNGWriter.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
+#include "vtkSmartPointer.h"
 #include "vtkTesting.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
@@ -60,6 +61,33 @@ inline double PSNR(vtkImageData* a, vtkImageData* b)
 
 // VTK's regression test plus a PSNR floor against the same baseline.
 // Returns vtkRegressionTester's result codes (FAILED, PASSED, DO_INTERACTOR).
+// The window's back buffer as a new 8-bit image.
+inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+// The largest difference of two 8-bit images of the same size, in any value.
+inline int MaxDifference(vtkImageData* a, vtkImageData* b)
+{
+  const auto* pa = static_cast<const unsigned char*>(a->GetScalarPointer());
+  const auto* pb = static_cast<const unsigned char*>(b->GetScalarPointer());
+  const vtkIdType n = a->GetNumberOfPoints() * a->GetNumberOfScalarComponents();
+  int worst = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const int d = static_cast<int>(pa[i]) - static_cast<int>(pb[i]);
+    worst = d > worst ? d : (-d > worst ? -d : worst);
+  }
+  return worst;
+}
+
 inline int RegressionTestWithPSNR(int argc, char* argv[], vtkRenderWindow* window, double minPSNR)
 {
   const int vtkResult = vtkRegressionTestImage(window);
