@@ -121,16 +121,7 @@ bool vtkTransmittanceAccumulationPass::Composite(
   image->SetMagnificationFilter(filter);
   vtkTransmittanceScopedTextures bind({ image });
   program->SetUniformi("accumulated", image->GetTextureUnit());
-  vtkOpenGLState* state = frame.State;
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  this->Quad.Render();
+  this->Quad.RenderOver(frame.State);
   return true;
 }
 

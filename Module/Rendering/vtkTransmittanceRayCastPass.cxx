@@ -135,16 +135,7 @@ void vtkTransmittanceRayCastPass::DrawDirect(
   program->SetUniform4f("fragToWindow", toWindow);
   program->SetUniformi("firstStep", 0);
   program->SetUniformi("endStep", steps);
-  vtkOpenGLState* state = frame.State;
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  this->Quad.Render();
+  this->Quad.RenderOver(frame.State);
 }
 
 //------------------------------------------------------------------------------

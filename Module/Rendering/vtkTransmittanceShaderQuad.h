@@ -17,7 +17,9 @@
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
+#include "vtk_glew.h"
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
@@ -49,6 +51,24 @@ public:
 
   /// Draws the quad with the program Ready() returned.
   void Render() { this->Quad->Render(); }
+
+  /**
+   * Draws the quad's premultiplied colour over what was drawn (blended ONE,
+   * ONE_MINUS_SRC_ALPHA; no depth test or depth writes), restoring the
+   * state after.
+   */
+  void RenderOver(vtkOpenGLState* state)
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    this->Quad->Render();
+  }
 
   /// Releases the quad's OpenGL resources.
   void Release(vtkWindow* window)
