@@ -103,10 +103,17 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   variant.Accumulate = accumulate;
   if (inputs.Maps && frame.NeedsMaps())
   {
-    variant.MapLayers = frame.Layers - (frame.BoundsLayer >= 0 ? 1 : 0);
+    using M = vtkTransmittanceMapMath;
+    const int method = frame.Integrator.Method;
+    variant.MapCoefficients = frame.Integrator.Coefficients;
+    variant.MapExtinction = method == M::ETM || method == M::ADAPTIVE_ETM;
     variant.AdaptiveMaps = frame.BoundsLayer >= 0;
   }
   variant.Occlusion = inputs.Occlusion != nullptr;
+  for (const vtkTransmittanceFrame::Light& light : frame.Lights)
+  {
+    variant.BruteForceLights |= light.Method == vtkTransmittanceMapMath::BRUTE_FORCE;
+  }
   variant.Emission = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
   return variant;
 }
@@ -159,8 +166,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;
   program->SetUniformi("scatteringModel", medium.GetScatteringModel());
-  program->SetUniformi("method", s.Method);
-  program->SetUniformi("coefficientCount", s.Coefficients);
   program->SetUniformi("layersPerLight", std::max(frame.Layers, 1));
   program->SetUniformi("boundsLayer", std::max(frame.BoundsLayer, 0));
   program->SetUniformi("mapSlices", std::max(inputs.MapSlices, 1));

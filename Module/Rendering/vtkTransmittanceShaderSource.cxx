@@ -42,11 +42,15 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("PI", vtkMath::Pi());
   define("MISSING_DATA", variant.MissingData ? 1 : 0);
   define("SKIP_EMPTY", variant.SkipEmpty ? 1 : 0);
-  define("MAP_LAYERS", variant.MapLayers);
+  define("MAP_COEFFICIENTS", variant.MapCoefficients);
+  define("MAP_LAYERS",
+    (variant.MapCoefficients + M::COEFFICIENTS_PER_LAYER - 1) / M::COEFFICIENTS_PER_LAYER);
+  define("MAP_EXTINCTION", variant.MapExtinction ? 1 : 0);
   define("ADAPTIVE_MAPS", variant.AdaptiveMaps ? 1 : 0);
   define("OCCLUSION", variant.Occlusion ? 1 : 0);
   define("EMISSION", variant.Emission ? 1 : 0);
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
+  define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   return os.str();
 }
 

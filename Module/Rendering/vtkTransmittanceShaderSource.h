@@ -27,11 +27,14 @@
  *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise;
  * - TYNDALL_SKIP_EMPTY: 1 when camera rays and map builds skip empty blocks
  *   of the majorant grid (vtkTyndallMajorantGrid), 0 otherwise;
- * - the camera rays' TYNDALL_MAP_LAYERS (coefficient layers a map lookup
- *   reads; 0 when no light has a map), TYNDALL_ADAPTIVE_MAPS (the bounds
- *   layer), TYNDALL_OCCLUSION (opaque occluders) and TYNDALL_EMISSION: only
- *   what the frame uses is compiled in (a None frame fetched 6 textures
- *   per sample, all but 2 of them unused, before).
+ * - the camera rays' TYNDALL_MAP_COEFFICIENTS (coefficients a map lookup
+ *   reads, in TYNDALL_MAP_LAYERS layers; 0 when no light has a map),
+ *   TYNDALL_MAP_EXTINCTION (the reconstruction of the ETM or the TFM
+ *   family), TYNDALL_ADAPTIVE_MAPS (the bounds layer), TYNDALL_OCCLUSION
+ *   (opaque occluders), TYNDALL_EMISSION and TYNDALL_BRUTE_FORCE_LIGHTS (a
+ *   light marches to the light): only what the frame uses is compiled in
+ *   (a None frame fetched 6 textures per sample, all but 2 of them unused,
+ *   and ran a masked brute-force light march, before).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -61,11 +64,13 @@ public:
     bool SkipEmpty = false;
     ///@{
     /// The camera rays' variant (RAY_CAST only).
-    int MapLayers = 0; // coefficient layers a map lookup reads; 0: no maps
+    int MapCoefficients = 0;    // coefficients a map lookup reads; 0: no maps
+    bool MapExtinction = false; // the maps hold extinction (ETM), else transmittance (TFM)
     bool AdaptiveMaps = false;
     bool Occlusion = false;
     bool Emission = false;
     bool Accumulate = false; // continues the rays of an earlier pass
+    bool BruteForceLights = false; // some light marches to the light
     ///@}
   };
 

@@ -171,23 +171,27 @@ vec2 tyndallLightTexel(int l, vec3 x)
   return vec2(0.5 * (ax + 1.0), 0.5 * (ay + 1.0));
 }
 
-// Reconstruction (vtkTransmittanceMapMath::Reconstruct).
-float tyndallReconstruct(int method, float c[TYNDALL_MAX_COEFFICIENTS], int count, vec3 bounds, float s)
+#if TYNDALL_MAP_COEFFICIENTS > 0
+// Reconstruction (vtkTransmittanceMapMath::Reconstruct) of the frame's map
+// method, compiled for it: TYNDALL_MAP_COEFFICIENTS coefficients,
+// TYNDALL_MAP_EXTINCTION (1: the series is the extinction, ETM; 0: the
+// transmittance, TFM) and TYNDALL_ADAPTIVE_MAPS (s is mapped through the
+// texel's bounds).
+float tyndallReconstruct(float c[TYNDALL_MAX_COEFFICIENTS], vec3 bounds, float s)
 {
-  bool adaptive = method == TYNDALL_ADAPTIVE_TFM || method == TYNDALL_ADAPTIVE_ETM;
-  float u = s;
-  if (adaptive)
+#if TYNDALL_ADAPTIVE_MAPS
+  if (s <= bounds.x)
   {
-    if (s <= bounds.x)
-    {
-      return 1.0;
-    }
-    if (s >= bounds.y)
-    {
-      return bounds.z;
-    }
-    u = (s - bounds.x) / max(bounds.y - bounds.x, 1e-12);
+    return 1.0;
   }
+  if (s >= bounds.y)
+  {
+    return bounds.z;
+  }
+  float u = (s - bounds.x) / max(bounds.y - bounds.x, 1e-12);
+#else
+  float u = s;
+#endif
   u = clamp(u, 0.0, 1.0);
   // cos(j pi u) and sin(j pi u) by the angle-addition recurrence: one cos
   // and one sin per reconstruction instead of one per coefficient.
@@ -195,30 +199,29 @@ float tyndallReconstruct(int method, float c[TYNDALL_MAX_COEFFICIENTS], int coun
   float s1 = sin(TYNDALL_PI * u);
   float cj = 1.0;
   float sj = 0.0;
-  if (method == TYNDALL_TFM || method == TYNDALL_ADAPTIVE_TFM)
-  {
-    float T = 0.5 * c[0];
-    // Constant trip counts (unrolled; see tyndall's note on llvmpipe's loop
-    // limit in vtkTransmittanceVolumeMapper.cxx).
-    for (int j = 1; j < TYNDALL_MAX_COEFFICIENTS; ++j)
-    {
-      float cNext = cj * c1 - sj * s1;
-      sj = sj * c1 + cj * s1;
-      cj = cNext;
-      T += j < count ? c[j] * cj : 0.0;
-    }
-    return clamp(T, 0.0, 1.0);
-  }
+#if TYNDALL_MAP_EXTINCTION
   float tau = 0.5 * c[0] * u;
-  for (int j = 1; j < TYNDALL_MAX_COEFFICIENTS; ++j)
+  for (int j = 1; j < TYNDALL_MAP_COEFFICIENTS; ++j)
   {
     float cNext = cj * c1 - sj * s1;
     sj = sj * c1 + cj * s1;
     cj = cNext;
-    tau += j < count ? c[j] * sj / (float(j) * TYNDALL_PI) : 0.0;
+    tau += c[j] * sj / (float(j) * TYNDALL_PI);
   }
   return exp(-max(tau, 0.0));
+#else
+  float T = 0.5 * c[0];
+  for (int j = 1; j < TYNDALL_MAP_COEFFICIENTS; ++j)
+  {
+    float cNext = cj * c1 - sj * s1;
+    sj = sj * c1 + cj * s1;
+    cj = cNext;
+    T += c[j] * cj;
+  }
+  return clamp(T, 0.0, 1.0);
+#endif
 }
+#endif
 
 // Henyey-Greenstein, normalised to 1/(4 pi) over the sphere.
 float tyndallPhaseHG(float g, float mu)

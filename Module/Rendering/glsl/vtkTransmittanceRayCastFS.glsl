@@ -21,8 +21,6 @@ uniform sampler2D previousTexture;
 #endif
 
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
-uniform int method;
-uniform int coefficientCount;
 uniform int layersPerLight;
 uniform int boundsLayer; // within a light's layers (adaptive methods)
 uniform int mapSlices;
@@ -50,9 +48,11 @@ vec3 unproject(vec2 ndcXY, float ndcZ)
 }
 
 // What a frame needs is compiled in, not switched by uniforms (llvmpipe
-// fetches the textures of a uniform branch not taken): TYNDALL_OCCLUSION,
-// TYNDALL_EMISSION, TYNDALL_MAP_LAYERS (the coefficient layers a map lookup
-// reads; 0: no light has a map) and TYNDALL_ADAPTIVE_MAPS (bounds layer).
+// fetches the textures of a uniform branch not taken, and runs a loop of
+// one that is not taken once, masked): TYNDALL_OCCLUSION, TYNDALL_EMISSION,
+// TYNDALL_BRUTE_FORCE_LIGHTS, TYNDALL_MAP_COEFFICIENTS (0: no light has a
+// map; read from TYNDALL_MAP_LAYERS layers), TYNDALL_MAP_EXTINCTION and
+// TYNDALL_ADAPTIVE_MAPS (bounds layer).
 #if TYNDALL_OCCLUSION
 uniform sampler3D occlusionTexture; // per light: distance to opaque geometry
 uniform int occlusionSlices;
@@ -93,6 +93,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
   {
     return 1.0;
   }
+#if TYNDALL_BRUTE_FORCE_LIGHTS
   if (m == TYNDALL_BRUTE_FORCE)
   {
     vec2 range = tyndallIntersectVolume(x, toLight);
@@ -119,7 +120,8 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
     }
     return exp(-tau * dt);
   }
-#if TYNDALL_MAP_LAYERS > 0
+#endif
+#if TYNDALL_MAP_COEFFICIENTS > 0
   // Transmittance maps.
   vec2 ab = tyndallLightTexel(l, x);
   vec3 origin, dir;
@@ -149,7 +151,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
   bounds =
     texture(mapTexture, vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
 #endif
-  return tyndallReconstruct(m, c, coefficientCount, bounds, clamp(s, 0.0, 1.0));
+  return tyndallReconstruct(c, bounds, clamp(s, 0.0, 1.0));
 #else
   return 1.0;
 #endif
