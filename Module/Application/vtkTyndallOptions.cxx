@@ -119,6 +119,11 @@ const Spec kOptions[] = {
     "do not jitter the ray samples per pixel", KeyMode::Toggle, "j" },
   { "no-skip", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "march every sample: no empty-space skipping (same picture, slower; for timing)" },
+  { "cache-size", "", Kind::Integer, 16, 1024, false, "", "N", "256", "Scattering", Both,
+    "texels along the longest side of the transmittance cache (map methods; 2 bytes per texel "
+    "and light)" },
+  { "no-cache", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "no transmittance cache: every camera sample reads the maps (full map resolution, slower)" },
   { "preset", "", Kind::Text, 0, 0, false, "", "NAME", "", "Transfer function", Both,
     "a named preset (vtkTransferFunctionPresets) over the data's scalar range, unit distance = "
     "the mean voxel spacing; names ignore case, spaces, '-' and '_'. Default for data inputs: "

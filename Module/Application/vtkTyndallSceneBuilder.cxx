@@ -275,6 +275,8 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   mapper->SetAdaptiveThreshold(o->GetNumber("adaptive-threshold"));
   mapper->SetJitter(!o->GetFlag("no-jitter"));
   mapper->SetEmptySpaceSkipping(!o->GetFlag("no-skip"));
+  mapper->SetTransmittanceCache(!o->GetFlag("no-cache"));
+  mapper->SetTransmittanceCacheSize(static_cast<int>(o->GetNumber("cache-size")));
   medium->SetScatteringModel(o->GetChoice("model"));
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));

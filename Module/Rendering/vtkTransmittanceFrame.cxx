@@ -1,5 +1,8 @@
 #include "vtkTransmittanceFrame.h"
 
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -49,6 +52,29 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
       this->WorldToBox[4 * c + r] = static_cast<float>(v);
     }
   }
+  // Box -> world: its columns are the box's world edges and origin.
+  vtkNew<vtkMatrix4x4> toBox, toWorld;
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      toBox->SetElement(r, c, this->WorldToBox[4 * c + r]);
+    }
+  }
+  vtkMatrix4x4::Invert(toBox, toWorld);
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      this->BoxToWorld[4 * c + r] = static_cast<float>(toWorld->GetElement(r, c));
+    }
+    if (c < 3)
+    {
+      const double edge[3] = { toWorld->GetElement(0, c), toWorld->GetElement(1, c),
+        toWorld->GetElement(2, c) };
+      this->BoxExtents[c] = vtkMath::Norm(edge);
+    }
+  }
 
   // The lights, each with its map's frustum.
   const std::vector<vtkTyndallLight>& lights = scene.GetLights();
@@ -93,6 +119,28 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   variant.MissingData = this->Textures && this->Textures->GetValidityTexture() != nullptr;
   variant.SkipEmpty = this->Integrator.SkipEmptySpace;
   return variant;
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetMapVariant() const
+{
+  using M = vtkTransmittanceMapMath;
+  vtkTransmittanceShaderSource::Variant variant = this->GetShaderVariant();
+  const int method = this->Integrator.Method;
+  variant.MapCoefficients = this->Integrator.Coefficients;
+  variant.MapExtinction = method == M::ETM || method == M::ADAPTIVE_ETM;
+  variant.AdaptiveMaps = this->BoundsLayer >= 0;
+  return variant;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetMapUniforms(
+  vtkShaderProgram* program, vtkTextureObject* maps, int slices) const
+{
+  program->SetUniformi("mapTexture", maps->GetTextureUnit());
+  program->SetUniformi("layersPerLight", std::max(this->Layers, 1));
+  program->SetUniformi("boundsLayer", std::max(this->BoundsLayer, 0));
+  program->SetUniformi("mapSlices", std::max(slices, 1));
 }
 
 //------------------------------------------------------------------------------

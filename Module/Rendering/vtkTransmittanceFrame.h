@@ -29,6 +29,7 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkTransmittanceLightFrustum;
 class vtkTransmittanceMediumTextures;
+class vtkTextureObject;
 class vtkTyndallGridMedium;
 class vtkTyndallSceneReader;
 
@@ -56,6 +57,8 @@ public:
     double SampleDistance = 0.0;
     bool Jitter = true;
     bool SkipEmptySpace = true;
+    /// Longest side of the transmittance cache's lattice; 0: no cache.
+    int CacheSize = 0;
   };
 
   /**
@@ -74,6 +77,16 @@ public:
    * skipping when the settings ask for it.
    */
   vtkTransmittanceShaderSource::Variant GetShaderVariant() const;
+
+  /**
+   * GetShaderVariant() with the map lookup of the frame's method compiled
+   * in (coefficients, ETM or TFM reconstruction, adaptive bounds), for the
+   * shaders that read the maps.
+   */
+  vtkTransmittanceShaderSource::Variant GetMapVariant() const;
+
+  /// Sets the map lookup's uniforms (GetMapVariant()) for `maps` of `slices` slices.
+  void SetMapUniforms(vtkShaderProgram* program, vtkTextureObject* maps, int slices) const;
 
   /// Whether some light uses a map method.
   bool NeedsMaps() const;
@@ -97,6 +110,9 @@ public:
   double MinimumSpacing = 1.0;
   /// World -> the box as [0, 1]^3, column-major for glUniformMatrix.
   float WorldToBox[16];
+  /// Its inverse (column-major) and the box's world edge lengths.
+  float BoxToWorld[16];
+  double BoxExtents[3] = { 1.0, 1.0, 1.0 };
 };
 
 #endif

@@ -68,7 +68,8 @@ bool vtkTransmittanceRayCastPass::Render(
     vtkErrorWithObjectMacro(reporter, << "The ray-casting shader did not compile.");
     return false;
   }
-  vtkTransmittanceScopedTextures textures({ inputs.Depth, inputs.Maps, inputs.Occlusion });
+  vtkTransmittanceScopedTextures textures(
+    { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   this->SetUniforms(frame, inputs, program);
   program->SetUniformf("stepLength", static_cast<float>(step));
   this->LastPassCount = passes;
@@ -99,16 +100,11 @@ bool vtkTransmittanceRayCastPass::Render(
 vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   const vtkTransmittanceFrame& frame, const Inputs& inputs, bool accumulate)
 {
-  vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
+  const bool readsMaps = inputs.Maps && frame.NeedsMaps() && !inputs.Cache;
+  vtkTransmittanceShaderSource::Variant variant =
+    readsMaps ? frame.GetMapVariant() : frame.GetShaderVariant();
   variant.Accumulate = accumulate;
-  if (inputs.Maps && frame.NeedsMaps())
-  {
-    using M = vtkTransmittanceMapMath;
-    const int method = frame.Integrator.Method;
-    variant.MapCoefficients = frame.Integrator.Coefficients;
-    variant.MapExtinction = method == M::ETM || method == M::ADAPTIVE_ETM;
-    variant.AdaptiveMaps = frame.BoundsLayer >= 0;
-  }
+  variant.LightCache = inputs.Cache != nullptr;
   variant.Occlusion = inputs.Occlusion != nullptr;
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
   {
@@ -150,9 +146,17 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const
 {
   frame.SetMediumUniforms(program);
-  if (inputs.Maps)
+  if (inputs.Cache)
   {
-    program->SetUniformi("mapTexture", inputs.Maps->GetTextureUnit());
+    const int* size = inputs.CacheSize;
+    const float cacheSize[3] = { float(size[0]), float(size[1]), float(size[2]) };
+    program->SetUniformi("lightCacheTexture", inputs.Cache->GetTextureUnit());
+    program->SetUniform3f("lightCacheSize", cacheSize);
+    program->SetUniformi("lightCacheLights", inputs.CacheLights);
+  }
+  else if (inputs.Maps)
+  {
+    frame.SetMapUniforms(program, inputs.Maps, inputs.MapSlices);
   }
   vtkNew<vtkMatrix4x4> ndcToWorld;
   vtkMatrix4x4::Invert(frame.Renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
@@ -166,9 +170,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;
   program->SetUniformi("scatteringModel", medium.GetScatteringModel());
-  program->SetUniformi("layersPerLight", std::max(frame.Layers, 1));
-  program->SetUniformi("boundsLayer", std::max(frame.BoundsLayer, 0));
-  program->SetUniformi("mapSlices", std::max(inputs.MapSlices, 1));
   program->SetUniformi("lightSampleCount", s.LightSampleCount);
   program->SetUniformi("jitter", s.Jitter ? 1 : 0);
   program->SetUniformf("anisotropy", static_cast<float>(medium.GetScatteringAnisotropy()));

@@ -56,6 +56,9 @@ public:
     vtkTextureObject* Depth = nullptr;
     vtkTextureObject* Maps = nullptr;
     int MapSlices = 1;
+    vtkTextureObject* Cache = nullptr; // the transmittance cache: map lights read it, not Maps
+    int CacheSize[3] = { 2, 2, 2 };
+    int CacheLights = 1;
     vtkTextureObject* Occlusion = nullptr; // null: no opaque occluders
     int OcclusionSlices = 1;
     int Reduction = 1;      // rays at 1 / Reduction of the viewport's width and height

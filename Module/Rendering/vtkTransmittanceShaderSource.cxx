@@ -9,6 +9,7 @@
 // The GLSL sources, embedded at build time from glsl/*.glsl.
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceCompositeFS.h"
+#include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
@@ -51,6 +52,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("EMISSION", variant.Emission ? 1 : 0);
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
+  define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
   return os.str();
 }
 
@@ -69,6 +71,9 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
       break;
     case OCCLUSION:
       source += vtkTransmittanceOcclusionFS;
+      break;
+    case LIGHT_CACHE:
+      source += vtkTransmittanceLightCacheFS;
       break;
     default:
       source += vtkTransmittanceRayCastFS;

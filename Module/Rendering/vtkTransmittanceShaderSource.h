@@ -30,11 +30,11 @@
  * - the camera rays' TYNDALL_MAP_COEFFICIENTS (coefficients a map lookup
  *   reads, in TYNDALL_MAP_LAYERS layers; 0 when no light has a map),
  *   TYNDALL_MAP_EXTINCTION (the reconstruction of the ETM or the TFM
- *   family), TYNDALL_ADAPTIVE_MAPS (the bounds layer), TYNDALL_OCCLUSION
- *   (opaque occluders), TYNDALL_EMISSION and TYNDALL_BRUTE_FORCE_LIGHTS (a
- *   light marches to the light): only what the frame uses is compiled in
- *   (a None frame fetched 6 textures per sample, all but 2 of them unused,
- *   and ran a masked brute-force light march, before).
+ *   family), TYNDALL_LIGHT_CACHE (map lights read the transmittance cache
+ *   of vtkTransmittanceLightCachePass instead), TYNDALL_ADAPTIVE_MAPS (the bounds layer),
+ * TYNDALL_OCCLUSION (opaque occluders), TYNDALL_EMISSION and TYNDALL_BRUTE_FORCE_LIGHTS (a light
+ * marches to the light): only what the frame uses is compiled in (a None frame fetched 6 textures
+ * per sample, all but 2 of them unused, and ran a masked brute-force light march, before).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -54,7 +54,8 @@ public:
     MAP_BUILD,
     OCCLUSION,
     RAY_CAST,
-    COMPOSITE // alone: it shares nothing with the others
+    LIGHT_CACHE, // with the map variant of the camera rays' (MapCoefficients ...)
+    COMPOSITE    // alone: it shares nothing with the others
   };
 
   /// The compile-time variants of the shaders.
@@ -69,8 +70,9 @@ public:
     bool AdaptiveMaps = false;
     bool Occlusion = false;
     bool Emission = false;
-    bool Accumulate = false; // continues the rays of an earlier pass
+    bool Accumulate = false;       // continues the rays of an earlier pass
     bool BruteForceLights = false; // some light marches to the light
+    bool LightCache = false;       // map lights read the transmittance cache
     ///@}
   };
 

@@ -9,6 +9,7 @@
 #include "vtkTimerLog.h"
 #include "vtkTransmittanceDepthPass.h"
 #include "vtkTransmittanceFrame.h"
+#include "vtkTransmittanceLightCachePass.h"
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMapPass.h"
@@ -35,6 +36,7 @@ public:
   vtkNew<vtkTransmittanceMediumTextures> Textures;
   vtkNew<vtkTransmittanceOcclusionPass> Occlusion;
   vtkNew<vtkTransmittanceMapPass> Maps;
+  vtkNew<vtkTransmittanceLightCachePass> Cache;
   vtkNew<vtkTransmittanceDepthPass> Depth;
   vtkNew<vtkTransmittanceRayCastPass> RayCast;
   // The window the resources live in (weak: it may go before the mapper).
@@ -142,6 +144,18 @@ double vtkTransmittanceVolumeMapper::GetLastMapBuildTime()
 }
 
 //------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetTransmittanceCacheBuildCount()
+{
+  return this->Internals->Cache->GetBuildCount();
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::GetLastTransmittanceCacheBuildTime()
+{
+  return this->Internals->Cache->GetLastBuildTime();
+}
+
+//------------------------------------------------------------------------------
 double vtkTransmittanceVolumeMapper::GetLastEmptySpaceGridTime()
 {
   const vtkTransmittanceMediumTextures& t = *this->Internals->Textures;
@@ -162,6 +176,7 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.Textures->ReleaseGraphicsResources(window);
   in.Occlusion->ReleaseGraphicsResources(window);
   in.Maps->ReleaseGraphicsResources(window);
+  in.Cache->ReleaseGraphicsResources(window);
   in.Depth->ReleaseGraphicsResources(window);
   in.RayCast->ReleaseGraphicsResources(window);
   in.Window = nullptr;
@@ -201,6 +216,7 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   settings.SampleDistance = this->SampleDistance;
   settings.Jitter = this->Jitter;
   settings.SkipEmptySpace = this->EmptySpaceSkipping;
+  settings.CacheSize = this->TransmittanceCache ? this->TransmittanceCacheSize : 0;
   in.Frame.Prepare(renderer, window, in.Scene, *in.Textures, settings);
 
   vtkTransmittanceScopedTextures medium(
@@ -221,6 +237,12 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   {
     inputs.Maps = in.Maps->GetTexture();
     inputs.MapSlices = in.Maps->GetSlices();
+    if (in.Cache->Render(in.Frame, inputs.Maps, inputs.MapSlices, in.Maps->GetBuildCount(), this))
+    {
+      inputs.Cache = in.Cache->GetTexture();
+      std::copy(in.Cache->GetSize(), in.Cache->GetSize() + 3, inputs.CacheSize);
+      inputs.CacheLights = in.Cache->GetLights();
+    }
   }
   in.ChooseDetail(
     renderer, volume, this->InteractiveAdjustment, this->MaximumImageReduction, inputs);
@@ -312,6 +334,10 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "InteractiveAdjustment: " << (this->InteractiveAdjustment ? "On" : "Off") << "\n";
   os << indent << "MaximumImageReduction: " << this->MaximumImageReduction << "\n";
+  os << indent << "TransmittanceCache: " << (this->TransmittanceCache ? "On" : "Off") << "\n";
+  os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";
+  os << indent << "TransmittanceCacheBuildCount: " << this->GetTransmittanceCacheBuildCount()
+     << "\n";
   os << indent << "MapBuildCount: " << this->GetMapBuildCount() << "\n";
   os << indent << "LastMapBuildTime: " << this->GetLastMapBuildTime() << "\n";
 }

@@ -187,6 +187,42 @@ public:
   vtkBooleanMacro(EmptySpaceSkipping, bool);
   ///@}
 
+  ///@{
+  /**
+   * Cache the map lights' transmittance (default on; map methods only):
+   * after the maps are built, each map light's transmittance is evaluated
+   * once per texel of a lattice over the volume's box (the longest side
+   * TransmittanceCacheSize texels, the others in proportion, half floats),
+   * and camera samples read it with one trilinear fetch instead of looking
+   * up and reconstructing the map at every sample. Rebuilt with the maps
+   * (GetTransmittanceCacheBuildCount()). It trades a little accuracy (the
+   * transmittance interpolated between lattice texels) for frame time:
+   * measured per scene in Documentation/benchmarks.md. Off: every sample
+   * reads the maps, at the maps' full resolution.
+   */
+  vtkSetMacro(TransmittanceCache, bool);
+  vtkGetMacro(TransmittanceCache, bool);
+  vtkBooleanMacro(TransmittanceCache, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Texels along the longest side of the transmittance cache's lattice, in
+   * [16, 1024]; default 256 (2 bytes per texel and light: 32 MiB for a cube
+   * and one light). A cache over 1 GiB or the driver's largest 3-D texture
+   * is refused with an error; the render then reads the maps per sample.
+   */
+  vtkSetClampMacro(TransmittanceCacheSize, int, 16, 1024);
+  vtkGetMacro(TransmittanceCacheSize, int);
+  ///@}
+
+  /**
+   * How many times the transmittance cache was built, and the last build's
+   * wall-clock seconds (with glFinish).
+   */
+  int GetTransmittanceCacheBuildCount();
+  double GetLastTransmittanceCacheBuildTime();
+
   /**
    * Seconds the last update of the empty-space grid took: the block ranges
    * (when the scalars changed) plus the majorants (when they or the
@@ -321,6 +357,8 @@ protected:
   int LightSampleCount = 128;
   bool Jitter = true;
   bool EmptySpaceSkipping = true;
+  bool TransmittanceCache = true;
+  int TransmittanceCacheSize = 256;
   bool InteractiveAdjustment = true;
   int MaximumImageReduction = 4;
 

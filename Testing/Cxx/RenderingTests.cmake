@@ -15,6 +15,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperCaching.cxx
   TestTransmittanceMapperEmptySpace.cxx
   TestTransmittanceMapperInteractive.cxx
+  TestTransmittanceMapperTransmittanceCache.cxx
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOccluder.cxx

@@ -8,7 +8,7 @@
 // TYNDALL_COEFFICIENTS_PER_LAYER, the methods TYNDALL_NONE ..
 // TYNDALL_ADAPTIVE_ETM, the table rows TYNDALL_TABLE_ALBEDO_ROW and
 // TYNDALL_TABLE_EMISSION_ROW, TYNDALL_NO_OCCLUDER, TYNDALL_PI; and the
-// variant switch TYNDALL_MISSING_DATA (see vtkTransmittanceShaderSource.h).
+// variant switches (see vtkTransmittanceShaderSource.h).
 //TYNDALL::Constants
 
 // The medium: scalars in a 3-D texture, transfer functions in a 2-D table
@@ -220,6 +220,72 @@ float tyndallReconstruct(float c[TYNDALL_MAX_COEFFICIENTS], vec3 bounds, float s
   }
   return clamp(T, 0.0, 1.0);
 #endif
+}
+#endif
+
+#if TYNDALL_MAP_COEFFICIENTS > 0
+// The transmittance maps (vtkTransmittanceMapPass): every layer of every
+// light is a slice of mapTexture; light l's layers start at l *
+// layersPerLight, its bounds layer (adaptive methods) is boundsLayer.
+uniform sampler3D mapTexture;
+uniform int layersPerLight;
+uniform int boundsLayer;
+uniform int mapSlices;
+
+// Light l's map transmittance from world point x to the light: the map
+// texel of x, the position of x along the texel's light ray across the
+// volume's box, the reconstruction there.
+float tyndallMapTransmittance(int l, vec3 x)
+{
+  vec2 ab = tyndallLightTexel(l, x);
+  vec3 origin, dir;
+  tyndallLightRay(l, ab, origin, dir);
+  vec2 range = tyndallIntersectVolume(origin, dir);
+  if (range.x >= range.y)
+  {
+    return 1.0;
+  }
+  float s = (dot(x - origin, dir) - range.x) / (range.y - range.x);
+  float c[TYNDALL_MAX_COEFFICIENTS];
+  for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
+  {
+    c[j] = 0.0;
+  }
+  int first = l * layersPerLight;
+  for (int k = 0; k < TYNDALL_MAP_LAYERS; ++k)
+  {
+    vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
+    c[4 * k] = v.x;
+    c[4 * k + 1] = v.y;
+    c[4 * k + 2] = v.z;
+    c[4 * k + 3] = v.w;
+  }
+  vec3 bounds = vec3(0.0, 1.0, 1.0);
+#if TYNDALL_ADAPTIVE_MAPS
+  bounds =
+    texture(mapTexture, vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
+#endif
+  return tyndallReconstruct(c, bounds, clamp(s, 0.0, 1.0));
+}
+#endif
+
+#if TYNDALL_LIGHT_CACHE
+// The transmittance cache (vtkTransmittanceLightCachePass): light l's map
+// transmittance at the texels of a lattice over the volume's box, texel
+// centres on the box's faces (box coordinate i / (n - 1)); the lights'
+// lattices are stacked along the third axis, lightCacheSize.z slices each.
+uniform sampler3D lightCacheTexture;
+uniform vec3 lightCacheSize; // texels per axis of one light's lattice
+uniform int lightCacheLights;
+
+float tyndallCachedTransmittance(int l, vec3 x)
+{
+  vec3 q = clamp((worldToVolume * vec4(x, 1.0)).xyz, 0.0, 1.0);
+  vec3 texel = q * (lightCacheSize - 1.0) + 0.5; // within [0.5, size - 0.5]: no bleeding
+  texel.z += float(l) * lightCacheSize.z;
+  return texture(
+    lightCacheTexture, texel / vec3(lightCacheSize.xy, lightCacheSize.z * float(lightCacheLights)))
+    .r;
 }
 #endif
 

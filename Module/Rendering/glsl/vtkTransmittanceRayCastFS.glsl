@@ -21,10 +21,6 @@ uniform sampler2D previousTexture;
 #endif
 
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
-uniform int layersPerLight;
-uniform int boundsLayer; // within a light's layers (adaptive methods)
-uniform int mapSlices;
-uniform sampler3D mapTexture;
 uniform float stepLength;
 uniform int lightSampleCount;
 uniform int jitter;
@@ -50,7 +46,8 @@ vec3 unproject(vec2 ndcXY, float ndcZ)
 // What a frame needs is compiled in, not switched by uniforms (llvmpipe
 // fetches the textures of a uniform branch not taken, and runs a loop of
 // one that is not taken once, masked): TYNDALL_OCCLUSION, TYNDALL_EMISSION,
-// TYNDALL_BRUTE_FORCE_LIGHTS, TYNDALL_MAP_COEFFICIENTS (0: no light has a
+// TYNDALL_BRUTE_FORCE_LIGHTS, TYNDALL_LIGHT_CACHE (map lights read the
+// transmittance cache), else TYNDALL_MAP_COEFFICIENTS (0: no light has a
 // map; read from TYNDALL_MAP_LAYERS layers), TYNDALL_MAP_EXTINCTION and
 // TYNDALL_ADAPTIVE_MAPS (bounds layer).
 #if TYNDALL_OCCLUSION
@@ -121,37 +118,10 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
     return exp(-tau * dt);
   }
 #endif
-#if TYNDALL_MAP_COEFFICIENTS > 0
-  // Transmittance maps.
-  vec2 ab = tyndallLightTexel(l, x);
-  vec3 origin, dir;
-  tyndallLightRay(l, ab, origin, dir);
-  vec2 range = tyndallIntersectVolume(origin, dir);
-  if (range.x >= range.y)
-  {
-    return 1.0;
-  }
-  float s = (dot(x - origin, dir) - range.x) / (range.y - range.x);
-  float c[TYNDALL_MAX_COEFFICIENTS];
-  for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
-  {
-    c[j] = 0.0;
-  }
-  int first = l * layersPerLight;
-  for (int k = 0; k < TYNDALL_MAP_LAYERS; ++k)
-  {
-    vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
-    c[4 * k] = v.x;
-    c[4 * k + 1] = v.y;
-    c[4 * k + 2] = v.z;
-    c[4 * k + 3] = v.w;
-  }
-  vec3 bounds = vec3(0.0, 1.0, 1.0);
-#if TYNDALL_ADAPTIVE_MAPS
-  bounds =
-    texture(mapTexture, vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
-#endif
-  return tyndallReconstruct(c, bounds, clamp(s, 0.0, 1.0));
+#if TYNDALL_LIGHT_CACHE
+  return tyndallCachedTransmittance(l, x);
+#elif TYNDALL_MAP_COEFFICIENTS > 0
+  return tyndallMapTransmittance(l, x);
 #else
   return 1.0;
 #endif
