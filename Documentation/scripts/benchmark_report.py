@@ -241,7 +241,8 @@ def paraview_section(args, exported):
         "`VolumetricScatteringBlending` 2 and `GlobalIlluminationReach` 1, its lighting matched "
         "to Tyndall's model as far as VTK 9.2's model allows (see below). Renderer: %s." % (
             version, opengl), "",
-        "Frame times at %d^2 (best of %d frames; Tyndall's from the tables above, maps cached); "
+        "Frame times at %d^2 (best of %d frames; Tyndall's from the tables above: maps and "
+        "transmittance cache built before the timed frames, their build times in those tables); "
         "PSNR at %d^2 against the same CPU reference." % (size, scene["frames"],
                                                          scene["reference_size"]), "",
         "| medium | Tyndall None (s) | Tyndall AdaptiveETM (s) | Tyndall BruteForce (s) | "
@@ -274,7 +275,7 @@ def paraview_section(args, exported):
         "depends on its direction, so the optical depth towards the light is off by up to "
         "the aspect ratio; the phase angle is measured in texture space too (it matters only "
         "for anisotropic phase functions).",
-        "- VTK 9.2 has no transmittance cache: every camera sample marches to the light "
+        "- VTK 9.2 stores no transmittance (no maps, no cache): every camera sample marches to the light "
         "(brute force, at the camera's step), so its cost grows with the light ray's length "
         "in samples, as Tyndall's BruteForce does.", ""]
 
