@@ -3,13 +3,12 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
-#include "vtkTransmittanceScopedFramebuffer.h"
+#include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtk_glew.h"
@@ -79,12 +78,7 @@ bool vtkTransmittanceLightCachePass::Allocate(
     this->CacheTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   this->CacheTexture->ReleaseGraphicsResources(frame.Window);
-  this->CacheTexture->SetContext(frame.Window);
-  this->CacheTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->CacheTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->CacheTexture->SetWrapR(vtkTextureObject::ClampToEdge);
-  this->CacheTexture->SetMinificationFilter(vtkTextureObject::Linear);
-  this->CacheTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  vtkTransmittanceOffscreenDraw::SetClamped(this->CacheTexture, frame.Window, true);
   this->CacheTexture->SetInternalFormat(GL_R16F);
   int maximum3D = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maximum3D);
@@ -133,16 +127,7 @@ bool vtkTransmittanceLightCachePass::Build(
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   }
   this->Framebuffer->SetContext(frame.Window);
-  vtkOpenGLState* state = frame.State;
-  vtkTransmittanceScopedFramebuffer bound(state, this->Framebuffer);
-  vtkOpenGLState::ScopedglViewport savedViewport(state);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglViewport(0, 0, this->Size[0], this->Size[1]);
+  vtkTransmittanceOffscreenDraw draw(frame.State, this->Framebuffer, this->Size[0], this->Size[1]);
   for (int l = 0; l < this->Lights; ++l)
   {
     if (!vtkTransmittanceMapMath::IsMapMethod(frame.Lights[l].Method))

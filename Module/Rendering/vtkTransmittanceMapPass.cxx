@@ -17,7 +17,7 @@
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
-#include "vtkTransmittanceScopedFramebuffer.h"
+#include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallGridMedium.h"
@@ -122,12 +122,7 @@ bool vtkTransmittanceMapPass::Allocate(const vtkTransmittanceFrame& frame, vtkOb
     this->MapTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   this->MapTexture->ReleaseGraphicsResources(frame.Window);
-  this->MapTexture->SetContext(frame.Window);
-  this->MapTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->MapTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-  this->MapTexture->SetWrapR(vtkTextureObject::ClampToEdge);
-  this->MapTexture->SetMinificationFilter(vtkTextureObject::Linear);
-  this->MapTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  vtkTransmittanceOffscreenDraw::SetClamped(this->MapTexture, frame.Window, true);
   if (!this->MapTexture->Create3DFromRaw(size, size, slices, 4, VTK_FLOAT, nullptr))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not allocate the transmittance maps (" << size
@@ -172,16 +167,7 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   }
   this->Framebuffer->SetContext(frame.Window);
-  vtkOpenGLState* state = frame.State;
-  vtkTransmittanceScopedFramebuffer bound(state, this->Framebuffer);
-  vtkOpenGLState::ScopedglViewport savedViewport(state);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST); // the renderer's viewport scissor
-  state->vtkglViewport(0, 0, this->Size, this->Size);
+  vtkTransmittanceOffscreenDraw draw(frame.State, this->Framebuffer, this->Size, this->Size);
   const int layers = frame.Layers;
   for (int l = 0; l < static_cast<int>(frame.Lights.size()); ++l)
   {

@@ -4,6 +4,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
+#include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTyndallGridMedium.h"
 
 #include <algorithm>
@@ -47,15 +48,6 @@ void Gather(const vtkTyndallGridMedium& medium, const T* data, int factor, const
   }
 }
 
-void SetLinearClamped(vtkTextureObject* texture, vtkOpenGLRenderWindow* window)
-{
-  texture->SetContext(window);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Linear);
-  texture->SetMagnificationFilter(vtkTextureObject::Linear);
-}
 }
 
 //------------------------------------------------------------------------------
@@ -157,7 +149,7 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   {
     this->VolumeTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
-  SetLinearClamped(this->VolumeTexture, window);
+  vtkTransmittanceOffscreenDraw::SetClamped(this->VolumeTexture, window, true);
   if (!this->VolumeTexture->Create3DFromRaw(
         this->Dimensions[0], this->Dimensions[1], this->Dimensions[2], 1, VTK_FLOAT, values.data()))
   {
@@ -177,7 +169,7 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   {
     this->ValidityTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
-  SetLinearClamped(this->ValidityTexture, window);
+  vtkTransmittanceOffscreenDraw::SetClamped(this->ValidityTexture, window, true);
   if (!this->ValidityTexture->Create3DFromRaw(this->Dimensions[0], this->Dimensions[1],
         this->Dimensions[2], 1, VTK_UNSIGNED_CHAR, valid.data()))
   {
@@ -197,7 +189,7 @@ bool vtkTransmittanceMediumTextures::UploadTable(
   {
     this->TransferTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
-  SetLinearClamped(this->TransferTexture, window);
+  vtkTransmittanceOffscreenDraw::SetClamped(this->TransferTexture, window, true);
   if (!this->TransferTexture->Create2DFromRaw(
         vtkTyndallTransferTable::Size, vtkTyndallTransferTable::Rows, 4, VTK_FLOAT, rgba.data()))
   {
@@ -217,12 +209,7 @@ bool vtkTransmittanceMediumTextures::UploadMajorants(
     this->BlockTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTextureObject* texture = this->BlockTexture;
-  texture->SetContext(window);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->SetWrapR(vtkTextureObject::ClampToEdge);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  vtkTransmittanceOffscreenDraw::SetClamped(texture, window, false);
   const int* counts = this->Majorants.GetBlockCounts();
   if (!texture->Create3DFromRaw(counts[0], counts[1], counts[2], 1, VTK_FLOAT,
         const_cast<float*>(this->Majorants.GetMajorants().data())))

@@ -15,6 +15,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceLightFrustum.h"
+#include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedFramebuffer.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
@@ -82,12 +83,7 @@ bool vtkTransmittanceOcclusionPass::Allocate(const vtkTransmittanceFrame& frame)
   for (vtkTextureObject* texture :
     { this->OcclusionTexture.Get(), this->LightDepthTexture.Get(), this->LightColorTexture.Get() })
   {
-    texture->SetContext(frame.Window);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
-    texture->SetWrapR(vtkTextureObject::ClampToEdge);
-    texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    vtkTransmittanceOffscreenDraw::SetClamped(texture, frame.Window, false);
   }
   if (!this->OcclusionTexture->Create3DFromRaw(size, size, slices, 1, VTK_FLOAT, nullptr) ||
     !this->LightDepthTexture->AllocateDepth(size, size, vtkTextureObject::Float32) ||
