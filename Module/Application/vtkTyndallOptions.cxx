@@ -124,6 +124,20 @@ const Spec kOptions[] = {
     "and light)" },
   { "no-cache", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "no transmittance cache: every camera sample reads the maps (full map resolution, slower)" },
+  { "detail", "", Kind::Flag, 0, 0, false, "", "", "", "Procedural detail", Both,
+    "multiply the medium's extinction by cosine noise evaluated in the shader, never voxelised "
+    "(the volume becomes the coarse shape); light transmittance through it is exact with "
+    "--method brute-force (closed form per sample), approximate with the maps" },
+  { "detail-octaves", "", Kind::Integer, 1, 16, false, "", "N", "4", "Procedural detail", Both,
+    "octaves of the noise (directions x octaves <= 256)" },
+  { "detail-directions", "", Kind::Integer, 1, 256, false, "", "N", "24", "Procedural detail", Both,
+    "cosine waves per octave" },
+  { "detail-frequency", "", Kind::Number, 0, Huge, false, "", "F", "0", "Procedural detail", Both,
+    "cycles of the first octave per data unit; 0 = one cycle per 8 samples of the volume along "
+    "its smallest side (the last octaves are then finer than its voxels)" },
+  { "detail-contrast", "", Kind::Number, 0, 10, false, "", "C", "0.3", "Procedural detail", Both,
+    "standard deviation of the noise factor, whose mean is 1 (the shape's density is kept); "
+    "above about 0.3 it dips below 0 in places, where it is clamped (see the rendering model)" },
   { "preset", "", Kind::Text, 0, 0, false, "", "NAME", "", "Transfer function", Both,
     "a named preset (vtkTransferFunctionPresets) over the data's scalar range, unit distance = "
     "the mean voxel spacing; names ignore case, spaces, '-' and '_'. Default for data inputs: "

@@ -4,6 +4,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
@@ -283,6 +284,7 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   medium->SetDensityScale(o->GetNumber("density-scale"));
   medium->SetLightScale(
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
+  this->ApplyDetail();
   medium->SetEmissionScale(o->GetNumber("emission-scale"));
   if (medium->GetEmissionScale() > 0.0 && !medium->GetEmissionColor())
   {
@@ -292,6 +294,57 @@ void vtkTyndallSceneBuilder::ApplyOptions()
     medium->SetEmissionColor(
       fromFile ? this->TransferFunctionFile->GetEmission() : medium->GetRGBTransferFunction());
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyDetail()
+{
+  vtkTyndallOptions* o = this->Options;
+  if (!o->GetFlag("detail"))
+  {
+    this->Property->SetDetailNoise(nullptr);
+    return;
+  }
+  if (!this->DetailNoise)
+  {
+    this->DetailNoise = vtkSmartPointer<vtkCosineNoise>::New();
+  }
+  vtkCosineNoise* noise = this->DetailNoise;
+  noise->SetNumberOfOctaves(static_cast<int>(o->GetNumber("detail-octaves")));
+  noise->SetNumberOfDirections(static_cast<int>(o->GetNumber("detail-directions")));
+  double frequency = o->GetNumber("detail-frequency");
+  if (frequency <= 0.0 && this->Image)
+  {
+    // The first octave at one cycle per 8 samples along the smallest side.
+    const double* b = this->Image->GetBounds();
+    const int* n = this->Image->GetDimensions();
+    double side = 0.0;
+    int samples = 2;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (n[a] > 1 && (side == 0.0 || b[2 * a + 1] - b[2 * a] < side))
+      {
+        side = b[2 * a + 1] - b[2 * a];
+        samples = n[a];
+      }
+    }
+    frequency = side > 0.0 ? samples / (8.0 * side) : 1.0;
+  }
+  noise->SetFrequency(frequency > 0.0 ? frequency : 1.0);
+  // Offset 1, and the amplitudes scaled so that the factor's standard
+  // deviation (random phases: sqrt(sum a^2 / 2)) is the contrast.
+  noise->SetAmplitude(1.0);
+  double power = 0.0;
+  for (int i = 0; i < noise->GetNumberOfWaves(); ++i)
+  {
+    double k[3], phase, amplitude;
+    noise->GetWave(i, k, phase, amplitude);
+    power += 0.5 * amplitude * amplitude;
+  }
+  noise->SetAmplitude(power > 0.0 ? o->GetNumber("detail-contrast") / std::sqrt(power) : 0.0);
+  noise->SetOffset(1.0);
+  noise->SetExtinctionScale(1.0);
+  this->Property->SetDetailNoise(noise);
 }
 
 //------------------------------------------------------------------------------

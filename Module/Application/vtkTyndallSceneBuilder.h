@@ -50,6 +50,7 @@
 class vtkAlgorithm;
 class vtkImageData;
 class vtkLight;
+class vtkCosineNoise;
 class vtkParticipatingMediumProperty;
 class vtkRenderer;
 class vtkTransferFunctionFileReader;
@@ -138,6 +139,8 @@ private:
   bool ReadTransferFunctionFile();
   bool LoadMedium();
   bool ChooseTransferFunction();
+  // The --detail options: the property's DetailNoise (null without --detail).
+  void ApplyDetail();
   bool SetUpCamera(vtkRenderer* renderer);
   void SetUpLights(vtkRenderer* renderer);
   void SetUpBackground(vtkRenderer* renderer);
@@ -147,6 +150,7 @@ private:
   vtkSmartPointer<vtkImageData> Image;
   vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
   vtkSmartPointer<vtkParticipatingMediumProperty> Property;
+  vtkSmartPointer<vtkCosineNoise> DetailNoise;
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkLight> KeyLight;
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;

@@ -266,6 +266,32 @@ public:
     double targetDepth, double& t);
 
   /**
+   * The integral of a cubic polynomial times one cosine wave,
+   * \f$\int_0^L (c_0 + c_1 s + c_2 s^2 + c_3 s^3)\cos(\alpha + \beta s)\,ds\f$,
+   * in closed form: with \f$\theta = \beta L\f$ and
+   * \f$K_n(\theta) = \int_0^1 u^n e^{i\theta u} du\f$ it is
+   * \f$L\,\mathrm{Re}\big(e^{i\alpha}\sum_n c_n L^n K_n(\theta)\big)\f$;
+   * \f$K_n\f$ comes from its Taylor series for \f$|\theta| < 0.5\f$ (no
+   * cancellation when a ray runs along a wave front) and from the recurrence
+   * \f$K_n = (e^{i\theta} - n K_{n-1}) / (i\theta)\f$ otherwise (whose
+   * error grows at most 3! / |theta|^3 <= 48 fold). Relative error near
+   * machine precision; the shape x noise media of Tyndall integrate their
+   * trilinear shape along a ray with it (vtkTyndallDetailMedium, and the
+   * GLSL twin tyndallPolynomialWave()). L >= 0.
+   */
+  static double PolynomialWaveIntegral(const double c[4], double length, double alpha, double beta);
+
+  /**
+   * The core of PolynomialWaveIntegral() for callers that track the phases
+   * themselves: (re, im) = sum_n e_n K_n(theta), e_n = c_n L^n, given
+   * theta = beta L with its cosine and sine (the integral is then
+   * L Re(e^{i alpha} (re + i im))). The Taylor series is used for
+   * |theta| < 0.5, the recurrence otherwise.
+   */
+  static void PolynomialWaveMoments(
+    const double e[4], double theta, double cosTheta, double sinTheta, double& re, double& im);
+
+  /**
    * Modification time including the custom directions.
    */
   vtkMTimeType GetMTime() override;

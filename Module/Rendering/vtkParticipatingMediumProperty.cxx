@@ -1,6 +1,7 @@
 #include "vtkParticipatingMediumProperty.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkCosineNoise.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 
@@ -8,6 +9,7 @@
 
 vtkStandardNewMacro(vtkParticipatingMediumProperty);
 vtkCxxSetObjectMacro(vtkParticipatingMediumProperty, EmissionColor, vtkColorTransferFunction);
+vtkCxxSetObjectMacro(vtkParticipatingMediumProperty, DetailNoise, vtkCosineNoise);
 
 //------------------------------------------------------------------------------
 vtkParticipatingMediumProperty::vtkParticipatingMediumProperty()
@@ -19,6 +21,7 @@ vtkParticipatingMediumProperty::vtkParticipatingMediumProperty()
 vtkParticipatingMediumProperty::~vtkParticipatingMediumProperty()
 {
   this->SetEmissionColor(nullptr);
+  this->SetDetailNoise(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -43,6 +46,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetAmbientIntensity(medium->AmbientIntensity);
   this->SetEmissionScale(medium->EmissionScale);
   this->SetEmissionColor(medium->EmissionColor);
+  this->SetDetailNoise(medium->DetailNoise);
 }
 
 //------------------------------------------------------------------------------
@@ -52,6 +56,10 @@ vtkMTimeType vtkParticipatingMediumProperty::GetMTime()
   if (this->EmissionColor)
   {
     mtime = std::max(mtime, this->EmissionColor->GetMTime());
+  }
+  if (this->DetailNoise)
+  {
+    mtime = std::max(mtime, this->DetailNoise->GetMTime());
   }
   return mtime;
 }
@@ -67,4 +75,5 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AmbientIntensity: " << this->AmbientIntensity << "\n";
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "EmissionColor: " << this->EmissionColor << "\n";
+  os << indent << "DetailNoise: " << this->DetailNoise << "\n";
 }

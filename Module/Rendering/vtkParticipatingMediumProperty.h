@@ -38,6 +38,7 @@
 #include "vtkVolumeProperty.h"
 
 class vtkColorTransferFunction;
+class vtkCosineNoise;
 
 class TYNDALLRENDERING_EXPORT vtkParticipatingMediumProperty : public vtkVolumeProperty
 {
@@ -116,6 +117,22 @@ public:
   vtkGetObjectMacro(EmissionColor, vtkColorTransferFunction);
   ///@}
 
+  ///@{
+  /**
+   * Procedural detail (default none): with a vtkCosineNoise set, the medium
+   * is the volume's pre-classified extinction (each voxel's scalar through
+   * the opacity transfer function, times DensityScale, interpolated
+   * trilinearly) times the noise's ExtinctionScale times max(0, noise), the
+   * noise evaluated at the image's data coordinates and never sampled into
+   * a grid. Light transmittance through it is integrated in closed form,
+   * cell by cell of the volume (Documentation/rendering-model.md, "Procedural
+   * detail"). The noise has at most 256 waves (directions x octaves). Colour
+   * and emission still follow the scalar at the sample.
+   */
+  void SetDetailNoise(vtkCosineNoise* noise);
+  vtkGetObjectMacro(DetailNoise, vtkCosineNoise);
+  ///@}
+
   /**
    * Copies vtkVolumeProperty's settings and, when `p` is a
    * vtkParticipatingMediumProperty, these (the emission colour is shared,
@@ -125,7 +142,7 @@ public:
   void DeepCopy(vtkVolumeProperty* p);
 
   /**
-   * Includes the emission colour's modification time.
+   * Includes the emission colour's and the detail noise's modification times.
    */
   vtkMTimeType GetMTime() override;
 
@@ -140,6 +157,7 @@ protected:
   double AmbientIntensity = 0.0;
   double EmissionScale = 0.0;
   vtkColorTransferFunction* EmissionColor = nullptr;
+  vtkCosineNoise* DetailNoise = nullptr;
 
 private:
   vtkParticipatingMediumProperty(const vtkParticipatingMediumProperty&) = delete;

@@ -13,6 +13,7 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -101,6 +102,7 @@ struct Scene
   bool HasEmission = false;
   std::vector<LightSource> Lights;
   const vtkTyndallTransferTable* Table = nullptr;
+  const vtkTyndallDetailMedium* Detail = nullptr; // procedural detail, or null
   double* Radiance = nullptr;
   double* Transmittance = nullptr;
 
@@ -159,7 +161,8 @@ private:
       return false;
     }
     this->S->Table->Locate(s, k, f);
-    sigma = this->S->DensityScale * this->S->Table->ExtinctionAt(k, f);
+    sigma = this->S->Detail ? this->S->Detail->Extinction(p)
+                            : this->S->DensityScale * this->S->Table->ExtinctionAt(k, f);
     return sigma > 0.0;
   }
 
@@ -173,6 +176,10 @@ private:
       return 1.0;
     }
     const double length = t1;
+    if (this->S->Detail)
+    {
+      return std::exp(-this->S->Detail->OpticalDepth(p, d, 0.0, length)); // closed form
+    }
     const double steps = std::max(1.0, std::ceil(length / this->S->LightStep));
     const int n = static_cast<int>(steps);
     const double dt = length / n;
@@ -493,7 +500,11 @@ bool vtkSingleScatteringReference::RenderInternal(
 
   // Steps: the world length of one field index step along the shortest axis.
   const double minVoxel = medium.GetMinimumWorldSpacing();
-  scene.Step = this->StepSize > 0.0 ? this->StepSize : minVoxel / 4.0;
+  const vtkTyndallDetailMedium& detail = tyndall.GetDetail();
+  scene.Detail = detail.Enabled() ? &detail : nullptr;
+  const double wavelength =
+    detail.Enabled() ? detail.GetShortestWavelength(medium.GetWorldToIndex()) : 1e30;
+  scene.Step = this->StepSize > 0.0 ? this->StepSize : std::min(minVoxel, wavelength / 2.0) / 4.0;
   scene.LightStep = this->LightStepSize > 0.0 ? this->LightStepSize : scene.Step;
   if (!(scene.Step > 0.0) || !(scene.LightStep > 0.0) ||
     medium.GetWorldDiagonal() / std::min(scene.Step, scene.LightStep) > kMaxStepsPerRay)

@@ -61,6 +61,13 @@
  * scene's table (vtkTyndallTransferTable, the GPU's table), interpolated
  * linearly.
  *
+ * Procedural detail (vtkParticipatingMediumProperty::SetDetailNoise): the
+ * extinction at a sample is the detail medium's (pre-classified shape times
+ * the cosine noise, vtkTyndallDetailMedium), and T_l is computed in closed
+ * form, cell by cell of the shape grid, exact to rounding: LightStepSize is
+ * then unused. The automatic camera step is then at most an eighth of the
+ * noise's shortest wavelength.
+ *
  * Rows of pixels are rendered in parallel with vtkSMPTools in batches;
  * between batches the main thread fires vtkCommand::ProgressEvent (call
  * data: a double* progress in [0, 1]) and checks AbortExecute. StartEvent

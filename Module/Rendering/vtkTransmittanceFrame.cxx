@@ -9,6 +9,7 @@
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMediumTextures.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallSceneReader.h"
 
 #include <algorithm>
@@ -28,6 +29,10 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->Window = window;
   this->State = window->GetState();
   this->Medium = &scene.GetMedium();
+  this->Detail = &scene.GetDetail();
+  this->DetailWavelength = this->Detail->Enabled()
+    ? this->Detail->GetShortestWavelength(this->Medium->GetWorldToIndex())
+    : 1e30;
   this->Textures = &textures;
   this->Integrator = settings;
   this->Layers = M::GetNumberOfMapLayers(settings.Method, settings.Coefficients);
@@ -108,14 +113,21 @@ bool vtkTransmittanceFrame::NeedsMaps() const
 //------------------------------------------------------------------------------
 double vtkTransmittanceFrame::GetStepLength() const
 {
-  return this->Integrator.SampleDistance > 0.0 ? this->Integrator.SampleDistance
-                                               : 0.5 * this->MinimumSpacing;
+  if (this->Integrator.SampleDistance > 0.0)
+  {
+    return this->Integrator.SampleDistance;
+  }
+  return std::min(0.5 * this->MinimumSpacing, 0.25 * this->DetailWavelength);
 }
 
 //------------------------------------------------------------------------------
 vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() const
 {
   vtkTransmittanceShaderSource::Variant variant;
+  if (this->Detail && this->Detail->Enabled())
+  {
+    variant.DetailGroups = static_cast<int>((this->Detail->GetWaves().size() + 3) / 4);
+  }
   variant.MissingData = this->Textures && this->Textures->GetValidityTexture() != nullptr;
   variant.SkipEmpty = this->Integrator.SkipEmptySpace;
   return variant;
@@ -172,6 +184,7 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
     static_cast<float>(table.TextureShift()) };
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
+  this->SetDetailUniforms(program);
 
   int positional[kMaxLights] = { 0 }, hasFrustum[kMaxLights] = { 0 };
   float origin[kMaxLights][3] = {}, axisX[kMaxLights][3] = {}, axisY[kMaxLights][3] = {},
@@ -195,4 +208,46 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
   program->SetUniform3fv("lightAxisX", kMaxLights, axisX);
   program->SetUniform3fv("lightAxisY", kMaxLights, axisY);
   program->SetUniform3fv("lightAxisZ", kMaxLights, axisZ);
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetDetailUniforms(vtkShaderProgram* program) const
+{
+  if (!this->Detail || !this->Detail->Enabled())
+  {
+    return;
+  }
+  const vtkTyndallDetailMedium& detail = *this->Detail;
+  const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
+  const int groups = static_cast<int>((waves.size() + 3) / 4);
+  std::vector<float> kx(4 * groups, 0.0f), ky(kx), kz(kx), phase(kx), amplitude(kx);
+  for (size_t i = 0; i < waves.size(); ++i)
+  {
+    kx[i] = static_cast<float>(waves[i].K[0]);
+    ky[i] = static_cast<float>(waves[i].K[1]);
+    kz[i] = static_cast<float>(waves[i].K[2]);
+    phase[i] = static_cast<float>(std::remainder(waves[i].Phase, 2.0 * vtkMath::Pi()));
+    amplitude[i] = static_cast<float>(waves[i].Amplitude);
+  }
+  program->SetUniform4fv("detailKx", groups, reinterpret_cast<float(*)[4]>(kx.data()));
+  program->SetUniform4fv("detailKy", groups, reinterpret_cast<float(*)[4]>(ky.data()));
+  program->SetUniform4fv("detailKz", groups, reinterpret_cast<float(*)[4]>(kz.data()));
+  program->SetUniform4fv("detailPhase", groups, reinterpret_cast<float(*)[4]>(phase.data()));
+  program->SetUniform4fv(
+    "detailAmplitude", groups, reinterpret_cast<float(*)[4]>(amplitude.data()));
+  const int* n = detail.GetDimensions();
+  const float dims[3] = { float(n[0]), float(n[1]), float(n[2]) };
+  float low[3], size[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    low[a] = static_cast<float>(this->Medium->GetBoxLow()[a]);
+    size[a] = static_cast<float>(this->Medium->GetBoxHigh()[a] - this->Medium->GetBoxLow()[a]);
+  }
+  program->SetUniformi("detailShapeTexture", this->Textures->GetDetailTexture()->GetTextureUnit());
+  program->SetUniform3f("detailDims", dims);
+  program->SetUniform3f("detailBoxLow", low);
+  program->SetUniform3f("detailBoxSize", size);
+  program->SetUniformi("detailMaxCells", n[0] + n[1] + n[2] + 3);
+  program->SetUniformf("detailOffset", static_cast<float>(detail.GetOffset()));
+  program->SetUniformf("detailScale", static_cast<float>(detail.GetScale()));
 }

@@ -30,6 +30,7 @@ class vtkShaderProgram;
 class vtkTransmittanceLightFrustum;
 class vtkTransmittanceMediumTextures;
 class vtkTextureObject;
+class vtkTyndallDetailMedium;
 class vtkTyndallGridMedium;
 class vtkTyndallSceneReader;
 
@@ -91,13 +92,18 @@ public:
   /// Whether some light uses a map method.
   bool NeedsMaps() const;
 
-  /// The camera-ray step: SampleDistance, or half the smallest spacing.
+  /**
+   * The camera-ray step: SampleDistance, or half the smallest spacing (with
+   * procedural detail, at most a quarter of its shortest wavelength).
+   */
   double GetStepLength() const;
 
   vtkRenderer* Renderer = nullptr;
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkOpenGLState* State = nullptr;
   const vtkTyndallGridMedium* Medium = nullptr;
+  /// The procedural detail over the medium (Enabled() or not).
+  const vtkTyndallDetailMedium* Detail = nullptr;
   const vtkTransmittanceMediumTextures* Textures = nullptr;
   Settings Integrator;
   /// ceil(Coefficients / 4) (+1 for the adaptive methods) layers per light.
@@ -113,6 +119,11 @@ public:
   /// Its inverse (column-major) and the box's world edge lengths.
   float BoxToWorld[16];
   double BoxExtents[3] = { 1.0, 1.0, 1.0 };
+  /// The procedural detail's shortest wavelength in world units (1e30: no detail).
+  double DetailWavelength = 1e30;
+
+private:
+  void SetDetailUniforms(vtkShaderProgram* program) const;
 };
 
 #endif

@@ -5,6 +5,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceOffscreenDraw.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
 
 #include <algorithm>
@@ -221,10 +222,47 @@ bool vtkTransmittanceMediumTextures::UploadMajorants(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UpdateDetail(
+  vtkOpenGLRenderWindow* window, const vtkTyndallDetailMedium& detail, vtkObject* reporter)
+{
+  if (!detail.Enabled())
+  {
+    if (this->DetailTexture)
+    {
+      this->DetailTexture->ReleaseGraphicsResources(window);
+    }
+    this->DetailTexture = nullptr;
+    return true;
+  }
+  if (this->DetailTexture && this->DetailTexture->GetContext() == window &&
+    detail.GetTime() <= this->DetailTime)
+  {
+    return true;
+  }
+  if (!this->DetailTexture)
+  {
+    this->DetailTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->DetailTime = 0;
+  vtkTransmittanceOffscreenDraw::SetClamped(this->DetailTexture, window, true);
+  const int* n = detail.GetDimensions();
+  if (!this->DetailTexture->Create3DFromRaw(
+        n[0], n[1], n[2], 1, VTK_FLOAT, const_cast<float*>(detail.GetShape().data())))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the procedural detail's " << n[0] << "x"
+                                      << n[1] << "x" << n[2] << " shape texture.");
+    this->DetailTexture = nullptr;
+    return false;
+  }
+  this->DetailTime = detail.GetTime();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
-         this->TransferTexture.Get(), this->BlockTexture.Get() })
+         this->TransferTexture.Get(), this->BlockTexture.Get(), this->DetailTexture.Get() })
   {
     if (texture)
     {
@@ -235,6 +273,8 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->ValidityTexture = nullptr;
   this->TransferTexture = nullptr;
   this->BlockTexture = nullptr;
+  this->DetailTexture = nullptr;
+  this->DetailTime = 0;
   this->UploadedMedium = nullptr;
   this->ScalarsTime = this->TableTime = 0;
 }

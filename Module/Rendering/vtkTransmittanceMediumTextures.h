@@ -34,6 +34,7 @@
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
+class vtkTyndallDetailMedium;
 class vtkTyndallGridMedium;
 class vtkWindow;
 
@@ -50,6 +51,16 @@ public:
    */
   bool Update(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+
+  /**
+   * Uploads the procedural detail's shape (pre-classified extinction, one
+   * float texel per sample) when it changed; releases it when `detail` is
+   * not enabled. False (with an error) when it cannot be created.
+   */
+  bool UpdateDetail(
+    vtkOpenGLRenderWindow* window, const vtkTyndallDetailMedium& detail, vtkObject* reporter);
+  /// Null without procedural detail.
+  vtkTextureObject* GetDetailTexture() const { return this->DetailTexture; }
 
   vtkTextureObject* GetVolumeTexture() const { return this->VolumeTexture; }
   /// Null when the scalars hold no NaN.
@@ -89,6 +100,8 @@ private:
   vtkSmartPointer<vtkTextureObject> ValidityTexture;
   vtkSmartPointer<vtkTextureObject> TransferTexture;
   vtkSmartPointer<vtkTextureObject> BlockTexture;
+  vtkSmartPointer<vtkTextureObject> DetailTexture;
+  vtkMTimeType DetailTime = 0;
   vtkTyndallMajorantGrid Majorants;
   double BlockRangeTime = 0.0;
   double MajorantTime = 0.0;

@@ -15,6 +15,7 @@
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtk_glew.h"
@@ -118,13 +119,20 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
 int vtkTransmittanceRayCastPass::StepsPerPass(const vtkTransmittanceFrame& frame)
 {
   // Loop iterations of one camera step: the step, the light loop, and a
-  // brute-force light march per brute-force light.
+  // brute-force light march per brute-force light (with procedural detail:
+  // the cells of the closed form's walk; its wave loops are unrolled).
   double perStep = 1.0 + static_cast<double>(frame.Lights.size());
+  double march = std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll);
+  if (frame.Detail && frame.Detail->Enabled())
+  {
+    const int* n = frame.Detail->GetDimensions();
+    march = n[0] + n[1] + n[2] + 3.0;
+  }
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
   {
     if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
     {
-      perStep += std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll);
+      perStep += march;
     }
   }
   return std::max(1, static_cast<int>(IterationBudget / perStep));

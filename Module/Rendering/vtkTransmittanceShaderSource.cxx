@@ -9,6 +9,7 @@
 // The GLSL sources, embedded at build time from glsl/*.glsl.
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceCompositeFS.h"
+#include "vtkTransmittanceDetailFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
@@ -53,6 +54,14 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
+  // Procedural detail: wave groups, and the preprocessor loop over them.
+  define("DETAIL_GROUPS", variant.DetailGroups);
+  os << "#define TYNDALL_DETAIL_FOR_GROUPS(X)";
+  for (int g = 0; g < variant.DetailGroups; ++g)
+  {
+    os << " X(" << g << ")";
+  }
+  os << "\n";
   return os.str();
 }
 
@@ -80,5 +89,7 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
       break;
   }
   vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(variant));
+  vtkShaderProgram::Substitute(
+    source, "//TYNDALL::Detail", variant.DetailGroups > 0 ? vtkTransmittanceDetailFS : "");
   return source;
 }

@@ -27,6 +27,10 @@
  *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise;
  * - TYNDALL_SKIP_EMPTY: 1 when camera rays and map builds skip empty blocks
  *   of the majorant grid (vtkTyndallMajorantGrid), 0 otherwise;
+ * - TYNDALL_DETAIL_GROUPS: groups of four cosine waves of the medium's
+ *   procedural detail (0: none), with TYNDALL_DETAIL_FOR_GROUPS(X) expanding
+ *   to X(0) .. X(groups - 1), and vtkTransmittanceDetailFS.glsl in place of
+ *   the common file's `//TYNDALL::Detail` line;
  * - the camera rays' TYNDALL_MAP_COEFFICIENTS (coefficients a map lookup
  *   reads, in TYNDALL_MAP_LAYERS layers; 0 when no light has a map),
  *   TYNDALL_MAP_EXTINCTION (the reconstruction of the ETM or the TFM
@@ -63,6 +67,8 @@ public:
   {
     bool MissingData = false;
     bool SkipEmpty = false;
+    /// Groups of four waves of procedural detail (vtkTyndallDetailMedium); 0: none.
+    int DetailGroups = 0;
     ///@{
     /// The camera rays' variant (RAY_CAST only).
     int MapCoefficients = 0;    // coefficients a map lookup reads; 0: no maps

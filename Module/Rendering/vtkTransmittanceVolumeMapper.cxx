@@ -203,7 +203,8 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   }
   in.Window = window;
   if (!in.Scene.Update(renderer, volume, this) ||
-    !in.Textures->Update(window, in.Scene.GetMedium(), this))
+    !in.Textures->Update(window, in.Scene.GetMedium(), this) ||
+    !in.Textures->UpdateDetail(window, in.Scene.GetDetail(), this))
   {
     return;
   }
@@ -219,9 +220,9 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   settings.CacheSize = this->TransmittanceCache ? this->TransmittanceCacheSize : 0;
   in.Frame.Prepare(renderer, window, in.Scene, *in.Textures, settings);
 
-  vtkTransmittanceScopedTextures medium(
-    { in.Textures->GetVolumeTexture(), in.Textures->GetValidityTexture(),
-      in.Textures->GetTransferTexture(), in.Textures->GetBlockTexture() });
+  vtkTransmittanceScopedTextures medium({ in.Textures->GetVolumeTexture(),
+    in.Textures->GetValidityTexture(), in.Textures->GetTransferTexture(),
+    in.Textures->GetBlockTexture(), in.Textures->GetDetailTexture() });
   vtkTransmittanceRayCastPass::Inputs inputs;
   if (in.Occlusion->Render(in.Frame, this))
   {

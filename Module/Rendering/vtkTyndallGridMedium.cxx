@@ -268,6 +268,7 @@ bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter
     }
     indexToData->SetElement(r, 3, translation);
   }
+  std::copy(*indexToData->Element, *indexToData->Element + 16, this->IndexToData);
   vtkNew<vtkMatrix4x4> indexToWorld;
   vtkMatrix4x4::Multiply4x4(matrix, indexToData, indexToWorld);
   std::copy(*indexToWorld->Element, *indexToWorld->Element + 16, this->IndexToWorld);

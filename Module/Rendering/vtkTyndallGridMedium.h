@@ -88,6 +88,8 @@ public:
   const double* GetBoxHigh() const { return this->BoxHigh; }
   const double* GetIndexToWorld() const { return this->IndexToWorld; }
   const double* GetWorldToIndex() const { return this->WorldToIndex; }
+  /// Field index -> the image's data coordinates (before the volume's matrix).
+  const double* GetIndexToData() const { return this->IndexToData; }
   ///@}
 
   /// The eight world corners of the box (24 doubles; corner c has bit 0, 1, 2 for x, y, z high).
@@ -200,6 +202,7 @@ private:
   double BoxLow[3] = { 0.0, 0.0, 0.0 };
   double BoxHigh[3] = { 1.0, 1.0, 1.0 };
   double IndexToWorld[16];
+  double IndexToData[16];
   double WorldToIndex[16];
 
   // The table and the parameters.

@@ -6,6 +6,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObject.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 
@@ -52,6 +53,11 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
     return false;
   }
   if (!this->Medium.Update(volume, reporter))
+  {
+    return false;
+  }
+  auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
+  if (!this->Detail.Update(this->Medium, property ? property->GetDetailNoise() : nullptr, reporter))
   {
     return false;
   }

@@ -33,6 +33,7 @@
 #define vtkTyndallSceneReader_h
 
 #include "TyndallRenderingModule.h" // For export macro
+#include "vtkTyndallDetailMedium.h" // For the detail
 #include "vtkTyndallGridMedium.h"   // For the medium
 #include "vtkTyndallLight.h"        // For the lights
 
@@ -56,12 +57,15 @@ public:
   bool Update(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
 
   const vtkTyndallGridMedium& GetMedium() const { return this->Medium; }
+  /// The procedural detail over the medium (Enabled() when the property has a DetailNoise).
+  const vtkTyndallDetailMedium& GetDetail() const { return this->Detail; }
   const std::vector<vtkTyndallLight>& GetLights() const { return this->Lights; }
 
 private:
   void UpdateLights(vtkRenderer* renderer, vtkObject* reporter);
 
   vtkTyndallGridMedium Medium;
+  vtkTyndallDetailMedium Detail;
   std::vector<vtkTyndallLight> Lights;
   std::string LastLightWarning;
 };

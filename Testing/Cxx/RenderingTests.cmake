@@ -4,9 +4,11 @@
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestSingleScatteringReference.cxx
+  TestVolumetricPathTracer.cxx
   TestTransferFunctionFileReader.cxx
   TestTransferFunctionPresets.cxx
-  TestTransmittanceLightFrustum.cxx)
+  TestTransmittanceLightFrustum.cxx
+  TestTyndallDetailMedium.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestSingleScatteringReferenceImage.cxx)
 # vtkTransmittanceVolumeMapper (needs a display).
@@ -18,6 +20,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperTransmittanceCache.cxx
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
+  TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx
   TestTransmittanceMapperManyLights.cxx

@@ -105,6 +105,9 @@ bool tyndallSkipEmpty(vec3 bo, vec3 bd, float ts, inout float tBlockEnd, inout i
 }
 #endif
 
+// Procedural detail (vtkTransmittanceDetailFS.glsl) when TYNDALL_DETAIL_GROUPS > 0.
+//TYNDALL::Detail
+
 // The medium at a world point: the extinction (density scale applied),
 // returned; the colour (or albedo); and the point's transfer-table
 // coordinate, with which tyndallEmissionColor() reads the emission row
@@ -125,7 +128,11 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   tableCoord = value * scalarToTable.x + scalarToTable.y;
   vec4 tf = texture(transferTexture, vec2(tableCoord, TYNDALL_TABLE_ALBEDO_ROW));
   color = tf.rgb;
+#if TYNDALL_DETAIL_GROUPS > 0
+  return tyndallDetailExtinction(q);
+#else
   return densityScale * tf.a;
+#endif
 }
 
 float tyndallExtinction(vec3 x)

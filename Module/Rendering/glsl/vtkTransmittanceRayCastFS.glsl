@@ -99,6 +99,10 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
     {
       return 1.0;
     }
+#if TYNDALL_DETAIL_GROUPS > 0
+    // Procedural detail: the closed form, exact at any distance.
+    return exp(-tyndallDetailDepth(x, toLight, tEnd));
+#else
     float dt = tEnd / float(lightSampleCount);
     float tau = 0.0;
     // Eight samples per iteration: the inner loop has a constant trip count
@@ -116,6 +120,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
       }
     }
     return exp(-tau * dt);
+#endif
   }
 #endif
 #if TYNDALL_LIGHT_CACHE

@@ -1,0 +1,149 @@
+// Tyndall: procedural detail, the GLSL twin of vtkTyndallDetailMedium
+// (inserted into vtkTransmittanceCommonFS.glsl when the medium has a detail
+// noise). Extinction = shape(p) * detailScale * max(0, noise(p)), p in field
+// index coordinates; the shape is the pre-classified extinction, one texel
+// per sample of the grid; the noise is detailOffset plus the waves, four per
+// group (TYNDALL_DETAIL_GROUPS groups, unused waves have amplitude 0).
+// TYNDALL_DETAIL_FOR_GROUPS(X) expands to X(0) X(1) .. X(groups - 1): the
+// wave loops are unrolled by the preprocessor, so they count no loop
+// iterations against llvmpipe's limit.
+uniform sampler3D detailShapeTexture;
+uniform vec3 detailDims;    // samples per axis
+uniform vec3 detailBoxLow;  // the box [0,1]^3 -> field index: low + q size
+uniform vec3 detailBoxSize;
+uniform int detailMaxCells; // cells a ray can cross: the sum of detailDims, plus 3
+uniform float detailOffset;
+uniform float detailScale;
+uniform vec4 detailKx[TYNDALL_DETAIL_GROUPS]; // wave vectors (field index), phases, amplitudes
+uniform vec4 detailKy[TYNDALL_DETAIL_GROUPS];
+uniform vec4 detailKz[TYNDALL_DETAIL_GROUPS];
+uniform vec4 detailPhase[TYNDALL_DETAIL_GROUPS];
+uniform vec4 detailAmplitude[TYNDALL_DETAIL_GROUPS];
+
+#define TYNDALL_DETAIL_NOISE_GROUP(g) sum += dot(detailAmplitude[g], cos(detailKx[g] * p.x + detailKy[g] * p.y + detailKz[g] * p.z + detailPhase[g]));
+
+// The noise at field index point p.
+float tyndallDetailNoise(vec3 p)
+{
+  float sum = detailOffset;
+  TYNDALL_DETAIL_FOR_GROUPS(TYNDALL_DETAIL_NOISE_GROUP)
+  return sum;
+}
+
+// The extinction at box point q ([0,1]^3).
+float tyndallDetailExtinction(vec3 q)
+{
+  vec3 p = detailBoxLow + q * detailBoxSize;
+  float shape = texture(detailShapeTexture, (p + 0.5) / detailDims).r;
+  return shape > 0.0 ? shape * detailScale * max(tyndallDetailNoise(p), 0.0) : 0.0;
+}
+
+// Re(e^{i alpha} sum_n e_n K_n(theta)) per component, K_n(theta) =
+// int_0^1 u^n e^{i theta u} du (vtkCosineNoise::PolynomialWaveIntegral):
+// Horner's scheme of the Taylor series for |theta| < 1, the recurrence
+// K_n = (e^{i theta} - n K_{n-1}) / (i theta) otherwise.
+#define TYNDALL_DETAIL_HORNER(m) { vec4 f = theta * (1.0 / float(m + 1)); float g = dot(e, vec4(1.0 / float(m + 1), 1.0 / float(m + 2), 1.0 / float(m + 3), 1.0 / float(m + 4))); vec4 r = g - f * sIm; sIm = f * sRe; sRe = r; }
+#define TYNDALL_DETAIL_RECURRENCE(n) { vec4 xRe = cosT - float(n) * kRe; vec4 xIm = sinT - float(n) * kIm; kRe = xIm * invT; kIm = -xRe * invT; rRe += e[n] * kRe; rIm += e[n] * kIm; }
+vec4 tyndallWaveMoments(vec4 e, vec4 alpha, vec4 theta)
+{
+  vec4 sRe = vec4(0.0), sIm = vec4(0.0);
+  TYNDALL_DETAIL_HORNER(11) TYNDALL_DETAIL_HORNER(10) TYNDALL_DETAIL_HORNER(9)
+  TYNDALL_DETAIL_HORNER(8) TYNDALL_DETAIL_HORNER(7) TYNDALL_DETAIL_HORNER(6)
+  TYNDALL_DETAIL_HORNER(5) TYNDALL_DETAIL_HORNER(4) TYNDALL_DETAIL_HORNER(3)
+  TYNDALL_DETAIL_HORNER(2) TYNDALL_DETAIL_HORNER(1) TYNDALL_DETAIL_HORNER(0)
+  vec4 cosT = cos(theta), sinT = sin(theta);
+  vec4 invT = 1.0 / theta;
+  vec4 kRe = sinT * invT, kIm = (1.0 - cosT) * invT;
+  vec4 rRe = e[0] * kRe, rIm = e[0] * kIm;
+  TYNDALL_DETAIL_RECURRENCE(1) TYNDALL_DETAIL_RECURRENCE(2) TYNDALL_DETAIL_RECURRENCE(3)
+  bvec4 small = lessThan(abs(theta), vec4(1.0));
+  vec4 re = mix(rRe, sRe, small);
+  vec4 im = mix(rIm, sIm, small);
+  return cos(alpha) * re - sin(alpha) * im;
+}
+
+#define TYNDALL_DETAIL_SEGMENT_GROUP(g) sum += dot(detailAmplitude[g], tyndallWaveMoments(e, detailKx[g] * pa.x + detailKy[g] * pa.y + detailKz[g] * pa.z + detailPhase[g], (detailKx[g] * d.x + detailKy[g] * d.y + detailKz[g] * d.z) * len));
+
+// The integral of c(s) noise(pa + s d) over s in [0, len], c a cubic
+// (coefficients of 1, s, s^2, s^3).
+float tyndallDetailSegment(vec3 pa, vec3 d, vec4 c, float len)
+{
+  vec4 e = c * vec4(1.0, len, len * len, len * len * len);
+  float sum = detailOffset * dot(e, vec4(1.0, 0.5, 1.0 / 3.0, 0.25));
+  TYNDALL_DETAIL_FOR_GROUPS(TYNDALL_DETAIL_SEGMENT_GROUP)
+  return len * sum;
+}
+
+// p * (l.x + l.y s) for a cubic p.
+vec4 tyndallTimesLinear(vec4 p, vec2 l)
+{
+  return p * l.x + vec4(0.0, p.xyz) * l.y;
+}
+
+// The trilinear shape along pa + s d within the cell `region` (per axis:
+// -1 below the samples, dims - 1 above them: the coordinate is clamped), as
+// a cubic in s.
+vec4 tyndallDetailCell(ivec3 region, vec3 pa, vec3 d)
+{
+  ivec3 last = ivec3(detailDims) - 2;
+  ivec3 cell = clamp(region, ivec3(0), last);
+  vec3 u0 = clamp(pa - vec3(cell), 0.0, 1.0);
+  u0 = mix(u0, vec3(0.0), lessThan(region, ivec3(0)));
+  u0 = mix(u0, vec3(1.0), greaterThan(region, last));
+  vec3 du = mix(d, vec3(0.0), bvec3(ivec3(lessThan(region, ivec3(0))) + ivec3(greaterThan(region, last))));
+  float v000 = texelFetch(detailShapeTexture, cell, 0).r;
+  float v100 = texelFetch(detailShapeTexture, cell + ivec3(1, 0, 0), 0).r;
+  float v010 = texelFetch(detailShapeTexture, cell + ivec3(0, 1, 0), 0).r;
+  float v110 = texelFetch(detailShapeTexture, cell + ivec3(1, 1, 0), 0).r;
+  float v001 = texelFetch(detailShapeTexture, cell + ivec3(0, 0, 1), 0).r;
+  float v101 = texelFetch(detailShapeTexture, cell + ivec3(1, 0, 1), 0).r;
+  float v011 = texelFetch(detailShapeTexture, cell + ivec3(0, 1, 1), 0).r;
+  float v111 = texelFetch(detailShapeTexture, cell + ivec3(1, 1, 1), 0).r;
+  vec4 x = vec4(u0.x, du.x, 0.0, 0.0);
+  vec4 y = vec4(u0.y, du.y, 0.0, 0.0);
+  vec4 xy = tyndallTimesLinear(x, vec2(u0.y, du.y));
+  vec4 xz = tyndallTimesLinear(x, vec2(u0.z, du.z));
+  vec4 yz = tyndallTimesLinear(y, vec2(u0.z, du.z));
+  vec4 xyz = tyndallTimesLinear(xy, vec2(u0.z, du.z));
+  vec4 z = vec4(u0.z, du.z, 0.0, 0.0);
+  return vec4(v000, 0.0, 0.0, 0.0) + x * (v100 - v000) + y * (v010 - v000) + z * (v001 - v000) +
+    xy * (v110 - v100 - v010 + v000) + xz * (v101 - v100 - v001 + v000) +
+    yz * (v011 - v010 - v001 + v000) +
+    xyz * (v111 - v110 - v101 - v011 + v100 + v010 + v001 - v000);
+}
+
+// The optical depth from world point x along the unit world direction w
+// over t in [0, tEnd] (x inside the box), in closed form: the ray is walked
+// cell by cell (a 3-D DDA), each cell's integral clamped at 0.
+float tyndallDetailDepth(vec3 x, vec3 w, float tEnd)
+{
+  vec3 o = detailBoxLow + (worldToVolume * vec4(x, 1.0)).xyz * detailBoxSize;
+  vec3 d = (worldToVolume * vec4(w, 0.0)).xyz * detailBoxSize;
+  ivec3 top = ivec3(detailDims) - 1;
+  vec3 f = floor(o);
+  ivec3 region = ivec3(f) - ivec3(lessThan(d, vec3(0.0))) * ivec3(equal(f, o));
+  region = clamp(region, ivec3(-1), top);
+  ivec3 stepDir = ivec3(sign(d));
+  float t = 0.0;
+  float tau = 0.0;
+  for (int i = 0; i < detailMaxCells; ++i)
+  {
+    ivec3 plane = region + ivec3(greaterThan(d, vec3(0.0)));
+    bvec3 valid = bvec3(ivec3(notEqual(d, vec3(0.0))) * ivec3(greaterThanEqual(plane, ivec3(0))) *
+      ivec3(lessThanEqual(plane, top)));
+    vec3 tPlane = mix(vec3(1e30), (vec3(plane) - o) / d, valid);
+    float tNext = max(min(min(min(tPlane.x, tPlane.y), tPlane.z), tEnd), t);
+    if (tNext > t)
+    {
+      vec3 pa = o + t * d;
+      tau += max(tyndallDetailSegment(pa, d, tyndallDetailCell(region, pa, d), tNext - t), 0.0);
+    }
+    if (tNext >= tEnd)
+    {
+      break;
+    }
+    region += stepDir * ivec3(valid) * ivec3(lessThanEqual(tPlane, vec3(tNext)));
+    t = tNext;
+  }
+  return detailScale * tau;
+}

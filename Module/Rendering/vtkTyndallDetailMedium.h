@@ -1,0 +1,192 @@
+/**
+ * @class   vtkTyndallDetailMedium
+ * @brief   a procedural medium: a coarse shape grid times cosine noise, never voxelised
+ *
+ * When a volume's vtkParticipatingMediumProperty has a DetailNoise (a
+ * vtkCosineNoise), both of Tyndall's renderers render
+ *
+ * \f[
+ *   \sigma_t(\mathbf{p}) = \mathrm{shape}(\mathbf{p})\; s\;
+ *     \max\!\big(0, \phi(\mathbf{x}(\mathbf{p}))\big)
+ * \f]
+ *
+ * instead of the grid medium's extinction, where
+ *
+ * - shape is the *pre-classified* extinction of the grid: each voxel's
+ *   scalar goes through the transfer table once (DensityScale times the
+ *   table's extinction; NaN voxels are 0) and the results are interpolated
+ *   trilinearly, clamped at the border like the scalars
+ *   (vtkTyndallGridMedium::Sampler);
+ * - phi is the noise (vtkCosineNoise: Offset plus its waves) evaluated at the
+ *   point's *data* coordinates x(p) (the image's origin, spacing and
+ *   direction, before the vtkVolume's matrix: the detail moves with the
+ *   volume), and s is the noise's ExtinctionScale.
+ *
+ * Colour (albedo) and emission still come from the table at the
+ * interpolated scalar, as for a plain grid medium.
+ *
+ * Optical depth in closed form (OpticalDepth()). Along a ray in field index
+ * space p(t) = o + t d, within one cell of the shape grid (between the
+ * planes of consecutive samples; outside the samples, in the half cells of
+ * cell data, the clamped coordinate is constant), the trilinear shape is a
+ * cubic polynomial P(t), and the integral of P times each wave
+ * a cos(alpha + beta t) is elemental (vtkTransmittanceMapMath has the
+ * stable form). The ray is walked cell by cell (a 3-D DDA) and the cells'
+ * integrals are summed. What is clamped: each cell's integral of
+ * shape x phi is clamped at 0 before the sum, while a camera sample sees
+ * max(0, phi). The two agree exactly when the noise is non-negative
+ * everywhere (vtkCosineNoise::GetMinimumValue() >= 0); otherwise a cell
+ * whose negative lobes outweigh its positive ones adds nothing, and one
+ * with both adds less than the integral of the clamped extinction.
+ *
+ * SampleDistance() inverts the closed form (the paper's Algorithm 2): it
+ * walks the cells until the cumulative depth passes the target, then solves
+ * within that cell by safeguarded Newton iteration.
+ *
+ * Coordinates: p is in field index coordinates (vtkTyndallGridMedium), and
+ * t is a world distance when d is the field index image of a unit world
+ * direction (as both renderers use it).
+ *
+ * Internal to Tyndall::Rendering; not wrapped.
+ *
+ * @sa vtkCosineNoise vtkTyndallGridMedium
+ */
+
+#ifndef vtkTyndallDetailMedium_h
+#define vtkTyndallDetailMedium_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkTimeStamp.h"           // For vtkTimeStamp
+#include "vtkType.h"                // For vtkMTimeType
+
+#include <vector> // For std::vector
+
+class vtkCosineNoise;
+class vtkObject;
+class vtkTyndallGridMedium;
+
+class TYNDALLRENDERING_EXPORT vtkTyndallDetailMedium
+{
+public:
+  /// The most waves (directions x octaves) the GPU's shaders take.
+  static constexpr int MaximumNumberOfWaves = 256;
+
+  /// One cosine wave in field index coordinates: a cos(k . p + phase).
+  struct Wave
+  {
+    double K[3];
+    double Phase;
+    double Amplitude;
+  };
+
+  /**
+   * Reads `noise` (null: no detail, Enabled() false) over `grid`'s shape.
+   * Errors (more than MaximumNumberOfWaves waves, a non-finite wave) go
+   * through `reporter`; false on error. Work is redone only when the grid's
+   * scalars or extinction or the noise changed.
+   */
+  bool Update(const vtkTyndallGridMedium& grid, vtkCosineNoise* noise, vtkObject* reporter);
+
+  /// Whether a detail noise is set (the medium is procedural).
+  bool Enabled() const { return this->IsEnabled; }
+
+  ///@{
+  /// The waves in field index coordinates, the offset and the scale s.
+  const std::vector<Wave>& GetWaves() const { return this->Waves; }
+  double GetOffset() const { return this->Offset; }
+  double GetScale() const { return this->Scale; }
+  ///@}
+
+  ///@{
+  /**
+   * The shape: pre-classified extinction per sample (x fastest), the
+   * number of samples per axis, and its largest value.
+   */
+  const std::vector<float>& GetShape() const { return this->ShapeValues; }
+  const int* GetDimensions() const { return this->Dimensions; }
+  double GetShapeMaximum() const { return this->ShapeMaximum; }
+  ///@}
+
+  /// When the shape or the waves last changed (the GPU re-uploads on it).
+  vtkMTimeType GetTime() const { return this->Time.GetMTime(); }
+
+  ///@{
+  /// The shape, the noise and the extinction at a field index point.
+  double Shape(const double p[3]) const;
+  double Noise(const double p[3]) const;
+  double Extinction(const double p[3]) const;
+  ///@}
+
+  /**
+   * An upper bound of the extinction everywhere: shape maximum x s x the
+   * noise's maximum (Offset + the sum of the amplitudes). The majorant of
+   * delta tracking.
+   */
+  double GetMajorant() const;
+
+  /**
+   * The shortest wavelength of the waves with a non-zero amplitude, in the
+   * units of the space that `worldToIndex` (row-major 4x4, affine) maps to
+   * field index coordinates; 1e30 without waves.
+   */
+  double GetShortestWavelength(const double worldToIndex[16]) const;
+
+  /**
+   * The optical depth along p(t) = o + t d for t in [t0, t1], in closed form
+   * (see the class description; each cell's integral clamped at 0). The
+   * segment is clipped to the box [boxLow, boxHigh] of the grid medium.
+   */
+  double OpticalDepth(const double o[3], const double d[3], double t0, double t1) const;
+
+  /**
+   * Distance sampling: the t in [t0, t1] at which OpticalDepth(o, d, t0, t)
+   * reaches `target` (>= 0). Returns true and sets t when it does, false
+   * (t = t1) when the whole segment's depth is below the target (or the
+   * target is negative or NaN). A target of 0 gives t = t0.
+   */
+  bool SampleDistance(
+    const double o[3], const double d[3], double t0, double t1, double target, double& t) const;
+
+private:
+  // One cell crossed by a ray: [Ta, Tb] and the cubic shape polynomial in
+  // s = t - Ta, coefficients C[0] + C[1] s + C[2] s^2 + C[3] s^3.
+  struct Segment
+  {
+    double Ta;
+    double Tb;
+    double C[4];
+  };
+  // Calls visit(segment, p(Ta)) for each cell the clipped ray crosses, in
+  // order, while it returns true.
+  template <typename F>
+  void WalkCells(const double o[3], const double d[3], double t0, double t1, F&& visit) const;
+  // The shape polynomial of the cell `region` from pa along d.
+  void CellPolynomial(
+    const int region[3], const double pa[3], const double d[3], double c[4]) const;
+  // The integral of P(s) phi(pa + s d) for s in [0, length] (not clamped, not scaled).
+  double SegmentIntegral(
+    const double pa[3], const double d[3], const double c[4], double length) const;
+  double SolveInCell(const double pa[3], const double d[3], const double c[4], double length,
+    double goal, double whole) const;
+  void BuildShape(const vtkTyndallGridMedium& grid);
+  class RayWaves;
+  double ShapeAt(int i, int j, int k) const;
+  void Corners(const int cell[3], double v[8]) const;
+
+  bool IsEnabled = false;
+  std::vector<Wave> Waves;
+  double Offset = 0.0;
+  double Scale = 1.0;
+  double NoiseMaximum = 0.0;
+  std::vector<float> ShapeValues;
+  int Dimensions[3] = { 2, 2, 2 };
+  double BoxLow[3] = { 0.0, 0.0, 0.0 };
+  double BoxHigh[3] = { 1.0, 1.0, 1.0 };
+  double ShapeMaximum = 0.0;
+  double Density = 1.0;
+  vtkTimeStamp Time;
+  vtkMTimeType SourceTime = 0;
+  vtkMTimeType NoiseTime = 0;
+};
+
+#endif

@@ -1,0 +1,886 @@
+#include "vtkVolumetricPathTracer.h"
+
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransmittanceMapMath.h"
+#include "vtkTyndallSceneReader.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkVolumetricPathTracer);
+
+class vtkVolumetricPathTracer::vtkInternals
+{
+public:
+  vtkTyndallSceneReader Scene;
+};
+
+namespace
+{
+constexpr int kMaxImageSize = 16384;
+// The most tentative collisions delta tracking may expect across the box.
+constexpr double kMaxStepsPerRay = 1.0e7;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Russian roulette: paths whose largest throughput channel falls below this.
+constexpr double kRouletteThreshold = 0.25;
+// Ratio tracking: Russian roulette (survival 1/2) below this transmittance.
+constexpr double kRatioRouletteThreshold = 0.1;
+
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point a, Clock::time_point b)
+{
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// Clips [t0, t1] of the ray o + t d to the box [lo, hi]; false if empty.
+// (The same as vtkSingleScatteringReference's.)
+bool ClipToBox(const double o[3], const double d[3], const double lo[3], const double hi[3],
+  double& t0, double& t1)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (d[a] == 0.0)
+    {
+      if (o[a] < lo[a] || o[a] > hi[a])
+      {
+        return false;
+      }
+      continue;
+    }
+    const double inv = 1.0 / d[a];
+    double ta = (lo[a] - o[a]) * inv;
+    double tb = (hi[a] - o[a]) * inv;
+    if (ta > tb)
+    {
+      std::swap(ta, tb);
+    }
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 < t1;
+}
+
+// xoshiro256+ seeded by SplitMix64: one per pixel.
+class Random
+{
+public:
+  Random(std::uint64_t seed, std::uint64_t stream)
+  {
+    std::uint64_t x = seed * 0x9E3779B97F4A7C15ull + stream * 0xD1B54A32D192ED03ull + 1;
+    for (std::uint64_t& word : this->State)
+    {
+      x += 0x9E3779B97F4A7C15ull;
+      std::uint64_t z = x;
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+      word = z ^ (z >> 31);
+    }
+  }
+  /// Uniform in [0, 1).
+  double Uniform()
+  {
+    std::uint64_t* s = this->State;
+    const std::uint64_t result = s[0] + s[3];
+    const std::uint64_t t = s[1] << 17;
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = (s[3] << 45) | (s[3] >> 19);
+    return static_cast<double>(result >> 11) * 0x1.0p-53;
+  }
+  /// An exponential variate of unit mean, -ln(1 - xi).
+  double Exponential() { return -std::log1p(-this->Uniform()); }
+
+private:
+  std::uint64_t State[4];
+};
+
+struct LightSource
+{
+  bool Positional = false;
+  double ToLight[3] = { 0.0, 0.0, 1.0 };        // directional: unit, world
+  double ToLightIndex[3] = { 0.0, 0.0, 1.0 };   // the same in index space
+  double Position[3] = { 0.0, 0.0, 0.0 };       // positional, world
+  double SpotDirection[3] = { 0.0, 0.0, -1.0 }; // from the light to its focal point
+  bool Spot = false;
+  double CosCone = -1.0;
+  double Exponent = 0.0;
+  double Attenuation[3] = { 1.0, 0.0, 0.0 };
+  double E[3] = { 0.0, 0.0, 0.0 };
+};
+
+// Per-thread time accumulators (seconds).
+struct Timing
+{
+  double Tracking = 0.0;
+  double Total = 0.0;
+};
+
+// Everything the rendering loop reads.
+struct Scene
+{
+  int Width = 1;
+  int Height = 1;
+  double InverseProjection[16];
+  double A[3][3]; // world -> field index: A x + B
+  double B[3];
+  double BoxLow[3];
+  double BoxHigh[3];
+  double DensityScale = 1.0;
+  bool SingleScattering = true;
+  double G = 0.0;
+  double Ambient = 0.0;
+  double EmissionScale = 0.0;
+  bool HasEmission = false;
+  std::vector<LightSource> Lights;
+  const vtkTyndallTransferTable* Table = nullptr;
+  const vtkTyndallDetailMedium* Detail = nullptr; // null: the grid's extinction
+  bool ClosedForm = false;
+  double Majorant = 0.0;
+  int Samples = 1;
+  int MaxBounces = 1;
+  std::uint64_t Seed = 1;
+  double* Radiance = nullptr;
+  double* Transmittance = nullptr;
+  double* StandardError = nullptr;
+
+  void ToIndexDirection(const double w[3], double d[3]) const
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      d[r] = this->A[r][0] * w[0] + this->A[r][1] * w[1] + this->A[r][2] * w[2];
+    }
+  }
+  void ToIndexPoint(const double x[3], double p[3]) const
+  {
+    this->ToIndexDirection(x, p);
+    for (int r = 0; r < 3; ++r)
+    {
+      p[r] += this->B[r];
+    }
+  }
+};
+
+// A ray in world (origin X, unit direction W) and field index (O, D)
+// coordinates, with its parameter range [T0, T1] (world distances).
+struct Ray
+{
+  double X[3];
+  double W[3];
+  double O[3];
+  double D[3];
+  double T0 = 0.0;
+  double T1 = kInfinity;
+
+  // Sets the index-space twin and clips to the box; false if it misses it.
+  bool Clip(const Scene& s)
+  {
+    s.ToIndexPoint(this->X, this->O);
+    s.ToIndexDirection(this->W, this->D);
+    return ClipToBox(this->O, this->D, s.BoxLow, s.BoxHigh, this->T0, this->T1);
+  }
+};
+
+// The camera ray of pixel (i, j), near plane to far plane, as the reference
+// unprojects it; false for a degenerate ray.
+bool CameraRay(const Scene& s, int i, int j, Ray& ray)
+{
+  const double ndc[2] = { 2.0 * (i + 0.5) / s.Width - 1.0, 2.0 * (j + 0.5) / s.Height - 1.0 };
+  double ends[2][3];
+  for (int e = 0; e < 2; ++e)
+  {
+    const double in[4] = { ndc[0], ndc[1], e == 0 ? -1.0 : 1.0, 1.0 };
+    double out[4];
+    vtkMatrix4x4::MultiplyPoint(s.InverseProjection, in, out);
+    for (int c = 0; c < 3; ++c)
+    {
+      ends[e][c] = out[c] / out[3];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    ray.X[c] = ends[0][c];
+    ray.W[c] = ends[1][c] - ends[0][c];
+  }
+  const double length = vtkMath::Normalize(ray.W);
+  ray.T0 = 0.0;
+  ray.T1 = length;
+  return length > 0.0;
+}
+
+// Towards `light` from the world point x: the unit world direction l, its
+// index-space image dl, the attenuation and cone factor and the distance to
+// a positional light. False when the light does not reach x. (The geometry of
+// vtkSingleScatteringReference's AddLight.)
+bool LightGeometry(const Scene& s, const LightSource& light, const double x[3], double l[3],
+  double dl[3], double& factor, double& tMax)
+{
+  factor = 1.0;
+  tMax = kInfinity;
+  if (!light.Positional)
+  {
+    std::copy(light.ToLight, light.ToLight + 3, l);
+    std::copy(light.ToLightIndex, light.ToLightIndex + 3, dl);
+    return true;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    l[c] = light.Position[c] - x[c];
+  }
+  const double r = vtkMath::Normalize(l);
+  const double denominator =
+    light.Attenuation[0] + light.Attenuation[1] * r + light.Attenuation[2] * r * r;
+  if (!(r > 0.0) || !(denominator > 0.0))
+  {
+    return false;
+  }
+  factor = 1.0 / denominator;
+  if (light.Spot)
+  {
+    const double cosPhi = -vtkMath::Dot(l, light.SpotDirection);
+    if (cosPhi < light.CosCone)
+    {
+      return false;
+    }
+    factor *= std::pow(std::max(0.0, cosPhi), light.Exponent);
+  }
+  tMax = r;
+  s.ToIndexDirection(l, dl);
+  return factor > 0.0;
+}
+
+template <typename T>
+class PathTracer
+{
+public:
+  PathTracer(const Scene& scene, const vtkTyndallGridMedium& medium, vtkSMPThreadLocal<Timing>& t)
+    : S(&scene)
+    , Field(medium)
+    , Times(&t)
+  {
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    Timing& timing = this->Times->Local();
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      for (int i = 0; i < this->S->Width; ++i)
+      {
+        const auto start = Clock::now();
+        this->RenderPixel(i, static_cast<int>(j), timing);
+        timing.Total += Seconds(start, Clock::now());
+      }
+    }
+  }
+
+private:
+  const Scene* S;
+  vtkTyndallGridMedium::Sampler<T> Field;
+  vtkSMPThreadLocal<Timing>* Times;
+
+  // sigma_t at a field index point inside the box.
+  double Sigma(const double p[3]) const
+  {
+    if (this->S->Detail)
+    {
+      return this->S->Detail->Extinction(p);
+    }
+    const double v = this->Field.Scalar(p);
+    if (std::isnan(v))
+    {
+      return 0.0;
+    }
+    int k;
+    double f;
+    this->S->Table->Locate(v, k, f);
+    return this->S->DensityScale * this->S->Table->ExtinctionAt(k, f);
+  }
+
+  // Colour and emission (scaled) at a field index point; 0 for missing data.
+  void Material(const double p[3], double color[3], double emission[3]) const
+  {
+    std::fill(color, color + 3, 0.0);
+    std::fill(emission, emission + 3, 0.0);
+    const double v = this->Field.Scalar(p);
+    if (std::isnan(v))
+    {
+      return;
+    }
+    int k;
+    double f;
+    this->S->Table->Locate(v, k, f);
+    vtkTyndallTransferTable::RGBAt(this->S->Table->Albedo, k, f, color);
+    if (this->S->HasEmission && this->S->SingleScattering)
+    {
+      vtkTyndallTransferTable::RGBAt(this->S->Table->Emission, k, f, emission);
+      for (int c = 0; c < 3; ++c)
+      {
+        emission[c] *= this->S->EmissionScale;
+      }
+    }
+  }
+
+  // A free flight along the clipped ray: true and t at a real collision,
+  // false when the ray leaves [T0, T1] first.
+  bool FreeFlight(const Ray& ray, Random& rng, double& t, Timing& timing) const
+  {
+    const auto start = Clock::now();
+    bool hit;
+    if (this->S->ClosedForm)
+    {
+      hit = this->S->Detail->SampleDistance(ray.O, ray.D, ray.T0, ray.T1, rng.Exponential(), t);
+    }
+    else
+    {
+      hit = this->DeltaTrack(ray, rng, t);
+    }
+    timing.Tracking += Seconds(start, Clock::now());
+    return hit;
+  }
+
+  bool DeltaTrack(const Ray& ray, Random& rng, double& t) const
+  {
+    const double majorant = this->S->Majorant;
+    if (!(majorant > 0.0))
+    {
+      return false;
+    }
+    t = ray.T0;
+    for (;;)
+    {
+      t += rng.Exponential() / majorant;
+      if (t >= ray.T1)
+      {
+        return false;
+      }
+      const double p[3] = { ray.O[0] + t * ray.D[0], ray.O[1] + t * ray.D[1],
+        ray.O[2] + t * ray.D[2] };
+      if (rng.Uniform() * majorant < this->Sigma(p))
+      {
+        return true;
+      }
+    }
+  }
+
+  // T_l from p along dl (index image of a unit world direction) to the box's
+  // exit or the world distance tMax.
+  double LightTransmittance(
+    const double p[3], const double dl[3], double tMax, Random& rng, Timing& timing) const
+  {
+    const auto start = Clock::now();
+    double t0 = 0.0, t1 = tMax;
+    double transmittance = 1.0;
+    if (ClipToBox(p, dl, this->S->BoxLow, this->S->BoxHigh, t0, t1))
+    {
+      transmittance = this->S->ClosedForm ? std::exp(-this->S->Detail->OpticalDepth(p, dl, t0, t1))
+                                          : this->RatioTrack(p, dl, t0, t1, rng);
+    }
+    timing.Tracking += Seconds(start, Clock::now());
+    return transmittance;
+  }
+
+  double RatioTrack(const double p[3], const double d[3], double t, double t1, Random& rng) const
+  {
+    const double majorant = this->S->Majorant;
+    double transmittance = 1.0;
+    if (!(majorant > 0.0))
+    {
+      return transmittance;
+    }
+    for (;;)
+    {
+      t += rng.Exponential() / majorant;
+      if (t >= t1)
+      {
+        return transmittance;
+      }
+      const double q[3] = { p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2] };
+      transmittance *= std::max(0.0, 1.0 - this->Sigma(q) / majorant);
+      if (transmittance < kRatioRouletteThreshold)
+      {
+        if (transmittance <= 0.0 || rng.Uniform() < 0.5)
+        {
+          return 0.0;
+        }
+        transmittance *= 2.0;
+      }
+    }
+  }
+
+  // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision at the
+  // world point x (index point p) reached along w.
+  void Source(const double x[3], const double p[3], const double w[3], const double color[3],
+    const double emission[3], Random& rng, Timing& timing, double J[3]) const
+  {
+    const Scene& s = *this->S;
+    double in[3] = { s.Ambient, s.Ambient, s.Ambient };
+    if (color[0] != 0.0 || color[1] != 0.0 || color[2] != 0.0)
+    {
+      for (const LightSource& light : s.Lights)
+      {
+        double l[3], dl[3], factor, tMax;
+        if (!LightGeometry(s, light, x, l, dl, factor, tMax))
+        {
+          continue;
+        }
+        const double weight = factor *
+          vtkTransmittanceMapMath::HenyeyGreenstein(s.G, vtkMath::Dot(l, w)) *
+          this->LightTransmittance(p, dl, tMax, rng, timing);
+        for (int c = 0; c < 3; ++c)
+        {
+          in[c] += light.E[c] * weight;
+        }
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] = color[c] * in[c] + emission[c];
+    }
+  }
+
+  // Russian roulette on the throughput; false when the path ends.
+  static bool Survive(double beta[3], Random& rng)
+  {
+    const double q = std::max({ beta[0], beta[1], beta[2] });
+    if (!(q > 0.0))
+    {
+      return false;
+    }
+    if (q >= kRouletteThreshold)
+    {
+      return true;
+    }
+    if (rng.Uniform() >= q)
+    {
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      beta[c] /= q;
+    }
+    return true;
+  }
+
+  // One path from the camera ray; adds its radiance to L. Returns whether the
+  // first free flight left the medium.
+  bool TracePath(Ray ray, Random& rng, Timing& timing, double L[3]) const
+  {
+    const Scene& s = *this->S;
+    double beta[3] = { 1.0, 1.0, 1.0 };
+    for (int bounce = 0;; ++bounce)
+    {
+      double t;
+      if (!ray.Clip(s) || !this->FreeFlight(ray, rng, t, timing))
+      {
+        return bounce == 0;
+      }
+      const double x[3] = { ray.X[0] + t * ray.W[0], ray.X[1] + t * ray.W[1],
+        ray.X[2] + t * ray.W[2] };
+      const double p[3] = { ray.O[0] + t * ray.D[0], ray.O[1] + t * ray.D[1],
+        ray.O[2] + t * ray.D[2] };
+      double color[3], emission[3], J[3];
+      this->Material(p, color, emission);
+      if (!s.SingleScattering)
+      {
+        std::copy(color, color + 3, J);
+      }
+      else
+      {
+        this->Source(x, p, ray.W, color, emission, rng, timing, J);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        L[c] += beta[c] * J[c];
+        beta[c] *= color[c];
+      }
+      if (!s.SingleScattering || bounce + 1 >= s.MaxBounces || !Survive(beta, rng))
+      {
+        return false;
+      }
+      std::copy(x, x + 3, ray.X);
+      const double w[3] = { ray.W[0], ray.W[1], ray.W[2] };
+      const double u1 = rng.Uniform();
+      vtkVolumetricPathTracer::SampleHenyeyGreenstein(s.G, w, u1, rng.Uniform(), ray.W);
+      ray.T0 = 0.0;
+      ray.T1 = kInfinity;
+    }
+  }
+
+  // The exact view transmittance of the camera ray (closed form only).
+  double ViewTransmittance(Ray ray, Timing& timing) const
+  {
+    const auto start = Clock::now();
+    const double tv = ray.Clip(*this->S)
+      ? std::exp(-this->S->Detail->OpticalDepth(ray.O, ray.D, ray.T0, ray.T1))
+      : 1.0;
+    timing.Tracking += Seconds(start, Clock::now());
+    return tv;
+  }
+
+  void RenderPixel(int i, int j, Timing& timing) const
+  {
+    const Scene& s = *this->S;
+    const vtkIdType pixel = static_cast<vtkIdType>(j) * s.Width + i;
+    double sum[3] = { 0.0, 0.0, 0.0 }, squares[3] = { 0.0, 0.0, 0.0 };
+    int escapes = s.Samples;
+    Ray camera;
+    const bool valid = CameraRay(s, i, j, camera);
+    if (valid)
+    {
+      Random rng(s.Seed, static_cast<std::uint64_t>(pixel));
+      escapes = 0;
+      for (int n = 0; n < s.Samples; ++n)
+      {
+        double L[3] = { 0.0, 0.0, 0.0 };
+        escapes += this->TracePath(camera, rng, timing, L) ? 1 : 0;
+        for (int c = 0; c < 3; ++c)
+        {
+          sum[c] += L[c];
+          squares[c] += L[c] * L[c];
+        }
+      }
+    }
+    const double n = s.Samples;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double mean = sum[c] / n;
+      const double variance = n > 1 ? std::max(0.0, squares[c] - n * mean * mean) / (n - 1) : 0.0;
+      s.Radiance[3 * pixel + c] = mean;
+      s.StandardError[3 * pixel + c] = std::sqrt(variance / n);
+    }
+    s.Transmittance[pixel] =
+      (valid && s.ClosedForm) ? this->ViewTransmittance(camera, timing) : escapes / n;
+  }
+};
+
+template <typename T>
+void RenderRows(const Scene& scene, const vtkTyndallGridMedium& medium,
+  vtkSMPThreadLocal<Timing>& timing, vtkIdType begin, vtkIdType end)
+{
+  PathTracer<T> tracer(scene, medium, timing);
+  vtkSMPTools::For(begin, end, 1, tracer);
+}
+
+// The medium's placement and parameters. (As vtkSingleScatteringReference's.)
+void SetUpMedium(const vtkTyndallGridMedium& medium, Scene& scene)
+{
+  const double* worldToIndex = medium.GetWorldToIndex();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      scene.A[r][c] = worldToIndex[4 * r + c];
+    }
+    scene.B[r] = worldToIndex[4 * r + 3];
+    scene.BoxLow[r] = medium.GetBoxLow()[r];
+    scene.BoxHigh[r] = medium.GetBoxHigh()[r];
+  }
+  scene.DensityScale = medium.GetDensityScale();
+  scene.SingleScattering = medium.GetSingleScattering();
+  scene.G = medium.GetScatteringAnisotropy();
+  scene.Ambient = medium.GetAmbientIntensity();
+  scene.EmissionScale = medium.GetEmissionScale();
+  scene.HasEmission = medium.GetHasEmission();
+  scene.Table = &medium.GetTable();
+}
+
+// The scene's lights. (As vtkSingleScatteringReference's.)
+void SetUpLights(const vtkTyndallSceneReader& tyndall, Scene& scene)
+{
+  for (const vtkTyndallLight& light : tyndall.GetLights())
+  {
+    LightSource source;
+    std::copy(light.Irradiance, light.Irradiance + 3, source.E);
+    source.Positional = light.Positional;
+    source.Spot = light.Spot;
+    source.CosCone = light.ConeCosine;
+    source.Exponent = light.Exponent;
+    std::copy(light.Position, light.Position + 3, source.Position);
+    std::copy(light.Attenuation, light.Attenuation + 3, source.Attenuation);
+    std::copy(light.Direction, light.Direction + 3, source.SpotDirection);
+    for (int c = 0; c < 3; ++c)
+    {
+      source.ToLight[c] = -light.Direction[c];
+    }
+    scene.ToIndexDirection(source.ToLight, source.ToLightIndex);
+    scene.Lights.push_back(source);
+  }
+}
+
+// The majorant of delta tracking (per world unit).
+double GridMajorant(const vtkTyndallGridMedium& medium)
+{
+  const std::vector<double>& extinction = medium.GetTable().Extinction;
+  const double largest =
+    extinction.empty() ? 0.0 : *std::max_element(extinction.begin(), extinction.end());
+  return medium.GetDensityScale() * largest;
+}
+
+vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkVolumetricPathTracer::vtkVolumetricPathTracer()
+  : Internals(new vtkInternals)
+{
+  this->Output = vtkImageData::New();
+  this->CompositeOutput = vtkImageData::New();
+}
+
+//------------------------------------------------------------------------------
+vtkVolumetricPathTracer::~vtkVolumetricPathTracer()
+{
+  this->Output->Delete();
+  this->CompositeOutput->Delete();
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkVolumetricPathTracer::GetOutput()
+{
+  return this->Output;
+}
+
+//------------------------------------------------------------------------------
+void vtkVolumetricPathTracer::UpdateProgress(double progress)
+{
+  this->Progress = progress;
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+}
+
+//------------------------------------------------------------------------------
+void vtkVolumetricPathTracer::SampleHenyeyGreenstein(
+  double g, const double w[3], double u1, double u2, double out[3])
+{
+  g = std::isnan(g) ? 0.0 : std::min(std::max(g, -0.99), 0.99);
+  double mu;
+  if (std::abs(g) < 1.0e-5)
+  {
+    mu = 1.0 - 2.0 * u1;
+  }
+  else
+  {
+    const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * u1);
+    mu = (1.0 + g * g - s * s) / (2.0 * g);
+  }
+  mu = std::min(1.0, std::max(-1.0, mu));
+  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+  const double phi = 2.0 * vtkMath::Pi() * u2;
+  // An orthonormal basis (u, v, w) (Duff et al. 2017).
+  const double sign = std::copysign(1.0, w[2]);
+  const double a = -1.0 / (sign + w[2]);
+  const double b = w[0] * w[1] * a;
+  const double u[3] = { 1.0 + sign * w[0] * w[0] * a, sign * b, -sign * w[0] };
+  const double v[3] = { b, sign + w[1] * w[1] * a, -w[1] };
+  const double cu = sinTheta * std::cos(phi), cv = sinTheta * std::sin(phi);
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = mu * w[c] + cu * u[c] + cv * v[c];
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkVolumetricPathTracer::Render(
+  vtkRenderer* renderer, vtkVolume* volume, int width, int height)
+{
+  this->AbortExecute = false;
+  this->Progress = 0.0;
+  this->Output->Initialize();
+  this->CompositeOutput->Initialize();
+  this->InvokeEvent(vtkCommand::StartEvent);
+  const auto start = Clock::now();
+  const bool ok = this->RenderInternal(renderer, volume, width, height);
+  this->InvokeEvent(vtkCommand::EndEvent);
+  if (!ok)
+  {
+    this->Output->Initialize();
+    return nullptr;
+  }
+  this->LastRenderTime = Seconds(start, Clock::now());
+  return this->Output;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVolumetricPathTracer::RenderInternal(
+  vtkRenderer* renderer, vtkVolume* volume, int width, int height)
+{
+  if (width < 1 || width > kMaxImageSize || height < 1 || height > kMaxImageSize)
+  {
+    vtkErrorMacro(<< "Render: the image size " << width << " x " << height << " is outside [1, "
+                  << kMaxImageSize << "] on some axis.");
+    return false;
+  }
+  vtkTyndallSceneReader& tyndall = this->Internals->Scene;
+  if (!tyndall.Update(renderer, volume, this))
+  {
+    return false;
+  }
+  const vtkTyndallGridMedium& medium = tyndall.GetMedium();
+  const vtkTyndallDetailMedium& detail = tyndall.GetDetail();
+  Scene scene;
+  scene.Width = width;
+  scene.Height = height;
+  SetUpMedium(medium, scene);
+  scene.Detail = detail.Enabled() ? &detail : nullptr;
+  scene.ClosedForm = this->DistanceSampling == CLOSED_FORM && scene.Detail;
+  if (this->DistanceSampling == CLOSED_FORM && !scene.Detail)
+  {
+    vtkWarningMacro(<< "Render: CLOSED_FORM distance sampling needs a procedural medium (a "
+                       "DetailNoise); this grid medium is rendered with DELTA_TRACKING.");
+  }
+  scene.Majorant =
+    scene.ClosedForm ? 0.0 : (scene.Detail ? detail.GetMajorant() : GridMajorant(medium));
+  if (!std::isfinite(scene.Majorant) ||
+    scene.Majorant * medium.GetWorldDiagonal() > kMaxStepsPerRay)
+  {
+    vtkErrorMacro(<< "Render: delta tracking against the majorant " << scene.Majorant
+                  << " would take more than " << kMaxStepsPerRay
+                  << " steps across the volume; use CLOSED_FORM or a smaller density.");
+    return false;
+  }
+  scene.Samples = this->SamplesPerPixel;
+  scene.MaxBounces = this->MaximumBounces;
+  scene.Seed = this->Seed;
+
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(width) / height, -1.0, 1.0));
+  const double determinant = projection->Determinant();
+  if (determinant == 0.0 || !std::isfinite(determinant))
+  {
+    vtkErrorMacro(<< "Render: the camera's projection cannot be inverted.");
+    return false;
+  }
+  vtkMatrix4x4::Invert(*projection->Element, scene.InverseProjection);
+  SetUpLights(tyndall, scene);
+
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  auto radiance = NewArray("Radiance", 3, pixels);
+  auto transmittance = NewArray("Transmittance", 1, pixels);
+  auto error = NewArray("RadianceStandardError", 3, pixels);
+  scene.Radiance = radiance->GetPointer(0);
+  scene.Transmittance = transmittance->GetPointer(0);
+  scene.StandardError = error->GetPointer(0);
+
+  vtkSMPThreadLocal<Timing> timing;
+  const int batches = std::min(height, 50);
+  this->UpdateProgress(0.0);
+  for (int b = 0; b < batches && !this->AbortExecute; ++b)
+  {
+    const vtkIdType begin = static_cast<vtkIdType>(height) * b / batches;
+    const vtkIdType end = static_cast<vtkIdType>(height) * (b + 1) / batches;
+    switch (medium.GetScalars()->GetDataType())
+    {
+      vtkTemplateMacro(RenderRows<VTK_TT>(scene, medium, timing, begin, end));
+    }
+    this->UpdateProgress(static_cast<double>(b + 1) / batches);
+  }
+  if (this->AbortExecute)
+  {
+    return false;
+  }
+
+  Timing sum;
+  for (const Timing& t : timing)
+  {
+    sum.Tracking += t.Tracking;
+    sum.Total += t.Total;
+  }
+  this->LastTrackingTimePerSample = sum.Tracking / this->SamplesPerPixel;
+  this->LastTotalTimePerSample = sum.Total / this->SamplesPerPixel;
+  this->LastDistanceSampling = scene.ClosedForm ? CLOSED_FORM : DELTA_TRACKING;
+  this->LastMajorant = scene.Majorant;
+  this->Output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  this->Output->SetOrigin(0.0, 0.0, 0.0);
+  this->Output->SetSpacing(1.0, 1.0, 1.0);
+  this->Output->GetPointData()->SetScalars(radiance);
+  this->Output->GetPointData()->AddArray(transmittance);
+  this->Output->GetPointData()->AddArray(error);
+  renderer->GetBackground(this->LastBackground);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkVolumetricPathTracer::Composite()
+{
+  return this->Composite(this->LastBackground);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkVolumetricPathTracer::Composite(const double background[3])
+{
+  vtkDataArray* radiance = this->Output->GetPointData()->GetArray("Radiance");
+  vtkDataArray* transmittance = this->Output->GetPointData()->GetArray("Transmittance");
+  this->CompositeOutput->Initialize();
+  if (!radiance || !transmittance || !background)
+  {
+    vtkErrorMacro(<< "Composite: there is no rendered image (call Render() first) or the "
+                     "background is null.");
+    return nullptr;
+  }
+  const vtkIdType pixels = transmittance->GetNumberOfTuples();
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(pixels);
+  for (vtkIdType i = 0; i < pixels; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = radiance->GetComponent(i, c) + transmittance->GetTuple1(i) * background[c];
+      rgb->SetValue(3 * i + c,
+        static_cast<unsigned char>(std::floor(std::min(1.0, std::max(0.0, v)) * 255.0 + 0.5)));
+    }
+  }
+  this->CompositeOutput->SetExtent(this->Output->GetExtent());
+  this->CompositeOutput->GetPointData()->SetScalars(rgb);
+  return this->CompositeOutput;
+}
+
+//------------------------------------------------------------------------------
+void vtkVolumetricPathTracer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DistanceSampling: "
+     << (this->DistanceSampling == CLOSED_FORM ? "CLOSED_FORM" : "DELTA_TRACKING") << "\n";
+  os << indent << "SamplesPerPixel: " << this->SamplesPerPixel << "\n";
+  os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "AbortExecute: " << (this->AbortExecute ? "On" : "Off") << "\n";
+  os << indent << "Progress: " << this->Progress << "\n";
+  os << indent << "LastDistanceSampling: " << this->LastDistanceSampling << "\n";
+  os << indent << "LastMajorant: " << this->LastMajorant << "\n";
+  os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
+  os << indent << "LastTrackingTimePerSample: " << this->LastTrackingTimePerSample << "\n";
+  os << indent << "LastTotalTimePerSample: " << this->LastTotalTimePerSample << "\n";
+  os << indent << "LastBackground: (" << this->LastBackground[0] << ", " << this->LastBackground[1]
+     << ", " << this->LastBackground[2] << ")\n";
+}
