@@ -1,22 +1,18 @@
 #include "vtkVolumetricPathTracer.h"
 
-#include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
-#include "vtkTransmittanceMapMath.h"
+#include "vtkTyndallReferenceScene.h"
 #include "vtkTyndallSceneReader.h"
-#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
@@ -35,7 +31,6 @@ public:
 
 namespace
 {
-constexpr int kMaxImageSize = 16384;
 // The most tentative collisions delta tracking may expect across the box.
 constexpr double kMaxStepsPerRay = 1.0e7;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -49,34 +44,6 @@ using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point a, Clock::time_point b)
 {
   return std::chrono::duration<double>(b - a).count();
-}
-
-// Clips [t0, t1] of the ray o + t d to the box [lo, hi]; false if empty.
-// (The same as vtkSingleScatteringReference's.)
-bool ClipToBox(const double o[3], const double d[3], const double lo[3], const double hi[3],
-  double& t0, double& t1)
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    if (d[a] == 0.0)
-    {
-      if (o[a] < lo[a] || o[a] > hi[a])
-      {
-        return false;
-      }
-      continue;
-    }
-    const double inv = 1.0 / d[a];
-    double ta = (lo[a] - o[a]) * inv;
-    double tb = (hi[a] - o[a]) * inv;
-    if (ta > tb)
-    {
-      std::swap(ta, tb);
-    }
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-  }
-  return t0 < t1;
 }
 
 // xoshiro256+ seeded by SplitMix64: one per pixel.
@@ -116,20 +83,6 @@ private:
   std::uint64_t State[4];
 };
 
-struct LightSource
-{
-  bool Positional = false;
-  double ToLight[3] = { 0.0, 0.0, 1.0 };        // directional: unit, world
-  double ToLightIndex[3] = { 0.0, 0.0, 1.0 };   // the same in index space
-  double Position[3] = { 0.0, 0.0, 0.0 };       // positional, world
-  double SpotDirection[3] = { 0.0, 0.0, -1.0 }; // from the light to its focal point
-  bool Spot = false;
-  double CosCone = -1.0;
-  double Exponent = 0.0;
-  double Attenuation[3] = { 1.0, 0.0, 0.0 };
-  double E[3] = { 0.0, 0.0, 0.0 };
-};
-
 // Per-thread time accumulators (seconds).
 struct Timing
 {
@@ -138,48 +91,14 @@ struct Timing
 };
 
 // Everything the rendering loop reads.
-struct Scene
+struct Scene : public vtkTyndallReferenceScene
 {
-  int Width = 1;
-  int Height = 1;
-  double InverseProjection[16];
-  double A[3][3]; // world -> field index: A x + B
-  double B[3];
-  double BoxLow[3];
-  double BoxHigh[3];
-  double DensityScale = 1.0;
-  bool SingleScattering = true;
-  double G = 0.0;
-  double Ambient = 0.0;
-  double EmissionScale = 0.0;
-  bool HasEmission = false;
-  std::vector<LightSource> Lights;
-  const vtkTyndallTransferTable* Table = nullptr;
-  const vtkTyndallDetailMedium* Detail = nullptr; // null: the grid's extinction
   bool ClosedForm = false;
   double Majorant = 0.0;
   int Samples = 1;
   int MaxBounces = 1;
   std::uint64_t Seed = 1;
-  double* Radiance = nullptr;
-  double* Transmittance = nullptr;
   double* StandardError = nullptr;
-
-  void ToIndexDirection(const double w[3], double d[3]) const
-  {
-    for (int r = 0; r < 3; ++r)
-    {
-      d[r] = this->A[r][0] * w[0] + this->A[r][1] * w[1] + this->A[r][2] * w[2];
-    }
-  }
-  void ToIndexPoint(const double x[3], double p[3]) const
-  {
-    this->ToIndexDirection(x, p);
-    for (int r = 0; r < 3; ++r)
-    {
-      p[r] += this->B[r];
-    }
-  }
 };
 
 // A ray in world (origin X, unit direction W) and field index (O, D)
@@ -198,77 +117,9 @@ struct Ray
   {
     s.ToIndexPoint(this->X, this->O);
     s.ToIndexDirection(this->W, this->D);
-    return ClipToBox(this->O, this->D, s.BoxLow, s.BoxHigh, this->T0, this->T1);
+    return Scene::ClipToBox(this->O, this->D, s.BoxLow, s.BoxHigh, this->T0, this->T1);
   }
 };
-
-// The camera ray of pixel (i, j), near plane to far plane, as the reference
-// unprojects it; false for a degenerate ray.
-bool CameraRay(const Scene& s, int i, int j, Ray& ray)
-{
-  const double ndc[2] = { 2.0 * (i + 0.5) / s.Width - 1.0, 2.0 * (j + 0.5) / s.Height - 1.0 };
-  double ends[2][3];
-  for (int e = 0; e < 2; ++e)
-  {
-    const double in[4] = { ndc[0], ndc[1], e == 0 ? -1.0 : 1.0, 1.0 };
-    double out[4];
-    vtkMatrix4x4::MultiplyPoint(s.InverseProjection, in, out);
-    for (int c = 0; c < 3; ++c)
-    {
-      ends[e][c] = out[c] / out[3];
-    }
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    ray.X[c] = ends[0][c];
-    ray.W[c] = ends[1][c] - ends[0][c];
-  }
-  const double length = vtkMath::Normalize(ray.W);
-  ray.T0 = 0.0;
-  ray.T1 = length;
-  return length > 0.0;
-}
-
-// Towards `light` from the world point x: the unit world direction l, its
-// index-space image dl, the attenuation and cone factor and the distance to
-// a positional light. False when the light does not reach x. (The geometry of
-// vtkSingleScatteringReference's AddLight.)
-bool LightGeometry(const Scene& s, const LightSource& light, const double x[3], double l[3],
-  double dl[3], double& factor, double& tMax)
-{
-  factor = 1.0;
-  tMax = kInfinity;
-  if (!light.Positional)
-  {
-    std::copy(light.ToLight, light.ToLight + 3, l);
-    std::copy(light.ToLightIndex, light.ToLightIndex + 3, dl);
-    return true;
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    l[c] = light.Position[c] - x[c];
-  }
-  const double r = vtkMath::Normalize(l);
-  const double denominator =
-    light.Attenuation[0] + light.Attenuation[1] * r + light.Attenuation[2] * r * r;
-  if (!(r > 0.0) || !(denominator > 0.0))
-  {
-    return false;
-  }
-  factor = 1.0 / denominator;
-  if (light.Spot)
-  {
-    const double cosPhi = -vtkMath::Dot(l, light.SpotDirection);
-    if (cosPhi < light.CosCone)
-    {
-      return false;
-    }
-    factor *= std::pow(std::max(0.0, cosPhi), light.Exponent);
-  }
-  tMax = r;
-  s.ToIndexDirection(l, dl);
-  return factor > 0.0;
-}
 
 template <typename T>
 class PathTracer
@@ -392,7 +243,7 @@ private:
     const auto start = Clock::now();
     double t0 = 0.0, t1 = tMax;
     double transmittance = 1.0;
-    if (ClipToBox(p, dl, this->S->BoxLow, this->S->BoxHigh, t0, t1))
+    if (Scene::ClipToBox(p, dl, this->S->BoxLow, this->S->BoxHigh, t0, t1))
     {
       transmittance = this->S->ClosedForm ? std::exp(-this->S->Detail->OpticalDepth(p, dl, t0, t1))
                                           : this->RatioTrack(p, dl, t0, t1, rng);
@@ -438,21 +289,11 @@ private:
     double in[3] = { s.Ambient, s.Ambient, s.Ambient };
     if (color[0] != 0.0 || color[1] != 0.0 || color[2] != 0.0)
     {
-      for (const LightSource& light : s.Lights)
-      {
-        double l[3], dl[3], factor, tMax;
-        if (!LightGeometry(s, light, x, l, dl, factor, tMax))
-        {
-          continue;
-        }
-        const double weight = factor *
-          vtkTransmittanceMapMath::HenyeyGreenstein(s.G, vtkMath::Dot(l, w)) *
-          this->LightTransmittance(p, dl, tMax, rng, timing);
-        for (int c = 0; c < 3; ++c)
-        {
-          in[c] += light.E[c] * weight;
-        }
-      }
+      s.AddInScattering(
+        x, w,
+        [&](const double dl[3], double tMax)
+        { return this->LightTransmittance(p, dl, tMax, rng, timing); },
+        in);
     }
     for (int c = 0; c < 3; ++c)
     {
@@ -546,7 +387,7 @@ private:
     double sum[3] = { 0.0, 0.0, 0.0 }, squares[3] = { 0.0, 0.0, 0.0 };
     int escapes = s.Samples;
     Ray camera;
-    const bool valid = CameraRay(s, i, j, camera);
+    const bool valid = s.CameraRay(i, j, camera.X, camera.W, camera.T1);
     if (valid)
     {
       Random rng(s.Seed, static_cast<std::uint64_t>(pixel));
@@ -581,52 +422,6 @@ void RenderRows(const Scene& scene, const vtkTyndallGridMedium& medium,
 {
   PathTracer<T> tracer(scene, medium, timing);
   vtkSMPTools::For(begin, end, 1, tracer);
-}
-
-// The medium's placement and parameters. (As vtkSingleScatteringReference's.)
-void SetUpMedium(const vtkTyndallGridMedium& medium, Scene& scene)
-{
-  const double* worldToIndex = medium.GetWorldToIndex();
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      scene.A[r][c] = worldToIndex[4 * r + c];
-    }
-    scene.B[r] = worldToIndex[4 * r + 3];
-    scene.BoxLow[r] = medium.GetBoxLow()[r];
-    scene.BoxHigh[r] = medium.GetBoxHigh()[r];
-  }
-  scene.DensityScale = medium.GetDensityScale();
-  scene.SingleScattering = medium.GetSingleScattering();
-  scene.G = medium.GetScatteringAnisotropy();
-  scene.Ambient = medium.GetAmbientIntensity();
-  scene.EmissionScale = medium.GetEmissionScale();
-  scene.HasEmission = medium.GetHasEmission();
-  scene.Table = &medium.GetTable();
-}
-
-// The scene's lights. (As vtkSingleScatteringReference's.)
-void SetUpLights(const vtkTyndallSceneReader& tyndall, Scene& scene)
-{
-  for (const vtkTyndallLight& light : tyndall.GetLights())
-  {
-    LightSource source;
-    std::copy(light.Irradiance, light.Irradiance + 3, source.E);
-    source.Positional = light.Positional;
-    source.Spot = light.Spot;
-    source.CosCone = light.ConeCosine;
-    source.Exponent = light.Exponent;
-    std::copy(light.Position, light.Position + 3, source.Position);
-    std::copy(light.Attenuation, light.Attenuation + 3, source.Attenuation);
-    std::copy(light.Direction, light.Direction + 3, source.SpotDirection);
-    for (int c = 0; c < 3; ++c)
-    {
-      source.ToLight[c] = -light.Direction[c];
-    }
-    scene.ToIndexDirection(source.ToLight, source.ToLightIndex);
-    scene.Lights.push_back(source);
-  }
 }
 
 // The majorant of delta tracking (per world unit).
@@ -713,74 +508,63 @@ vtkImageData* vtkVolumetricPathTracer::Render(
 {
   this->AbortExecute = false;
   this->Progress = 0.0;
-  this->Output->Initialize();
-  this->CompositeOutput->Initialize();
-  this->InvokeEvent(vtkCommand::StartEvent);
-  const auto start = Clock::now();
-  const bool ok = this->RenderInternal(renderer, volume, width, height);
-  this->InvokeEvent(vtkCommand::EndEvent);
-  if (!ok)
+  return vtkTyndallReferenceScene::TimedRender(
+    this, this->Output, this->CompositeOutput,
+    [&] { return this->RenderInternal(renderer, volume, width, height); }, this->LastRenderTime);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The distance sampling actually used and the majorant of delta tracking;
+// false (with an error through `reporter`) when delta tracking would take
+// too many steps.
+bool SetUpSampling(
+  const vtkTyndallSceneReader& tyndall, int mode, Scene& scene, vtkObject* reporter)
+{
+  const bool closedForm = mode == vtkVolumetricPathTracer::CLOSED_FORM;
+  scene.ClosedForm = closedForm && scene.Detail;
+  if (closedForm && !scene.Detail)
   {
-    this->Output->Initialize();
-    return nullptr;
+    vtkWarningWithObjectMacro(
+      reporter, << "Render: CLOSED_FORM distance sampling needs a procedural medium (a "
+                   "DetailNoise); this grid medium is rendered with DELTA_TRACKING.");
   }
-  this->LastRenderTime = Seconds(start, Clock::now());
-  return this->Output;
+  const vtkTyndallGridMedium& medium = tyndall.GetMedium();
+  scene.Majorant =
+    scene.ClosedForm ? 0.0 : (scene.Detail ? scene.Detail->GetMajorant() : GridMajorant(medium));
+  if (!std::isfinite(scene.Majorant) ||
+    scene.Majorant * medium.GetWorldDiagonal() > kMaxStepsPerRay)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: delta tracking against the majorant "
+                                      << scene.Majorant << " would take more than "
+                                      << kMaxStepsPerRay
+                                      << " steps across the volume; use CLOSED_FORM or a smaller "
+                                         "density.");
+    return false;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
 bool vtkVolumetricPathTracer::RenderInternal(
   vtkRenderer* renderer, vtkVolume* volume, int width, int height)
 {
-  if (width < 1 || width > kMaxImageSize || height < 1 || height > kMaxImageSize)
-  {
-    vtkErrorMacro(<< "Render: the image size " << width << " x " << height << " is outside [1, "
-                  << kMaxImageSize << "] on some axis.");
-    return false;
-  }
   vtkTyndallSceneReader& tyndall = this->Internals->Scene;
-  if (!tyndall.Update(renderer, volume, this))
-  {
-    return false;
-  }
-  const vtkTyndallGridMedium& medium = tyndall.GetMedium();
-  const vtkTyndallDetailMedium& detail = tyndall.GetDetail();
   Scene scene;
-  scene.Width = width;
-  scene.Height = height;
-  SetUpMedium(medium, scene);
-  scene.Detail = detail.Enabled() ? &detail : nullptr;
-  scene.ClosedForm = this->DistanceSampling == CLOSED_FORM && scene.Detail;
-  if (this->DistanceSampling == CLOSED_FORM && !scene.Detail)
+  if (!scene.ReadScene(tyndall, renderer, volume, width, height, this) ||
+    !SetUpSampling(tyndall, this->DistanceSampling, scene, this))
   {
-    vtkWarningMacro(<< "Render: CLOSED_FORM distance sampling needs a procedural medium (a "
-                       "DetailNoise); this grid medium is rendered with DELTA_TRACKING.");
-  }
-  scene.Majorant =
-    scene.ClosedForm ? 0.0 : (scene.Detail ? detail.GetMajorant() : GridMajorant(medium));
-  if (!std::isfinite(scene.Majorant) ||
-    scene.Majorant * medium.GetWorldDiagonal() > kMaxStepsPerRay)
-  {
-    vtkErrorMacro(<< "Render: delta tracking against the majorant " << scene.Majorant
-                  << " would take more than " << kMaxStepsPerRay
-                  << " steps across the volume; use CLOSED_FORM or a smaller density.");
     return false;
   }
   scene.Samples = this->SamplesPerPixel;
   scene.MaxBounces = this->MaximumBounces;
   scene.Seed = this->Seed;
-
-  vtkNew<vtkMatrix4x4> projection;
-  projection->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    static_cast<double>(width) / height, -1.0, 1.0));
-  const double determinant = projection->Determinant();
-  if (determinant == 0.0 || !std::isfinite(determinant))
+  if (!scene.SetUpView(tyndall, renderer, this))
   {
-    vtkErrorMacro(<< "Render: the camera's projection cannot be inverted.");
     return false;
   }
-  vtkMatrix4x4::Invert(*projection->Element, scene.InverseProjection);
-  SetUpLights(tyndall, scene);
 
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
   auto radiance = NewArray("Radiance", 3, pixels);
@@ -790,20 +574,17 @@ bool vtkVolumetricPathTracer::RenderInternal(
   scene.Transmittance = transmittance->GetPointer(0);
   scene.StandardError = error->GetPointer(0);
 
+  const vtkTyndallGridMedium& medium = tyndall.GetMedium();
   vtkSMPThreadLocal<Timing> timing;
-  const int batches = std::min(height, 50);
-  this->UpdateProgress(0.0);
-  for (int b = 0; b < batches && !this->AbortExecute; ++b)
+  const auto rows = [&](vtkIdType begin, vtkIdType end)
   {
-    const vtkIdType begin = static_cast<vtkIdType>(height) * b / batches;
-    const vtkIdType end = static_cast<vtkIdType>(height) * (b + 1) / batches;
     switch (medium.GetScalars()->GetDataType())
     {
       vtkTemplateMacro(RenderRows<VTK_TT>(scene, medium, timing, begin, end));
     }
-    this->UpdateProgress(static_cast<double>(b + 1) / batches);
-  }
-  if (this->AbortExecute)
+  };
+  if (!scene.RenderRowBatches(
+        this->AbortExecute, [this](double progress) { this->UpdateProgress(progress); }, rows))
   {
     return false;
   }
@@ -818,12 +599,7 @@ bool vtkVolumetricPathTracer::RenderInternal(
   this->LastTotalTimePerSample = sum.Total / this->SamplesPerPixel;
   this->LastDistanceSampling = scene.ClosedForm ? CLOSED_FORM : DELTA_TRACKING;
   this->LastMajorant = scene.Majorant;
-  this->Output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
-  this->Output->SetOrigin(0.0, 0.0, 0.0);
-  this->Output->SetSpacing(1.0, 1.0, 1.0);
-  this->Output->GetPointData()->SetScalars(radiance);
-  this->Output->GetPointData()->AddArray(transmittance);
-  this->Output->GetPointData()->AddArray(error);
+  scene.SetOutput(this->Output, radiance, transmittance, error);
   renderer->GetBackground(this->LastBackground);
   return true;
 }
@@ -846,22 +622,8 @@ vtkImageData* vtkVolumetricPathTracer::Composite(const double background[3])
                      "background is null.");
     return nullptr;
   }
-  const vtkIdType pixels = transmittance->GetNumberOfTuples();
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetName("RGB");
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(pixels);
-  for (vtkIdType i = 0; i < pixels; ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double v = radiance->GetComponent(i, c) + transmittance->GetTuple1(i) * background[c];
-      rgb->SetValue(3 * i + c,
-        static_cast<unsigned char>(std::floor(std::min(1.0, std::max(0.0, v)) * 255.0 + 0.5)));
-    }
-  }
-  this->CompositeOutput->SetExtent(this->Output->GetExtent());
-  this->CompositeOutput->GetPointData()->SetScalars(rgb);
+  vtkTyndallReferenceScene::Composite(
+    this->Output, radiance, transmittance, background, this->CompositeOutput);
   return this->CompositeOutput;
 }
 
