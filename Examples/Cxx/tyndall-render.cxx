@@ -287,6 +287,12 @@ int RenderFrames(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
       std::cerr << "cached frames: " << frames - 1 << " in " << timer->GetElapsedTime() << " s, "
                 << timer->GetElapsedTime() / (frames - 1) << " s per frame (maps rebuilt "
                 << mapper->GetMapBuildCount() - builds << " times)\n";
+      if (mapper->GetAccumulatedFrames() > 0)
+      {
+        std::cerr << "sampled detail: the picture averages " << mapper->GetAccumulatedFrames()
+                  << " frames of " << mapper->GetLastDetailSamplesPerPixel()
+                  << " samples per pixel\n";
+      }
     }
   }
   return EXIT_SUCCESS;
@@ -444,8 +450,13 @@ int main(int argc, char* argv[])
               << ", " << renderer->GetLights()->GetNumberOfItems() << " light(s)"
               << (exr.empty() ? "" : ", float frame buffer") << " ...\n";
   }
-  int status =
-    RenderFrames(window, builder, errors, static_cast<int>(options->GetNumber("frames")), verbose);
+  int frames = static_cast<int>(options->GetNumber("frames"));
+  if (options->GetFlag("detail") && options->GetNumber("detail-samples") > 0)
+  {
+    // Sampled detail: the picture is the average of still frames.
+    frames = std::max(frames, static_cast<int>(options->GetNumber("detail-frames")));
+  }
+  int status = RenderFrames(window, builder, errors, frames, verbose);
   if (status == EXIT_SUCCESS)
   {
     status = WritePng(output, window, verbose);

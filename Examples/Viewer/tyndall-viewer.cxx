@@ -1166,6 +1166,12 @@ int Viewer::Run()
     {
       this->NeedsRender = false;
       this->RenderFrame();
+      // Sampled detail: a still view keeps refining up to --detail-frames.
+      const int averaged = this->Mapper->GetAccumulatedFrames();
+      if (averaged > 0 && averaged < static_cast<int>(this->Options->GetNumber("detail-frames")))
+      {
+        this->NeedsRender = true;
+      }
       if (scripted || this->Options->GetFlag("verbose"))
       {
         this->LogFrame();

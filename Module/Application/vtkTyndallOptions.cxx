@@ -138,6 +138,13 @@ const Spec kOptions[] = {
   { "detail-contrast", "", Kind::Number, 0, 10, false, "", "C", "0.3", "Procedural detail", Both,
     "standard deviation of the noise factor, whose mean is 1 (the shape's density is kept); "
     "above about 0.3 it dips below 0 in places, where it is clamped (see the rendering model)" },
+  { "detail-samples", "", Kind::Integer, 0, 64, false, "", "N", "0", "Procedural detail", Both,
+    "0: camera rays march the detail at a quarter of its shortest wavelength; N > 0: each pixel "
+    "draws N free-flight samples in closed form instead (the paper's section 7), and still "
+    "frames are averaged (--detail-frames)" },
+  { "detail-frames", "", Kind::Integer, 1, 4096, false, "", "N", "32", "Procedural detail", Both,
+    "with --detail-samples: still frames averaged into the picture (tyndall-render renders at "
+    "least this many; the viewer keeps refining a still view up to it)" },
   { "preset", "", Kind::Text, 0, 0, false, "", "NAME", "", "Transfer function", Both,
     "a named preset (vtkTransferFunctionPresets) over the data's scalar range, unit distance = "
     "the mean voxel spacing; names ignore case, spaces, '-' and '_'. Default for data inputs: "

@@ -278,6 +278,7 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   mapper->SetEmptySpaceSkipping(!o->GetFlag("no-skip"));
   mapper->SetTransmittanceCache(!o->GetFlag("no-cache"));
   mapper->SetTransmittanceCacheSize(static_cast<int>(o->GetNumber("cache-size")));
+  mapper->SetDetailSamplesPerPixel(static_cast<int>(o->GetNumber("detail-samples")));
   medium->SetScatteringModel(o->GetChoice("model"));
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));

@@ -7,7 +7,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceFrame.h"
-#include "vtkTransmittanceScopedFramebuffer.h"
+#include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtk_glew.h"
@@ -17,6 +17,34 @@ vtkStandardNewMacro(vtkTransmittanceAccumulationPass);
 //------------------------------------------------------------------------------
 vtkTransmittanceAccumulationPass::vtkTransmittanceAccumulationPass() = default;
 vtkTransmittanceAccumulationPass::~vtkTransmittanceAccumulationPass() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceAccumulationPass::AllocateImage(const vtkTransmittanceFrame& frame,
+  vtkSmartPointer<vtkTextureObject>& image, int width, int height, vtkObject* reporter)
+{
+  if (image && image->GetContext() == frame.Window &&
+    image->GetWidth() == static_cast<unsigned int>(width) &&
+    image->GetHeight() == static_cast<unsigned int>(height))
+  {
+    return true;
+  }
+  if (image)
+  {
+    image->ReleaseGraphicsResources(frame.Window);
+  }
+  image = vtkSmartPointer<vtkTextureObject>::New();
+  image->SetContext(frame.Window);
+  image->SetWrapS(vtkTextureObject::ClampToEdge);
+  image->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (!image->Allocate2D(width, height, 4, VTK_FLOAT))
+  {
+    vtkErrorWithObjectMacro(reporter,
+      << "Could not allocate a " << width << " x " << height << " image for the camera rays.");
+    image = nullptr;
+    return false;
+  }
+  return true;
+}
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Allocate(
@@ -29,25 +57,8 @@ bool vtkTransmittanceAccumulationPass::Allocate(
   this->Framebuffer->SetContext(frame.Window);
   for (vtkSmartPointer<vtkTextureObject>& image : this->Images)
   {
-    if (image && image->GetContext() == frame.Window &&
-      image->GetWidth() == static_cast<unsigned int>(width) &&
-      image->GetHeight() == static_cast<unsigned int>(height))
+    if (!this->AllocateImage(frame, image, width, height, reporter))
     {
-      continue;
-    }
-    if (image)
-    {
-      image->ReleaseGraphicsResources(frame.Window);
-    }
-    image = vtkSmartPointer<vtkTextureObject>::New();
-    image->SetContext(frame.Window);
-    image->SetWrapS(vtkTextureObject::ClampToEdge);
-    image->SetWrapT(vtkTextureObject::ClampToEdge);
-    if (!image->Allocate2D(width, height, 4, VTK_FLOAT))
-    {
-      vtkErrorWithObjectMacro(reporter,
-        << "Could not allocate a " << width << " x " << height << " image for the camera rays.");
-      image = nullptr;
       return false;
     }
   }
@@ -55,9 +66,71 @@ bool vtkTransmittanceAccumulationPass::Allocate(
 }
 
 //------------------------------------------------------------------------------
+vtkShaderProgram* vtkTransmittanceAccumulationPass::CompositeProgram(
+  const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  vtkShaderProgram* program = this->Quad.Ready(frame.Window,
+    vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::COMPOSITE));
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The compositing shader did not compile.");
+  }
+  return program;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame& frame,
+  vtkTextureObject* image, int width, int height, int historyFrames, vtkObject* reporter)
+{
+  vtkTextureObject* old = this->History;
+  if (!this->AllocateImage(frame, this->History, width, height, reporter))
+  {
+    this->HistoryFrames = 0;
+    return false;
+  }
+  if (old != this->History.GetPointer())
+  {
+    historyFrames = 0; // a new image: nothing to average with
+  }
+  vtkShaderProgram* program = this->CompositeProgram(frame, reporter);
+  if (!program)
+  {
+    return false;
+  }
+  vtkOpenGLState* state = frame.State;
+  vtkTransmittanceOffscreenDraw offscreen(state, this->Framebuffer, width, height);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+  this->Framebuffer->AddColorAttachment(0, this->History);
+  this->Framebuffer->ActivateDrawBuffers(1);
+  // history = image / (n + 1) + history * n / (n + 1): the mean of n + 1 frames.
+  if (historyFrames > 0)
+  {
+    state->vtkglEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(historyFrames + 1));
+    state->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_CONSTANT_ALPHA,
+      GL_ONE_MINUS_CONSTANT_ALPHA);
+  }
+  else
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  image->SetMinificationFilter(vtkTextureObject::Nearest);
+  image->SetMagnificationFilter(vtkTextureObject::Nearest);
+  {
+    vtkTransmittanceScopedTextures bind({ image });
+    program->SetUniformi("accumulated", image->GetTextureUnit());
+    this->Quad.Render();
+  }
+  glBlendColor(0.0f, 0.0f, 0.0f, 0.0f); // GL's default; VTK does not track it
+  this->Framebuffer->RemoveColorAttachments(1);
+  this->HistoryFrames = historyFrames + 1;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame,
   const int viewport[4], int width, int height, int passes, const DrawFunction& draw,
-  vtkObject* reporter)
+  vtkObject* reporter, int historyFrames)
 {
   if (!this->Allocate(frame, width, height, reporter))
   {
@@ -65,14 +138,8 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   }
   vtkOpenGLState* state = frame.State;
   {
-    vtkTransmittanceScopedFramebuffer bound(state, this->Framebuffer);
-    vtkOpenGLState::ScopedglViewport savedViewport(state);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+    vtkTransmittanceOffscreenDraw offscreen(state, this->Framebuffer, width, height);
     vtkOpenGLState::ScopedglClearColor savedClear(state);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_SCISSOR_TEST); // the renderer's viewport scissor
-    state->vtkglViewport(0, 0, width, height);
     // The state before the first pass: no radiance, transmittance 1.
     this->Framebuffer->AddColorAttachment(0, this->Images[1]);
     this->Framebuffer->ActivateDrawBuffers(1);
@@ -102,18 +169,23 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
     }
   }
   const bool upscaled = width != viewport[2] || height != viewport[3];
-  return this->Composite(frame, this->Images[(passes - 1) % 2], upscaled, reporter);
+  vtkTextureObject* result = this->Images[(passes - 1) % 2];
+  if (historyFrames < 0)
+  {
+    this->HistoryFrames = 0;
+    return this->Composite(frame, result, upscaled, reporter);
+  }
+  return this->AddToHistory(frame, result, width, height, historyFrames, reporter) &&
+    this->Composite(frame, this->History, upscaled, reporter);
 }
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Composite(
   const vtkTransmittanceFrame& frame, vtkTextureObject* image, bool upscaled, vtkObject* reporter)
 {
-  vtkShaderProgram* program = this->Quad.Ready(frame.Window,
-    vtkTransmittanceShaderSource::GetFragmentShader(vtkTransmittanceShaderSource::COMPOSITE));
+  vtkShaderProgram* program = this->CompositeProgram(frame, reporter);
   if (!program)
   {
-    vtkErrorWithObjectMacro(reporter, << "The compositing shader did not compile.");
     return false;
   }
   const int filter = upscaled ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
@@ -128,14 +200,16 @@ bool vtkTransmittanceAccumulationPass::Composite(
 //------------------------------------------------------------------------------
 void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkSmartPointer<vtkTextureObject>& image : this->Images)
+  for (vtkSmartPointer<vtkTextureObject>* image :
+    { &this->Images[0], &this->Images[1], &this->History })
   {
-    if (image)
+    if (*image)
     {
-      image->ReleaseGraphicsResources(window);
+      (*image)->ReleaseGraphicsResources(window);
     }
-    image = nullptr;
+    *image = nullptr;
   }
+  this->HistoryFrames = 0;
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(window);
@@ -154,4 +228,5 @@ void vtkTransmittanceAccumulationPass::PrintSelf(ostream& os, vtkIndent indent)
               std::to_string(this->Images[0]->GetHeight())
                : std::string("none"))
      << "\n";
+  os << indent << "HistoryFrames: " << this->HistoryFrames << "\n";
 }

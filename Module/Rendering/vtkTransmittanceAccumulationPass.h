@@ -11,6 +11,13 @@
  * - a reduced image while the user interacts (interactive level of detail),
  *   upscaled with linear filtering.
  *
+ * - a running average of still frames (progressive rendering: camera rays
+ *   that draw random samples, vtkTransmittanceVolumeMapper's
+ *   DetailSamplesPerPixel): with `historyFrames` >= 0 the passes' image is
+ *   averaged into a third, persistent image holding the mean of the
+ *   `historyFrames` frames before it (blended with constant alpha 1 / (n +
+ *   1); 0 starts a new average), and that mean is what is drawn.
+ *
  * Render() clears two RGBA32F images of the reduced size to 0 and calls
  * `draw(pass, previous)` `passes` times, each drawing into one image with the
  * other bound as `previous` (the rays' state so far: premultiplied radiance
@@ -32,6 +39,7 @@
 #include <functional> // For std::function
 
 class vtkOpenGLFramebufferObject;
+class vtkShaderProgram;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
 class vtkWindow;
@@ -48,12 +56,17 @@ public:
 
   /**
    * Runs `passes` passes into width x height images and composites the
-   * result over `viewport` (x, y, width, height in window pixels). False
-   * (with an error through `reporter`) when the images or their framebuffer
-   * cannot be made.
+   * result over `viewport` (x, y, width, height in window pixels); with
+   * `historyFrames` >= 0, composites the mean of the result and the
+   * `historyFrames` results before it instead (a history of another size
+   * restarts at this frame). False (with an error through `reporter`) when
+   * the images or their framebuffer cannot be made.
    */
   bool Render(const vtkTransmittanceFrame& frame, const int viewport[4], int width, int height,
-    int passes, const DrawFunction& draw, vtkObject* reporter);
+    int passes, const DrawFunction& draw, vtkObject* reporter, int historyFrames = -1);
+
+  /// Frames in the running average after the last Render() (0: no history kept).
+  int GetHistoryFrames() const { return this->HistoryFrames; }
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -69,7 +82,16 @@ private:
   bool Composite(const vtkTransmittanceFrame& frame, vtkTextureObject* image, bool upscaled,
     vtkObject* reporter);
 
+  bool AllocateImage(const vtkTransmittanceFrame& frame, vtkSmartPointer<vtkTextureObject>& image,
+    int width, int height, vtkObject* reporter);
+  /// The texture-copy program, bound; nullptr (with an error) when it does not compile.
+  vtkShaderProgram* CompositeProgram(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+  bool AddToHistory(const vtkTransmittanceFrame& frame, vtkTextureObject* image, int width,
+    int height, int historyFrames, vtkObject* reporter);
+
   vtkSmartPointer<vtkTextureObject> Images[2];
+  vtkSmartPointer<vtkTextureObject> History;
+  int HistoryFrames = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTransmittanceShaderQuad Quad;
 };

@@ -55,15 +55,20 @@ bool vtkTransmittanceRayCastPass::Render(
   const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkObject* reporter)
 {
   this->LastPassCount = 0;
+  // Sampled detail: one pass of free flights, averaged with the frames before.
+  this->LastDetailSamples = DetailSamplesFor(frame, inputs.DetailSamples);
+  const bool sampled = this->LastDetailSamples > 0;
   const double step = frame.GetStepLength() * std::max(inputs.StepScale, 1.0);
   const int steps = static_cast<int>(std::min(kMaxSteps, frame.Diagonal / step + 2.0));
-  const int perPass = StepsPerPass(frame);
+  const int perPass = sampled ? steps : StepsPerPass(frame);
   const int passes = (steps + perPass - 1) / perPass;
   const int reduction = std::max(inputs.Reduction, 1);
-  const bool direct = passes == 1 && reduction == 1;
+  const bool direct = !sampled && passes == 1 && reduction == 1;
+  vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
+  variant.DetailSamples = this->LastDetailSamples;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
-      vtkTransmittanceShaderSource::RAY_CAST, GetVariant(frame, inputs, !direct)));
+      vtkTransmittanceShaderSource::RAY_CAST, variant));
   if (!program)
   {
     vtkErrorWithObjectMacro(reporter, << "The ray-casting shader did not compile.");
@@ -73,6 +78,10 @@ bool vtkTransmittanceRayCastPass::Render(
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   this->SetUniforms(frame, inputs, program);
   program->SetUniformf("stepLength", static_cast<float>(step));
+  if (sampled)
+  {
+    program->SetUniformi("detailFrame", inputs.DetailFrame);
+  }
   this->LastPassCount = passes;
   if (direct)
   {
@@ -94,7 +103,33 @@ bool vtkTransmittanceRayCastPass::Render(
     program->SetUniformi("endStep", std::min(steps, (pass + 1) * perPass));
     this->Quad.Render();
   };
-  return this->Accumulation->Render(frame, viewport, width, height, passes, draw, reporter);
+  return this->Accumulation->Render(frame, viewport, width, height, passes, draw, reporter,
+    sampled ? std::max(inputs.HistoryFrames, 0) : -1);
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceRayCastPass::DetailSamplesFor(const vtkTransmittanceFrame& frame, int requested)
+{
+  if (requested <= 0 || !frame.Detail || !frame.Detail->Enabled())
+  {
+    return 0;
+  }
+  // A walk over the cells (each cell a loop trip and the check of its
+  // samples), then per sample its solve, the light loop and a closed-form
+  // walk per brute-force light.
+  const int* n = frame.Detail->GetDimensions();
+  const double cells = n[0] + n[1] + n[2] + 3.0;
+  double perSample = vtkTransmittanceShaderSource::DetailSolveIterations + 1.0 +
+    static_cast<double>(frame.Lights.size());
+  for (const vtkTransmittanceFrame::Light& light : frame.Lights)
+  {
+    if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
+    {
+      perSample += cells;
+    }
+  }
+  const double fit = (IterationBudget - 2.0 * cells) / perSample;
+  return std::max(1, std::min(requested, static_cast<int>(fit)));
 }
 
 //------------------------------------------------------------------------------
@@ -237,4 +272,5 @@ void vtkTransmittanceRayCastPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LastPassCount: " << this->LastPassCount << "\n";
+  os << indent << "LastDetailSamples: " << this->LastDetailSamples << "\n";
 }

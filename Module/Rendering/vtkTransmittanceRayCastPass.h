@@ -21,6 +21,15 @@
  * picture as an unbounded march. With one pass and no reduction the quad
  * draws straight into the window.
  *
+ * With procedural detail and Inputs::DetailSamples > 0 the rays are not
+ * marched: each pixel draws that many free-flight distances in closed form
+ * (vtkTransmittanceDetailFS.glsl) and shades them, one pass; the pictures
+ * of successive still frames (Inputs::DetailFrame) are averaged by the
+ * accumulation pass (Inputs::HistoryFrames, GetLastHistoryFrames()). The
+ * samples are fewer when a pixel's loop iterations (a walk over the
+ * shape's cells, each sample's solve and brute-force light walks) would
+ * pass IterationBudget (GetLastDetailSamples()).
+ *
  * Inputs::Reduction > 1 renders the rays at 1 / Reduction of the viewport's
  * width and height and upscales them, and Inputs::StepScale > 1 lengthens
  * the camera steps (interactive level of detail).
@@ -63,6 +72,12 @@ public:
     int OcclusionSlices = 1;
     int Reduction = 1;      // rays at 1 / Reduction of the viewport's width and height
     double StepScale = 1.0; // camera steps StepScale times the frame's
+    /// Procedural detail: free-flight samples per pixel drawn in closed form (0: march).
+    int DetailSamples = 0;
+    /// The still frame's index, which picks the samples (DetailSamples > 0).
+    int DetailFrame = 0;
+    /// Frames already averaged into the history (DetailSamples > 0; 0: start anew).
+    int HistoryFrames = 0;
   };
 
   /**
@@ -81,6 +96,19 @@ public:
 
   /// Passes the last Render() split the rays over.
   int GetLastPassCount() const { return this->LastPassCount; }
+
+  /// Free-flight samples per pixel the last Render() drew (0: it marched).
+  int GetLastDetailSamples() const { return this->LastDetailSamples; }
+
+  /// Still frames averaged in the last Render()'s picture (0: no average kept).
+  int GetLastHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
+
+  /**
+   * The free-flight samples per pixel a frame can draw when `requested` are
+   * asked for: at most `requested`, fewer when the iterations would pass
+   * IterationBudget; 0 when the frame has no procedural detail.
+   */
+  static int DetailSamplesFor(const vtkTransmittanceFrame& frame, int requested);
 
 protected:
   vtkTransmittanceRayCastPass();
@@ -101,6 +129,7 @@ private:
   vtkTransmittanceShaderQuad Quad;
   vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
   int LastPassCount = 0;
+  int LastDetailSamples = 0;
 };
 
 #endif

@@ -56,6 +56,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
   // Procedural detail: wave groups, and the preprocessor loop over them.
   define("DETAIL_GROUPS", variant.DetailGroups);
+  define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);
+  define("DETAIL_SOLVE_ITERATIONS", DetailSolveIterations);
   os << "#define TYNDALL_DETAIL_FOR_GROUPS(X)";
   for (int g = 0; g < variant.DetailGroups; ++g)
   {

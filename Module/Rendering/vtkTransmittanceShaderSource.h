@@ -31,6 +31,10 @@
  *   procedural detail (0: none), with TYNDALL_DETAIL_FOR_GROUPS(X) expanding
  *   to X(0) .. X(groups - 1), and vtkTransmittanceDetailFS.glsl in place of
  *   the common file's `//TYNDALL::Detail` line;
+ * - TYNDALL_DETAIL_SAMPLES: camera rays through procedural detail draw this
+ *   many free-flight distances per pixel in closed form instead of marching
+ *   (0: they march), each solved in at most TYNDALL_DETAIL_SOLVE_ITERATIONS
+ *   Newton-bisection steps (DetailSolveIterations);
  * - the camera rays' TYNDALL_MAP_COEFFICIENTS (coefficients a map lookup
  *   reads, in TYNDALL_MAP_LAYERS layers; 0 when no light has a map),
  *   TYNDALL_MAP_EXTINCTION (the reconstruction of the ETM or the TFM
@@ -69,6 +73,8 @@ public:
     bool SkipEmpty = false;
     /// Groups of four waves of procedural detail (vtkTyndallDetailMedium); 0: none.
     int DetailGroups = 0;
+    /// Free-flight samples per camera ray through the detail (RAY_CAST); 0: a march.
+    int DetailSamples = 0;
     ///@{
     /// The camera rays' variant (RAY_CAST only).
     int MapCoefficients = 0;    // coefficients a map lookup reads; 0: no maps
@@ -91,6 +97,9 @@ public:
 
   /// What an occlusion texel holds where the light's ray meets no opaque surface.
   static constexpr float NoOccluder = 1.0e30f;
+
+  /// The most Newton-bisection steps that place one free-flight sample within a cell.
+  static constexpr int DetailSolveIterations = 24;
 
   /// Camera rays stop when their transmittance falls below this.
   static constexpr float ViewTermination = 1.0e-5f;

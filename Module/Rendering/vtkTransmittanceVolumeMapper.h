@@ -266,6 +266,49 @@ public:
   vtkGetMacro(MaximumImageReduction, int);
   ///@}
 
+  ///@{
+  /**
+   * Camera rays through procedural detail
+   * (vtkParticipatingMediumProperty::SetDetailNoise()), in [0, 64]; default 0.
+   *
+   * - 0: the rays march at a step of a quarter of the noise's shortest
+   *   wavelength (or SampleDistance when shorter), evaluating every wave at
+   *   every step: one frame is the finished picture.
+   * - n > 0: the rays are importance-sampled in closed form (the cosine-noise
+   *   paper's section 7): each pixel draws n free-flight distances,
+   *   stratified in transmittance, by walking the shape's cells with the
+   *   closed-form integral and solving within the cell, and shades only
+   *   those; the view transmittance (alpha) is exact. A frame is unbiased but
+   *   noisy; successive still frames draw new samples and are averaged, so
+   *   the picture converges as 1 / sqrt(frames x n). The average restarts
+   *   when anything that changes the picture changes (camera, viewport, the
+   *   volume, its property, input and lights, the maps, the other props,
+   *   this mapper's settings) and on ResetAccumulation(). Rendering-model.md
+   *   measures both against the CPU reference.
+   *
+   * Fewer than n are drawn where a pixel's loop iterations would pass the
+   * ray-cast pass's budget (GetLastDetailSamplesPerPixel()). No effect
+   * without detail.
+   */
+  vtkSetClampMacro(DetailSamplesPerPixel, int, 0, 64);
+  vtkGetMacro(DetailSamplesPerPixel, int);
+  ///@}
+
+  /**
+   * The free-flight samples per pixel the last Render() drew (0: it marched,
+   * or rendered nothing).
+   */
+  int GetLastDetailSamplesPerPixel();
+
+  /**
+   * The still frames the last Render()'s picture averages (DetailSamplesPerPixel
+   * > 0; 0 otherwise).
+   */
+  int GetAccumulatedFrames();
+
+  /// Starts the average of still frames anew at the next Render().
+  void ResetAccumulation();
+
   /**
    * The reduction the last Render() used (1: full size; 0 before the first
    * or after a failed render).
@@ -361,6 +404,7 @@ protected:
   int TransmittanceCacheSize = 256;
   bool InteractiveAdjustment = true;
   int MaximumImageReduction = 4;
+  int DetailSamplesPerPixel = 0;
 
 private:
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;

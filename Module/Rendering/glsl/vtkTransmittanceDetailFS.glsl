@@ -112,38 +112,167 @@ vec4 tyndallDetailCell(ivec3 region, vec3 pa, vec3 d)
     xyz * (v111 - v110 - v101 - v011 + v100 + v010 + v001 - v000);
 }
 
+// A walk along a ray through the shape's cells (a 3-D DDA) in field index
+// coordinates: p(t) = o + t d, t a world distance; `region` is the cell
+// holding p(t) (per axis -1 below the samples, dims - 1 above them).
+struct TyndallDetailWalk
+{
+  vec3 o;
+  vec3 d;
+  ivec3 region;
+  float t;
+  bvec3 crossing; // the axes whose cell boundary ends the current cell
+};
+
+TyndallDetailWalk tyndallDetailWalkStart(vec3 x, vec3 w)
+{
+  TyndallDetailWalk k;
+  k.o = detailBoxLow + (worldToVolume * vec4(x, 1.0)).xyz * detailBoxSize;
+  k.d = (worldToVolume * vec4(w, 0.0)).xyz * detailBoxSize;
+  vec3 f = floor(k.o);
+  k.region = ivec3(f) - ivec3(lessThan(k.d, vec3(0.0))) * ivec3(equal(f, k.o));
+  k.region = clamp(k.region, ivec3(-1), ivec3(detailDims) - 1);
+  k.t = 0.0;
+  k.crossing = bvec3(false);
+  return k;
+}
+
+// Where the current cell ends along the walk, at most tEnd (and at least
+// k.t); records the axes crossed there.
+float tyndallDetailCellEnd(inout TyndallDetailWalk k, float tEnd)
+{
+  ivec3 top = ivec3(detailDims) - 1;
+  ivec3 plane = k.region + ivec3(greaterThan(k.d, vec3(0.0)));
+  bvec3 valid = bvec3(ivec3(notEqual(k.d, vec3(0.0))) * ivec3(greaterThanEqual(plane, ivec3(0))) *
+    ivec3(lessThanEqual(plane, top)));
+  vec3 tPlane = mix(vec3(1e30), (vec3(plane) - k.o) / k.d, valid);
+  float tNext = max(min(min(min(tPlane.x, tPlane.y), tPlane.z), tEnd), k.t);
+  k.crossing = bvec3(ivec3(valid) * ivec3(lessThanEqual(tPlane, vec3(tNext))));
+  return tNext;
+}
+
+// Moves the walk into the next cell, which starts at tNext.
+void tyndallDetailWalkAdvance(inout TyndallDetailWalk k, float tNext)
+{
+  k.region += ivec3(sign(k.d)) * ivec3(k.crossing);
+  k.t = tNext;
+}
+
+// The current cell's integral of shape x noise (unscaled) over [k.t,
+// tNext], clamped at 0; its start pa and cubic c for a solve within it.
+float tyndallDetailCellIntegral(TyndallDetailWalk k, float tNext, out vec3 pa, out vec4 c)
+{
+  pa = k.o + k.t * k.d;
+  c = tyndallDetailCell(k.region, pa, k.d);
+  if (all(equal(c, vec4(0.0))))
+  {
+    return 0.0; // an empty cell: no waves to integrate
+  }
+  return max(tyndallDetailSegment(pa, k.d, c, tNext - k.t), 0.0);
+}
+
 // The optical depth from world point x along the unit world direction w
 // over t in [0, tEnd] (x inside the box), in closed form: the ray is walked
-// cell by cell (a 3-D DDA), each cell's integral clamped at 0.
+// cell by cell, each cell's integral clamped at 0.
 float tyndallDetailDepth(vec3 x, vec3 w, float tEnd)
 {
-  vec3 o = detailBoxLow + (worldToVolume * vec4(x, 1.0)).xyz * detailBoxSize;
-  vec3 d = (worldToVolume * vec4(w, 0.0)).xyz * detailBoxSize;
-  ivec3 top = ivec3(detailDims) - 1;
-  vec3 f = floor(o);
-  ivec3 region = ivec3(f) - ivec3(lessThan(d, vec3(0.0))) * ivec3(equal(f, o));
-  region = clamp(region, ivec3(-1), top);
-  ivec3 stepDir = ivec3(sign(d));
-  float t = 0.0;
+  TyndallDetailWalk k = tyndallDetailWalkStart(x, w);
   float tau = 0.0;
   for (int i = 0; i < detailMaxCells; ++i)
   {
-    ivec3 plane = region + ivec3(greaterThan(d, vec3(0.0)));
-    bvec3 valid = bvec3(ivec3(notEqual(d, vec3(0.0))) * ivec3(greaterThanEqual(plane, ivec3(0))) *
-      ivec3(lessThanEqual(plane, top)));
-    vec3 tPlane = mix(vec3(1e30), (vec3(plane) - o) / d, valid);
-    float tNext = max(min(min(min(tPlane.x, tPlane.y), tPlane.z), tEnd), t);
-    if (tNext > t)
+    float tNext = tyndallDetailCellEnd(k, tEnd);
+    if (tNext > k.t)
     {
-      vec3 pa = o + t * d;
-      tau += max(tyndallDetailSegment(pa, d, tyndallDetailCell(region, pa, d), tNext - t), 0.0);
+      vec3 pa;
+      vec4 c;
+      tau += tyndallDetailCellIntegral(k, tNext, pa, c);
     }
     if (tNext >= tEnd)
     {
       break;
     }
-    region += stepDir * ivec3(valid) * ivec3(lessThanEqual(tPlane, vec3(tNext)));
-    t = tNext;
+    tyndallDetailWalkAdvance(k, tNext);
   }
   return detailScale * tau;
 }
+
+#if TYNDALL_DETAIL_SAMPLES > 0
+// The s in [0, len] at which the cell's integral from 0 reaches goal (0 <
+// goal <= whole, the integral over the whole cell): safeguarded Newton from
+// the guess of a homogeneous cell, the derivative being the unscaled
+// extinction c(s) noise(pa + s d); bisection where Newton leaves the
+// bracket. The GLSL twin of vtkTyndallDetailMedium::SolveInCell, to single
+// precision.
+float tyndallDetailSolve(vec3 pa, vec3 d, vec4 c, float len, float goal, float whole)
+{
+  float lo = 0.0, hi = len;
+  float s = len * clamp(goal / whole, 0.0, 1.0);
+  for (int i = 0; i < TYNDALL_DETAIL_SOLVE_ITERATIONS; ++i)
+  {
+    float value = tyndallDetailSegment(pa, d, c, s) - goal;
+    if (abs(value) <= 1e-6 * goal || hi - lo <= 1e-5 * len)
+    {
+      break;
+    }
+    if (value < 0.0)
+    {
+      lo = s;
+    }
+    else
+    {
+      hi = s;
+    }
+    float slope = dot(c, vec4(1.0, s, s * s, s * s * s)) * tyndallDetailNoise(pa + s * d);
+    float next = slope > 0.0 ? s - value / slope : -1.0;
+    s = next > lo && next < hi ? next : 0.5 * (lo + hi);
+  }
+  return s;
+}
+
+// Free-flight distances along the camera ray x + t w, t in [0, tEnd], drawn
+// in closed form (the paper's section 6, decoupled): one walk over the cells
+// finds, for each optical depth goals[j] (ascending, scaled), the cell where
+// the ray's optical depth reaches it and solves for the distance within it.
+// distances[j] = tEnd + 1 where the ray ends first. Returns the ray's
+// optical depth over [0, tEnd] (the walk stops early once every goal is met
+// and the ray is opaque: depth >= opaque).
+float tyndallDetailSampleDistances(vec3 x, vec3 w, float tEnd, float goals[TYNDALL_DETAIL_SAMPLES],
+  float opaque, out float distances[TYNDALL_DETAIL_SAMPLES])
+{
+  for (int j = 0; j < TYNDALL_DETAIL_SAMPLES; ++j)
+  {
+    distances[j] = tEnd + 1.0;
+  }
+  TyndallDetailWalk k = tyndallDetailWalkStart(x, w);
+  float inverseScale = 1.0 / detailScale;
+  float tau = 0.0; // unscaled
+  int next = 0;
+  for (int i = 0; i < detailMaxCells; ++i)
+  {
+    float tNext = tyndallDetailCellEnd(k, tEnd);
+    if (tNext > k.t)
+    {
+      vec3 pa;
+      vec4 c;
+      float whole = tyndallDetailCellIntegral(k, tNext, pa, c);
+      for (int j = 0; j < TYNDALL_DETAIL_SAMPLES; ++j)
+      {
+        if (next >= TYNDALL_DETAIL_SAMPLES || tau + whole < goals[next] * inverseScale)
+        {
+          break;
+        }
+        float s = tyndallDetailSolve(pa, k.d, c, tNext - k.t, goals[next] * inverseScale - tau, whole);
+        distances[next] = k.t + s;
+        ++next;
+      }
+      tau += whole;
+    }
+    if (tNext >= tEnd || (next >= TYNDALL_DETAIL_SAMPLES && detailScale * tau >= opaque))
+    {
+      break;
+    }
+    tyndallDetailWalkAdvance(k, tNext);
+  }
+  return detailScale * tau;
+}
+#endif

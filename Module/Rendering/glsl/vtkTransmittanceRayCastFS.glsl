@@ -170,6 +170,72 @@ vec3 inScattering(vec3 x, vec3 w)
   return sum;
 }
 
+#if TYNDALL_DETAIL_SAMPLES > 0
+// Procedural detail, camera rays importance-sampled in closed form
+// (Documentation/rendering-model.md, "Camera rays sampled in closed form"):
+// TYNDALL_DETAIL_SAMPLES free-flight distances per pixel, stratified in
+// transmittance, 1 - T(t_j) = (j + xi) / N, xi a per-pixel hash rotated by
+// the golden ratio each still frame (detailFrame), so that frames averaged
+// by vtkTransmittanceAccumulationPass fill the strata evenly. Each sample
+// that lands before tFar contributes its source (per unit extinction); the
+// mean over the N is an unbiased estimate of the premultiplied radiance,
+// and the view transmittance is exact (the walk's closed form).
+uniform int detailFrame;
+
+// A hash of three integers to [0, 1) (the PCG3D permutation of Jarzynski
+// and Olano, 2020).
+float tyndallHash(uvec3 v)
+{
+  v = v * 1664525u + 1013904223u;
+  v.x += v.y * v.z;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v ^= v >> 16u;
+  v.x += v.y * v.z;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  return float(v.x >> 8u) * (1.0 / 16777216.0);
+}
+
+vec4 tyndallSampledRay(vec3 p0, vec3 w, float tNear, float tFar)
+{
+  float xi = fract(tyndallHash(uvec3(uvec2(gl_FragCoord.xy), 7u)) +
+    float(detailFrame) * 0.6180339887498949);
+  float goals[TYNDALL_DETAIL_SAMPLES];
+  for (int j = 0; j < TYNDALL_DETAIL_SAMPLES; ++j)
+  {
+    goals[j] = -log(1.0 - (float(j) + xi) / float(TYNDALL_DETAIL_SAMPLES));
+  }
+  vec3 x0 = p0 + tNear * w;
+  float span = tFar - tNear;
+  float opaque = -log(TYNDALL_VIEW_TERMINATION);
+  float distances[TYNDALL_DETAIL_SAMPLES];
+  float tau = tyndallDetailSampleDistances(x0, w, span, goals, opaque, distances);
+  vec3 radiance = vec3(0.0);
+  for (int j = 0; j < TYNDALL_DETAIL_SAMPLES; ++j)
+  {
+    if (distances[j] > span)
+    {
+      break; // ascending: the rest lie past the ray's end too
+    }
+    vec3 x = x0 + distances[j] * w;
+    vec3 color;
+    float tableCoord;
+    tyndallMedium(x, color, tableCoord);
+    vec3 source = color;
+    if (scatteringModel != 0)
+    {
+      source *= inScattering(x, w);
+#if TYNDALL_EMISSION
+      source += emissionScale * tyndallEmissionColor(tableCoord);
+#endif
+    }
+    radiance += source;
+  }
+  return vec4(radiance / float(TYNDALL_DETAIL_SAMPLES), tau >= opaque ? 1.0 : 1.0 - exp(-tau));
+}
+#endif
+
 void main()
 {
   vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
@@ -192,6 +258,10 @@ void main()
     gl_FragData[0] = previous; // nothing (more) to march
     return;
   }
+#if TYNDALL_DETAIL_SAMPLES > 0
+  gl_FragData[0] = tyndallSampledRay(p0, w, tNear, tFar);
+  return;
+#endif
   vec3 radiance = previous.rgb;
   float Tv = 1.0 - previous.a;
 #else
