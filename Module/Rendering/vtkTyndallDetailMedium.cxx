@@ -506,6 +506,47 @@ double vtkTyndallDetailMedium::SolveInCell(const double pa[3], const double d[3]
 }
 
 //------------------------------------------------------------------------------
+void vtkTyndallDetailMedium::ProjectExtinction(
+  const double o[3], const double d[3], double t0, double t1, int count, double* c) const
+{
+  std::fill(c, c + std::max(count, 0), 0.0);
+  const double length = t1 - t0;
+  if (count <= 0 || !(length > 0.0))
+  {
+    return;
+  }
+  const double pi = 3.14159265358979323846;
+  this->WalkCells(o, d, t0, t1,
+    [&](const Segment& s, const double pa[3])
+    {
+      const double cellLength = s.Tb - s.Ta;
+      if (s.C[0] == 0.0 && s.C[1] == 0.0 && s.C[2] == 0.0 && s.C[3] == 0.0)
+      {
+        return true; // an empty cell
+      }
+      for (int j = 0; j < count; ++j)
+      {
+        // cos(j pi u) = cos(gamma + omega s) along the cell, s = t - Ta.
+        const double omega = j * pi / length;
+        const double gamma = omega * (s.Ta - t0);
+        double sum =
+          this->Offset * vtkCosineNoise::PolynomialWaveIntegral(s.C, cellLength, gamma, omega);
+        for (const Wave& w : this->Waves)
+        {
+          const double alpha = w.K[0] * pa[0] + w.K[1] * pa[1] + w.K[2] * pa[2] + w.Phase;
+          const double beta = w.K[0] * d[0] + w.K[1] * d[1] + w.K[2] * d[2];
+          sum += 0.5 * w.Amplitude *
+            (vtkCosineNoise::PolynomialWaveIntegral(s.C, cellLength, alpha + gamma, beta + omega) +
+              vtkCosineNoise::PolynomialWaveIntegral(s.C, cellLength, alpha - gamma, beta - omega));
+        }
+        // c_j = 2 int D sigma cos(j pi u) du = 2 int sigma(t) cos(...) dt.
+        c[j] += 2.0 * this->Scale * sum;
+      }
+      return true;
+    });
+}
+
+//------------------------------------------------------------------------------
 double vtkTyndallDetailMedium::GetShortestWavelength(const double worldToIndex[16]) const
 {
   // k . p = k . (A x + b): the wave vector in world units is A^T k.

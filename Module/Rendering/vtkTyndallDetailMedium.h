@@ -147,6 +147,20 @@ public:
   bool SampleDistance(
     const double o[3], const double d[3], double t0, double t1, double target, double& t) const;
 
+  /**
+   * The extinction coefficients (ETM's DCT, vtkTransmittanceMapMath) of
+   * the segment [t0, t1] of p(t) = o + t d in closed form:
+   * c_j = 2 int_0^1 D sigma(u) cos(j pi u) du, D = t1 - t0, u = (t - t0) / D,
+   * for j < count. Within each cell the cubic shape times each wave times
+   * cos(j pi u) is two elemental integrals (the product of two cosines is a
+   * sum of two), so a segment costs cells x count x (1 + 2 waves) of them;
+   * the noise is integrated signed (the clamp at 0 of OpticalDepth() does
+   * not apply to a coefficient). What a map texel's closed-form projection
+   * would compute, against the march of the map passes (BenchDetail).
+   */
+  void ProjectExtinction(
+    const double o[3], const double d[3], double t0, double t1, int count, double* c) const;
+
 private:
   // One cell crossed by a ray: [Ta, Tb] and the cubic shape polynomial in
   // s = t - Ta, coefficients C[0] + C[1] s + C[2] s^2 + C[3] s^3.

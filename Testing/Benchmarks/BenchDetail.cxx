@@ -11,8 +11,9 @@
 // 512^3) into a float image whose opacity function maps the value back to
 // the same extinction (alpha = 1 - exp(-value * unit distance), 1024 points).
 // Both are drawn by vtkTransmittanceVolumeMapper (AdaptiveETM, maps 256,
-// no jitter) from a far camera and from two close-ups (the second 4x nearer:
-// a 512^3 voxel spans about 4 pixels at 256^2), W x W pixels;
+// no jitter) from a far camera, two close-ups (the second 4x nearer: a
+// 512^3 voxel spans about 4 pixels at 256^2) and a macro view (0.1 from the
+// focus: a voxel spans about 18 pixels), W x W pixels;
 // the plain 64^3 shape (no detail) is drawn too.
 //
 // Printed: the GPU memory of the medium's textures (scalars, shape, and for
@@ -27,9 +28,16 @@
 // averaged over still frames: the time per frame and the PSNR after 1, 4,
 // 16 and 64 frames against the marched picture (same maps: the difference
 // is the camera estimator's noise), and the time to reach 40 dB against
-// the march's frame. --sampling-only skips the voxelised medium.
+// the march's frame. --sampling-only skips the voxelised medium,
+// --no-sampling this study.
+//
+// First, on the CPU, a map texel's projection through the detail in closed
+// form (vtkTyndallDetailMedium::ProjectExtinction) against the march the
+// map passes do: time per ray and transmittance error (--projection-only:
+// only that).
 //
 // Usage: BenchDetail [--voxels N] [--size W] [--output DIR] [--quick] [--sampling-only]
+//                    [--projection-only] [--no-sampling]
 #include "vtkCamera.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
@@ -42,6 +50,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
+#include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
@@ -65,6 +74,8 @@ struct Options
   int Size = 256;
   std::string Output;
   bool SamplingOnly = false;
+  bool ProjectionOnly = false;
+  bool NoSampling = false;
 };
 
 double Seconds(std::chrono::steady_clock::time_point start)
@@ -119,6 +130,86 @@ struct View
     return copy;
   }
 };
+
+// A map texel's projection through the detail on the CPU, in closed form
+// (vtkTyndallDetailMedium::ProjectExtinction) against the map passes' march
+// (vtkTransmittanceMapMath::Project, the shaders' CPU twin, 128 samples):
+// time per light ray, and the ETM transmittance of each (8 coefficients)
+// against the exact one (closed-form optical depth) at 16 points per ray.
+void ProjectionStudy(const vtkTyndallGridMedium& grid, const vtkTyndallDetailMedium& detail)
+{
+  const int rays = 400, count = 8, samples = 128, points = 16;
+  const double* m = grid.GetWorldToIndex();
+  const double light[3] = { -0.8, -0.3, -0.52 }; // roughly the tests' sun, travelling
+  const double norm = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
+  double d[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    // index units per world unit
+    d[r] = (m[4 * r] * light[0] + m[4 * r + 1] * light[1] + m[4 * r + 2] * light[2]) / norm;
+  }
+  const double* lo = grid.GetBoxLow();
+  const double* hi = grid.GetBoxHigh();
+  unsigned int seed = 12345;
+  auto uniform = [&seed]()
+  {
+    seed = seed * 1664525u + 1013904223u;
+    return (seed >> 8) / 16777216.0;
+  };
+  double closedTime = 0.0, marchTime = 0.0, closedError = 0.0, marchError = 0.0;
+  int measured = 0;
+  for (int ray = 0; ray < rays; ++ray)
+  {
+    double o[3], t0 = -1e30, t1 = 1e30;
+    for (int a = 0; a < 3; ++a)
+    {
+      o[a] = lo[a] + uniform() * (hi[a] - lo[a]);
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      if (d[a] != 0.0)
+      {
+        const double ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
+        t0 = std::max(t0, std::min(ta, tb));
+        t1 = std::min(t1, std::max(ta, tb));
+      }
+    }
+    const double length = t1 - t0;
+    double closed[count], march[count], bounds[3];
+    auto start = std::chrono::steady_clock::now();
+    detail.ProjectExtinction(o, d, t0, t1, count, closed);
+    closedTime += Seconds(start);
+    start = std::chrono::steady_clock::now();
+    vtkTransmittanceMapMath::Project(
+      vtkTransmittanceMapMath::ETM,
+      [&](double u)
+      {
+        const double t = t0 + u * length;
+        const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+        return detail.Extinction(p);
+      },
+      length, samples, count, 0.01, march, bounds);
+    marchTime += Seconds(start);
+    for (int k = 1; k <= points; ++k)
+    {
+      const double u = static_cast<double>(k) / points;
+      const double exact = std::exp(-detail.OpticalDepth(o, d, t0, t0 + u * length));
+      const double a = vtkTransmittanceMapMath::Reconstruct(
+        vtkTransmittanceMapMath::ETM, closed, count, bounds, u);
+      const double b =
+        vtkTransmittanceMapMath::Reconstruct(vtkTransmittanceMapMath::ETM, march, count, bounds, u);
+      closedError += (a - exact) * (a - exact);
+      marchError += (b - exact) * (b - exact);
+      ++measured;
+    }
+  }
+  std::printf("map texel projection through the detail (CPU, %d light rays, ETM, %d "
+              "coefficients): closed form %.1f us per ray, march of %d samples %.1f us per ray "
+              "(the closed form takes %.1fx the march's time); RMS transmittance error against "
+              "the exact one: closed form %.4f, march %.4f\n",
+    rays, count, 1e6 * closedTime / rays, samples, 1e6 * marchTime / rays, closedTime / marchTime,
+    std::sqrt(closedError / measured), std::sqrt(marchError / measured));
+}
 
 // The sampled camera rays against the marched picture from one view.
 void SamplingStudy(View& view, const char* name, const double eye[3], const double focus[3])
@@ -248,6 +339,14 @@ bool Parse(int argc, char* argv[], Options& options)
       options.Voxels = 96;
       options.Size = 64;
     }
+    else if (a == "--no-sampling")
+    {
+      options.NoSampling = true;
+    }
+    else if (a == "--projection-only")
+    {
+      options.ProjectionOnly = true;
+    }
     else if (a == "--sampling-only")
     {
       options.SamplingOnly = true;
@@ -267,7 +366,7 @@ bool Parse(int argc, char* argv[], Options& options)
     else
     {
       std::printf("Usage: BenchDetail [--voxels N] [--size W] [--output DIR] [--quick] "
-                  "[--sampling-only]\n");
+                  "[--sampling-only] [--projection-only] [--no-sampling]\n");
       return false;
     }
   }
@@ -309,13 +408,22 @@ int main(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
-  const double eyes[3][3] = { { 0.0, -0.6, 4.2 }, { 0.2, 0.5, 1.7 }, { 0.125, 0.3125, 0.425 } };
-  const double focus[3][3] = { { 0.0, 0.0, 0.0 }, { 0.1, 0.25, 0.0 }, { 0.1, 0.25, 0.0 } };
-  const char* names[3] = { "far", "close-up", "closer" };
+  ProjectionStudy(grid, detail);
+  if (options.ProjectionOnly)
+  {
+    return EXIT_SUCCESS;
+  }
+  // The macro view: 0.1 from the focus, about 0.054 across (14 voxels of
+  // 512^3, each some 18 pixels at 256^2).
+  const double eyes[4][3] = { { 0.0, -0.6, 4.2 }, { 0.2, 0.5, 1.7 }, { 0.125, 0.3125, 0.425 },
+    { 0.1, 0.25, 0.1 } };
+  const double focus[4][3] = { { 0.0, 0.0, 0.0 }, { 0.1, 0.25, 0.0 }, { 0.1, 0.25, 0.0 },
+    { 0.1, 0.25, 0.0 } };
+  const char* names[4] = { "far", "close-up", "closer", "macro" };
   std::printf("BenchDetail: 64^3 shape x %d waves, %d^2, AdaptiveETM; camera rays sampled in "
               "closed form against marched\n",
     noise->GetNumberOfWaves(), options.Size);
-  for (int e = 0; e < 3; ++e)
+  for (int e = 0; e < 3 && !options.NoSampling; ++e)
   {
     SamplingStudy(procedural, names[e], eyes[e], focus[e]);
   }
@@ -345,7 +453,7 @@ int main(int argc, char* argv[])
     n * n * n * 4 / (2 * shapeBytes));
   std::printf(
     "voxelising (%d threads): %.1f s\n", vtkSMPTools::GetEstimatedNumberOfThreads(), voxeliseTime);
-  for (int e = 0; e < 3; ++e)
+  for (int e = 0; e < 4; ++e)
   {
     double tp[2], tv[2], tc[2];
     auto a = procedural.Render(eyes[e], focus[e], tp);
@@ -359,7 +467,7 @@ int main(int argc, char* argv[])
       names[e], tyndall_test::PSNR(a, b), tyndall_test::PSNR(a, c));
     if (e > 0)
     {
-      const std::string view = e == 1 ? "closeup" : "closer";
+      const std::string view = e == 1 ? "closeup" : e == 2 ? "closer" : "macro";
       Write(options, ("detail-" + view + "-procedural.png").c_str(), a);
       Write(options, ("detail-" + view + "-voxelised.png").c_str(), b);
       Write(options, ("detail-" + view + "-shape.png").c_str(), c);
