@@ -378,6 +378,18 @@ private:
   bool OpenWindow();
   void SetUpVTK();
   void ResetCamera();
+  // Sampled detail: a still view keeps refining up to --detail-frames while
+  // its average grows (a restart that no input caused stops it: something
+  // the viewer does not see changes every frame).
+  void UpdateRefinement(bool requested)
+  {
+    const int averaged = this->Mapper->GetAccumulatedFrames();
+    const bool grew = requested || averaged > this->LastAveraged;
+    this->Refine = averaged > 0 && grew &&
+      averaged < static_cast<int>(this->Options->GetNumber("detail-frames"));
+    this->LastAveraged = averaged;
+  }
+
   void RenderFrame();
   bool WriteScreenshot(const std::string& path);
   void UpdateText();
@@ -408,7 +420,11 @@ private:
   bool GlfwInitialized = false;
 
   vtkNew<vtkTyndallSceneBuilder> Builder;
-  vtkTransmittanceVolumeMapper* Mapper = nullptr;   // the builder's
+  vtkTransmittanceVolumeMapper* Mapper = nullptr; // the builder's
+  // Sampled detail: whether the next frame only refines the still view, and
+  // the frames the average held after the last frame.
+  bool Refine = false;
+  int LastAveraged = 0;
   vtkParticipatingMediumProperty* Medium = nullptr; // the builder's
   vtkLight* Sun = nullptr;                          // the builder's key light
   vtkNew<vtkRenderer> Renderer;
@@ -1150,7 +1166,7 @@ int Viewer::Run()
       std::cerr << Program << ": script finished; the window stays open (q quits)\n";
     }
 
-    if (scripted || this->NeedsRender)
+    if (scripted || this->NeedsRender || this->Refine)
     {
       glfwPollEvents();
     }
@@ -1162,16 +1178,13 @@ int Viewer::Run()
     {
       break;
     }
-    if (this->NeedsRender || scripted)
+    if (this->NeedsRender || scripted || this->Refine)
     {
+      const bool requested = this->NeedsRender || scripted; // by input or the script
       this->NeedsRender = false;
+      this->Refine = false;
       this->RenderFrame();
-      // Sampled detail: a still view keeps refining up to --detail-frames.
-      const int averaged = this->Mapper->GetAccumulatedFrames();
-      if (averaged > 0 && averaged < static_cast<int>(this->Options->GetNumber("detail-frames")))
-      {
-        this->NeedsRender = true;
-      }
+      this->UpdateRefinement(requested);
       if (scripted || this->Options->GetFlag("verbose"))
       {
         this->LogFrame();

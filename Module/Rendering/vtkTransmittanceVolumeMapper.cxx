@@ -8,6 +8,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkProp3D.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
@@ -127,12 +128,17 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   {
     key.push_back(double(light->GetMTime()));
   }
+  // The 3-D props (opaque geometry hides the medium); 2-D overlays such as
+  // a frame counter's text change every frame and do not touch the medium.
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator pit;
   props->InitTraversal(pit);
   while (vtkProp* prop = props->GetNextProp(pit))
   {
-    key.push_back(prop->GetVisibility() ? double(prop->GetRedrawMTime()) : -1.0);
+    if (vtkProp3D::SafeDownCast(prop))
+    {
+      key.push_back(prop->GetVisibility() ? double(prop->GetRedrawMTime()) : -1.0);
+    }
   }
   return key;
 }

@@ -282,7 +282,7 @@ public:
    *   noisy; successive still frames draw new samples and are averaged, so
    *   the picture converges as 1 / sqrt(frames x n). The average restarts
    *   when anything that changes the picture changes (camera, viewport, the
-   *   volume, its property, input and lights, the maps, the other props,
+   *   volume, its property, input and lights, the maps, the other 3-D props,
    *   this mapper's settings) and on ResetAccumulation(). Rendering-model.md
    *   measures both against the CPU reference.
    *

@@ -23,11 +23,14 @@
 // - changing the noise re-renders (the shader's uniforms follow it: the
 //   edited picture matches the edited reference), and
 //   too many waves are refused with an error.
+#include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper2D.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSingleScatteringReference.h"
@@ -214,6 +217,20 @@ void TestSampling()
   scene.Renderer->GetActiveCamera()->Azimuth(1.0);
   scene.Render();
   Check(scene.Mapper->GetAccumulatedFrames() == 1, "a camera move restarts the average");
+  // A 2-D overlay that changes every frame (a viewer's frame counter) does
+  // not touch the medium: the average goes on.
+  vtkNew<vtkActor2D> overlay;
+  vtkNew<vtkPolyDataMapper2D> overlayMapper;
+  vtkNew<vtkPolyData> empty;
+  overlayMapper->SetInputData(empty);
+  overlay->SetMapper(overlayMapper);
+  scene.Renderer->AddActor2D(overlay);
+  scene.Render();
+  const int before = scene.Mapper->GetAccumulatedFrames();
+  overlay->SetPosition(3.0, 4.0);
+  scene.Render();
+  Check(before >= 1 && scene.Mapper->GetAccumulatedFrames() == before + 1,
+    "a changing 2-D overlay does not restart the average");
   scene.Render();
   scene.Noise->SetFrequency(2.5);
   scene.Render();
