@@ -16,6 +16,11 @@ run "$build/bin/tyndall-render" -o "$images/tyndall-cloud.png" -s 384 384
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/method_gallery.py" "$images"
 
+# Clipping respected by the light: GPU | CPU reference | CPU reference with
+# the light ignoring the clipping (rendering-model.md).
+PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
+  "$root/Documentation/scripts/clipping_pictures.py" "$images"
+
 # The transfer-function presets, each on data it is meant for (needs
 # ../shared/data; Documentation/io.md shows them).
 data="$root/../shared/data"
@@ -27,3 +32,30 @@ if [ -d "$data" ]; then
   run "$render" "$data/vdb/smoke.vdb" --preset Smoke -s 192 192 -o "$images/preset-smoke.png"
   run "$render" "$data/vdb/smoke.vdb" --preset DenseSmoke -s 192 192 -o "$images/preset-densesmoke.png"
 fi
+
+# Multiple scattering: path tracer | single scattering | octaves, for the dense
+# medium, the thick cloud and the built-in cloud (rendering-model.md; a few
+# minutes: the path tracer).
+pictures="$(mktemp -d)"
+run "$build/bin/BenchMultipleScattering" --size 96 --spp 1024 --no-gpu --pictures "$pictures"
+/usr/bin/python3 - "$pictures" "$images/multiple-scattering.png" <<'PY'
+import sys
+from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkImagingCore import vtkImageResize
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+rows = vtkImageAppend()
+rows.SetAppendAxis(1)
+for key in ("cloud", "thick", "dense"):  # bottom to top
+    reader = vtkPNGReader()
+    reader.SetFileName("%s/multiple-scattering-%s.png" % (sys.argv[1], key))
+    resize = vtkImageResize()
+    resize.SetInputConnection(reader.GetOutputPort())
+    resize.SetResizeMethodToMagnificationFactors()
+    resize.SetMagnificationFactors(2, 2, 1)
+    rows.AddInputConnection(resize.GetOutputPort())
+writer = vtkPNGWriter()
+writer.SetInputConnection(rows.GetOutputPort())
+writer.SetFileName(sys.argv[2])
+writer.Write()
+PY
+rm -rf "$pictures"

@@ -668,8 +668,8 @@ void Viewer::UpdateText()
   os << std::fixed << this->Mapper->GetTransmittanceMethodAsString() << " | "
      << this->Mapper->GetNumberOfCoefficients() << " coefficients | g " << std::setprecision(2)
      << this->Medium->GetScatteringAnisotropy() << " | density " << std::setprecision(2)
-     << this->Medium->GetDensityScale() << " | jitter "
-     << (this->Mapper->GetJitter() ? "on" : "off") << "\n";
+     << this->Medium->GetDensityScale() << " | octaves " << this->Medium->GetScatteringOctaves()
+     << " | jitter " << (this->Mapper->GetJitter() ? "on" : "off") << "\n";
   if (this->FrameNumber > 0)
   {
     os << std::setprecision(1) << this->LastFrameMs << " ms";

@@ -15,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkRenderer.h"
 #include "vtkStringArray.h"
 #include "vtkTransferFunctionFileReader.h"
@@ -38,7 +39,12 @@ constexpr double kCloudHalfWidth = 1.0;
 const double kCloudCameraPosition[3] = { 0.0, -0.6, 4.2 };
 const double kSunFrom[3] = { 1.0, 0.3, 0.5 };
 const double kSunColor[3] = { 1.0, 0.9, 0.75 };
-constexpr double kSunIntensity = 1.2;
+// Lights and ambient of the programs' scenes, set for multiple scattering
+// (the octaves, on by default, add about as much light again as single
+// scattering gives): before them the sun was 1.2, the key light 1, the
+// ambient 0.45 (default scene) and 0.25 (data).
+constexpr double kSunIntensity = 0.85;
+constexpr double kKeyLightIntensity = 0.7;
 const double kSkyBottom[3] = { 0.55, 0.68, 0.82 };
 const double kSkyTop[3] = { 0.16, 0.32, 0.58 };
 constexpr double kViewAngle = 30.0;
@@ -123,7 +129,7 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   }
   if (!this->Options->IsSet("ambient"))
   {
-    this->Options->SetNumber("ambient", this->DefaultScene ? 0.45 : 0.25);
+    this->Options->SetNumber("ambient", this->DefaultScene ? 0.25 : 0.2);
   }
   this->Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
   this->Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
@@ -282,10 +288,15 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   medium->SetScatteringModel(o->GetChoice("model"));
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));
+  medium->SetScatteringOctaves(static_cast<int>(o->GetNumber("octaves")));
+  medium->SetOctaveScattering(o->GetNumber("octave-scattering"));
+  medium->SetOctaveExtinction(o->GetNumber("octave-extinction"));
+  medium->SetOctaveAnisotropy(o->GetNumber("octave-anisotropy"));
   medium->SetDensityScale(o->GetNumber("density-scale"));
   medium->SetLightScale(
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
   this->ApplyDetail();
+  this->ApplyClipping();
   medium->SetEmissionScale(o->GetNumber("emission-scale"));
   if (medium->GetEmissionScale() > 0.0 && !medium->GetEmissionColor())
   {
@@ -294,6 +305,57 @@ void vtkTyndallSceneBuilder::ApplyOptions()
       this->TransferFunctionFile && this->TransferFunctionFile->GetHasEmission();
     medium->SetEmissionColor(
       fromFile ? this->TransferFunctionFile->GetEmission() : medium->GetRGBTransferFunction());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyClipping()
+{
+  vtkTyndallOptions* o = this->Options;
+  vtkTransmittanceVolumeMapper* mapper = this->Mapper;
+  mapper->RemoveAllClippingPlanes();
+  double bounds[6];
+  this->Image->GetBounds(bounds);
+  if (o->IsSet("clip-normal"))
+  {
+    double normal[3],
+      origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+        0.5 * (bounds[4] + bounds[5]) };
+    o->GetVector("clip-normal", normal);
+    if (o->IsSet("clip-origin"))
+    {
+      o->GetVector("clip-origin", origin);
+    }
+    if (!(vtkMath::Normalize(normal) > 0.0))
+    {
+      normal[0] = 1.0; // a zero normal: along +x
+      normal[1] = normal[2] = 0.0;
+    }
+    const double low[3] = { bounds[0], bounds[2], bounds[4] };
+    const double high[3] = { bounds[1], bounds[3], bounds[5] };
+    const double offset =
+      o->GetNumber("clip-offset") * std::sqrt(vtkMath::Distance2BetweenPoints(low, high));
+    vtkNew<vtkPlane> plane;
+    plane->SetNormal(normal);
+    plane->SetOrigin(origin[0] + offset * normal[0], origin[1] + offset * normal[1],
+      origin[2] + offset * normal[2]);
+    mapper->AddClippingPlane(plane);
+  }
+  mapper->SetCropping(o->IsSet("crop-low") || o->IsSet("crop-high"));
+  if (mapper->GetCropping())
+  {
+    double low[3] = { bounds[0], bounds[2], bounds[4] };
+    double high[3] = { bounds[1], bounds[3], bounds[5] };
+    if (o->IsSet("crop-low"))
+    {
+      o->GetVector("crop-low", low);
+    }
+    if (o->IsSet("crop-high"))
+    {
+      o->GetVector("crop-high", high);
+    }
+    mapper->SetCroppingRegionPlanes(low[0], high[0], low[1], high[1], low[2], high[2]);
+    mapper->SetCroppingRegionFlagsToSubVolume();
   }
 }
 
@@ -480,7 +542,7 @@ void vtkTyndallSceneBuilder::SetUpLights(vtkRenderer* renderer)
       vtkMath::Normalize(from);
       std::copy(focal, focal + 3, center);
       light->SetColor(1.0, 1.0, 1.0);
-      light->SetIntensity(1.0);
+      light->SetIntensity(kKeyLightIntensity);
     }
     light->SetFocalPoint(center);
     light->SetPosition(center[0] + from[0], center[1] + from[1], center[2] + from[2]);

@@ -16,14 +16,14 @@
  *   cloud otherwise (opacity 0.5 per 0.05 units at density 8, albedo 0.95);
  * - the medium's and the mapper's settings (vtkParticipatingMediumProperty,
  *   vtkTransmittanceVolumeMapper): the options, else the defaults: for the
- *   default scene anisotropy 0.3 and ambient 0.45, for data 0 and 0.25;
+ *   default scene anisotropy 0.3 and ambient 0.25, for data 0 and 0.2;
  *   adaptive ETM, 8 coefficients, 256^2 maps;
  * - the camera: the default scene's fixed view (from (0, -0.6, 4.2) at the
  *   origin, view angle 30), or a fit to the data's bounds looking down -z,
  *   +y up; then --camera-position, --focal-point, --view-up, --view-angle;
  * - the lights: the given ones; else the default scene's low sun from the
- *   front right (warm white, intensity 1.2), or for data a white key light
- *   from the camera's upper right in front of the data;
+ *   front right (warm white, intensity 0.85), or for data a white key light
+ *   (intensity 0.7) from the camera's upper right in front of the data;
  * - the background: the default scene's sky gradient, or black; then
  *   --background and --background2.
  *
@@ -141,6 +141,8 @@ private:
   bool ChooseTransferFunction();
   // The --detail options: the property's DetailNoise (null without --detail).
   void ApplyDetail();
+  // The --clip-... and --crop-... options: the mapper's clipping plane and cropping.
+  void ApplyClipping();
   bool SetUpCamera(vtkRenderer* renderer);
   void SetUpLights(vtkRenderer* renderer);
   void SetUpBackground(vtkRenderer* renderer);

@@ -297,6 +297,38 @@ double vtkTransmittanceMapMath::HenyeyGreenstein(double g, double mu)
 }
 
 //------------------------------------------------------------------------------
+void vtkTransmittanceMapMath::OctaveScattering(int n, double a, double b, double c, double g,
+  double mu, double T, const double albedo[3], double weight[3])
+{
+  weight[0] = weight[1] = weight[2] = 0.0;
+  if (!(T > 0.0))
+  {
+    return;
+  }
+  T = std::min(T, 1.0);
+  n = std::min(std::max(n, 1), 8);
+  auto unit = [](double v) { return std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), 1.0); };
+  a = unit(a);
+  b = unit(b);
+  c = unit(c);
+  const double logT = std::log(T);
+  double scale[3] = { 1.0, 1.0, 1.0 }; // (a rho)^i
+  double extinction = 1.0;             // b^i
+  double anisotropy = g;               // c^i g
+  for (int i = 0; i < n; ++i)
+  {
+    const double term = HenyeyGreenstein(anisotropy, mu) * std::exp(extinction * logT);
+    for (int k = 0; k < 3; ++k)
+    {
+      weight[k] += scale[k] * term;
+      scale[k] *= a * albedo[k];
+    }
+    extinction *= b;
+    anisotropy *= c;
+  }
+}
+
+//------------------------------------------------------------------------------
 double vtkTransmittanceMapMath::ExtinctionFromOpacity(
   double alpha, double unitDistance, double densityScale)
 {

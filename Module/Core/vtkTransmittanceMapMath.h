@@ -198,6 +198,23 @@ public:
   static double HenyeyGreenstein(double g, double mu);
 
   /**
+   * The light a sample scatters towards the camera per unit of light
+   * irradiance and of its scattering albedo, with multiple scattering
+   * approximated by octaves (Wrenninge, "Art-Directable Multiple Volumetric
+   * Scattering", 2015; Documentation/rendering-model.md, "Multiple
+   * scattering"): for each channel k,
+   * \f[ w_k = \sum_{i=0}^{n-1} (a\,\rho_k)^i\, p(c^i g, \mu)\, T^{b^i}, \f]
+   * T the light transmittance, rho the albedo, a the scattering, b the
+   * extinction and c the anisotropy factor of an octave, p the
+   * Henyey-Greenstein phase function (HenyeyGreenstein()). One octave
+   * (n = 1) is single scattering, p(g, mu) T. T <= 0 (or NaN) gives 0; n is
+   * clamped to [1, 8], a, b and c to [0, 1], T to at most 1. The CPU twin
+   * of the ray-cast shader's tyndallOctaves().
+   */
+  static void OctaveScattering(int n, double a, double b, double c, double g, double mu, double T,
+    const double albedo[3], double weight[3]);
+
+  /**
    * Extinction coefficient that gives VTK's opacity alpha over a slab of
    * thickness unitDistance (ScalarOpacityUnitDistance):
    * \f$\sigma_t = \mathrm{densityScale}\cdot(-\ln(1 - \alpha)) / u\f$ with

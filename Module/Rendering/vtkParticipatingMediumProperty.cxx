@@ -44,6 +44,10 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetScatteringAnisotropy(medium->ScatteringAnisotropy);
   this->SetLightScale(medium->LightScale);
   this->SetAmbientIntensity(medium->AmbientIntensity);
+  this->SetScatteringOctaves(medium->ScatteringOctaves);
+  this->SetOctaveScattering(medium->OctaveScattering);
+  this->SetOctaveExtinction(medium->OctaveExtinction);
+  this->SetOctaveAnisotropy(medium->OctaveAnisotropy);
   this->SetEmissionScale(medium->EmissionScale);
   this->SetEmissionColor(medium->EmissionColor);
   this->SetDetailNoise(medium->DetailNoise);
@@ -73,6 +77,10 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "AmbientIntensity: " << this->AmbientIntensity << "\n";
+  os << indent << "ScatteringOctaves: " << this->ScatteringOctaves << "\n";
+  os << indent << "OctaveScattering: " << this->OctaveScattering << "\n";
+  os << indent << "OctaveExtinction: " << this->OctaveExtinction << "\n";
+  os << indent << "OctaveAnisotropy: " << this->OctaveAnisotropy << "\n";
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "EmissionColor: " << this->EmissionColor << "\n";
   os << indent << "DetailNoise: " << this->DetailNoise << "\n";

@@ -38,6 +38,7 @@ struct Scene : public vtkTyndallReferenceScene
   double LightStep = 1.0;
   double Threshold = 0.0;
   double MaxOpticalDepth = kInfinity;
+  bool LightIgnoresClipping = false;
 };
 
 template <typename T>
@@ -69,8 +70,12 @@ public:
 private:
   // The extinction at a field index point and its table position; false
   // for empty medium (missing data included: a NaN scalar).
-  bool Extinction(const double p[3], double& sigma, int& k, double& f) const
+  bool Extinction(const double p[3], double& sigma, int& k, double& f, bool clip = true) const
   {
+    if (clip && !this->S->Inside(p))
+    {
+      return false;
+    }
     const double s = this->Field.Scalar(p);
     if (std::isnan(s))
     {
@@ -92,7 +97,8 @@ private:
       return 1.0;
     }
     const double length = t1;
-    if (this->S->Detail)
+    const bool clip = this->S->Clip && !this->S->LightIgnoresClipping;
+    if (this->S->Detail && !clip)
     {
       return std::exp(-this->S->Detail->OpticalDepth(p, d, 0.0, length)); // closed form
     }
@@ -107,7 +113,7 @@ private:
       double sigma;
       int k;
       double f;
-      if (this->Extinction(q, sigma, k, f))
+      if (this->Extinction(q, sigma, k, f, clip))
       {
         tau += sigma * dt;
         if (tau > this->S->MaxOpticalDepth)
@@ -193,7 +199,7 @@ private:
     {
       const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
       s.AddInScattering(
-        x, w,
+        x, w, color,
         [&](const double dl[3], double tMax) { return this->LightTransmittance(p, dl, tMax); }, in);
     }
     for (int c = 0; c < 3; ++c)
@@ -288,6 +294,13 @@ bool SetUpSteps(const vtkTyndallSceneReader& tyndall, double stepSize, double li
   }
   scene.Threshold = threshold;
   scene.MaxOpticalDepth = threshold > 0.0 ? -std::log(threshold) : kInfinity;
+  if (scene.Octaves > 1)
+  {
+    // The last octave sees T^(b^(N-1)): march until that falls below the
+    // threshold (b = 0: it never does).
+    const double exponent = std::pow(scene.OctaveFactors[1], scene.Octaves - 1);
+    scene.MaxOpticalDepth = exponent > 0.0 ? scene.MaxOpticalDepth / exponent : kInfinity;
+  }
   return true;
 }
 }
@@ -305,6 +318,7 @@ bool vtkSingleScatteringReference::RenderInternal(
   {
     return false;
   }
+  scene.LightIgnoresClipping = this->LightIgnoresClipping;
 
   // The output.
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
@@ -380,6 +394,7 @@ void vtkSingleScatteringReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepSize: " << this->StepSize << "\n";
   os << indent << "LightStepSize: " << this->LightStepSize << "\n";
   os << indent << "EarlyTerminationThreshold: " << this->EarlyTerminationThreshold << "\n";
+  os << indent << "LightIgnoresClipping: " << this->LightIgnoresClipping << "\n";
   os << indent << "AbortExecute: " << (this->AbortExecute ? "On" : "Off") << "\n";
   os << indent << "Progress: " << this->Progress << "\n";
   os << indent << "LastStepSize: " << this->LastStepSize << "\n";

@@ -41,8 +41,10 @@
  * rendered. VTK's renderer creates an automatic headlight at its first
  * render when no light is on; a renderer that was never rendered may
  * therefore have no lights, and then single scattering gives only ambient
- * light and emission (no error). The mapper's cropping, clipping planes and
- * blend mode are ignored.
+ * light and emission (no error). The mapper's clipping planes and cropping
+ * cut the medium (vtkTyndallClipRegion's rules, as on the GPU): for camera
+ * rays and for the light, unless LightIgnoresClipping is on. The blend mode
+ * is ignored.
  *
  * Numerical method: a camera ray's segment inside the medium's box is cut
  * into n = ceil(length / StepSize) equal steps. The medium is sampled at each
@@ -56,10 +58,12 @@
  * the midpoint rule of sigma_t over n_l = ceil(d / LightStepSize) equal steps
  * of the segment from the sample to where the ray towards the light leaves
  * the box (or reaches a positional light inside it). Rays stop
- * when T_v (and light marches when T_l) fall below
- * EarlyTerminationThreshold. The transfer functions are read from the
- * scene's table (vtkTyndallTransferTable, the GPU's table), interpolated
- * linearly.
+ * when T_v (and light marches when T_l, or with multiple-scattering
+ * octaves the last octave's T_l^(b^(N-1))) fall below
+ * EarlyTerminationThreshold. Multiple-scattering octaves
+ * (vtkParticipatingMediumProperty::ScatteringOctaves) are applied exactly
+ * as defined (vtkTransmittanceMapMath::OctaveScattering()). The transfer functions are read from
+ * the scene's table (vtkTyndallTransferTable, the GPU's table), interpolated linearly.
  *
  * Procedural detail (vtkParticipatingMediumProperty::SetDetailNoise): the
  * extinction at a sample is the detail medium's (pre-classified shape times
@@ -152,6 +156,19 @@ public:
 
   ///@{
   /**
+   * When on, light rays see the whole medium while camera rays see only what
+   * the mapper's clipping planes and cropping keep: the picture of a renderer
+   * whose shadows ignore clipping (VTK's own shadow rays), for comparison.
+   * Default off: the clipped-away part casts no shadow, as in Tyndall's
+   * mapper.
+   */
+  vtkSetMacro(LightIgnoresClipping, bool);
+  vtkGetMacro(LightIgnoresClipping, bool);
+  vtkBooleanMacro(LightIgnoresClipping, bool);
+  ///@}
+
+  ///@{
+  /**
    * Set to true (from a ProgressEvent observer, for example) to stop the
    * current render after the running batch of rows; Render() then returns
    * nullptr without an error. Reset to false when a render starts.
@@ -199,6 +216,7 @@ protected:
   double StepSize = 0.0;
   double LightStepSize = 0.0;
   double EarlyTerminationThreshold = 1.0e-6;
+  bool LightIgnoresClipping = false;
   bool AbortExecute = false;
   double Progress = 0.0;
 

@@ -130,6 +130,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   }
   variant.MissingData = this->Textures && this->Textures->GetValidityTexture() != nullptr;
   variant.SkipEmpty = this->Integrator.SkipEmptySpace;
+  variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
   return variant;
 }
 
@@ -184,6 +185,7 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
     static_cast<float>(table.TextureShift()) };
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
+  this->SetClipUniforms(program);
   this->SetDetailUniforms(program);
 
   int positional[kMaxLights] = { 0 }, hasFrustum[kMaxLights] = { 0 };
@@ -250,4 +252,43 @@ void vtkTransmittanceFrame::SetDetailUniforms(vtkShaderProgram* program) const
   program->SetUniformi("detailMaxCells", n[0] + n[1] + n[2] + 3);
   program->SetUniformf("detailOffset", static_cast<float>(detail.GetOffset()));
   program->SetUniformf("detailScale", static_cast<float>(detail.GetScale()));
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetClipUniforms(vtkShaderProgram* program) const
+{
+  const vtkTyndallClipRegion& clip = this->Medium->GetClip();
+  if (!clip.Enabled())
+  {
+    return; // declared only by the clipping variant (GetShaderVariant())
+  }
+  const auto& planes = clip.GetWorldPlanes();
+  float values[4 * vtkTyndallClipRegion::MaximumPlanes] = {};
+  for (size_t i = 0; i < planes.size(); ++i)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      values[4 * i + c] = static_cast<float>(planes[i][c]);
+    }
+  }
+  program->SetUniform4fv(
+    "clipPlanes", vtkTyndallClipRegion::MaximumPlanes, reinterpret_cast<const float(*)[4]>(values));
+  program->SetUniformi("clipPlaneCount", static_cast<int>(planes.size()));
+  program->SetUniformi("cropping", clip.GetCropping() ? 1 : 0);
+  float worldToData[16];
+  const double* m = clip.GetWorldToData();
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      worldToData[4 * c + r] = static_cast<float>(m[4 * r + c]); // column-major
+    }
+  }
+  program->SetUniformMatrix4x4("worldToData", worldToData);
+  const double* p = clip.GetCroppingPlanes();
+  const float low[3] = { float(p[0]), float(p[2]), float(p[4]) };
+  const float high[3] = { float(p[1]), float(p[3]), float(p[5]) };
+  program->SetUniform3f("cropLow", low);
+  program->SetUniform3f("cropHigh", high);
+  program->SetUniformi("cropFlags", clip.GetCroppingFlags());
 }

@@ -124,6 +124,7 @@ public:
 
 private:
   void SetDetailUniforms(vtkShaderProgram* program) const;
+  void SetClipUniforms(vtkShaderProgram* program) const;
 };
 
 #endif

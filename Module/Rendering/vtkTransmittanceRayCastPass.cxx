@@ -147,6 +147,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
     variant.BruteForceLights |= light.Method == vtkTransmittanceMapMath::BRUTE_FORCE;
   }
   variant.Emission = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
+  variant.Octaves = frame.Medium->GetScatteringOctaves();
   return variant;
 }
 
@@ -217,6 +218,12 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   program->SetUniformi("jitter", s.Jitter ? 1 : 0);
   program->SetUniformf("anisotropy", static_cast<float>(medium.GetScatteringAnisotropy()));
   program->SetUniformf("ambient", static_cast<float>(medium.GetAmbientIntensity()));
+  if (medium.GetScatteringOctaves() > 1)
+  {
+    const double* f = medium.GetOctaveFactors();
+    const float factors[3] = { float(f[0]), float(f[1]), float(f[2]) };
+    program->SetUniform3f("octaveFactors", factors);
+  }
   program->SetUniformf("emissionScale",
     medium.GetHasEmission() ? static_cast<float>(medium.GetEmissionScale()) : 0.0f);
   if (inputs.Occlusion)

@@ -3,6 +3,7 @@
 #include "vtkMath.h"
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTyndallClipRegion.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkTyndallTransferTable.h"
 
@@ -44,6 +45,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("PI", vtkMath::Pi());
   define("MISSING_DATA", variant.MissingData ? 1 : 0);
   define("SKIP_EMPTY", variant.SkipEmpty ? 1 : 0);
+  define("CLIP", variant.Clip ? 1 : 0);
+  define("MAX_CLIP_PLANES", vtkTyndallClipRegion::MaximumPlanes);
   define("MAP_COEFFICIENTS", variant.MapCoefficients);
   define("MAP_LAYERS",
     (variant.MapCoefficients + M::COEFFICIENTS_PER_LAYER - 1) / M::COEFFICIENTS_PER_LAYER);
@@ -54,6 +57,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
+  define("OCTAVES", variant.Octaves);
   // Procedural detail: wave groups, and the preprocessor loop over them.
   define("DETAIL_GROUPS", variant.DetailGroups);
   define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);

@@ -25,6 +25,8 @@
  *
  * - TYNDALL_MISSING_DATA: 1 when the medium has missing data (NaN voxels,
  *   vtkTransmittanceMediumTextures' validity texture), 0 otherwise;
+ * - TYNDALL_CLIP: 1 when the mapper's clipping planes or cropping cut the
+ *   medium (vtkTyndallClipRegion; TYNDALL_MAX_CLIP_PLANES planes at most);
  * - TYNDALL_SKIP_EMPTY: 1 when camera rays and map builds skip empty blocks
  *   of the majorant grid (vtkTyndallMajorantGrid), 0 otherwise;
  * - TYNDALL_DETAIL_GROUPS: groups of four cosine waves of the medium's
@@ -40,9 +42,10 @@
  *   TYNDALL_MAP_EXTINCTION (the reconstruction of the ETM or the TFM
  *   family), TYNDALL_LIGHT_CACHE (map lights read the transmittance cache
  *   of vtkTransmittanceLightCachePass instead), TYNDALL_ADAPTIVE_MAPS (the bounds layer),
- * TYNDALL_OCCLUSION (opaque occluders), TYNDALL_EMISSION and TYNDALL_BRUTE_FORCE_LIGHTS (a light
- * marches to the light): only what the frame uses is compiled in (a None frame fetched 6 textures
- * per sample, all but 2 of them unused, and ran a masked brute-force light march, before).
+ * TYNDALL_OCCLUSION (opaque occluders), TYNDALL_EMISSION, TYNDALL_BRUTE_FORCE_LIGHTS (a light
+ * marches to the light) and TYNDALL_OCTAVES (multiple-scattering octaves, 1: none): only what the
+ * frame uses is compiled in (a None frame fetched 6 textures per sample, all but 2 of them unused,
+ * and ran a masked brute-force light march, before).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -71,6 +74,7 @@ public:
   {
     bool MissingData = false;
     bool SkipEmpty = false;
+    bool Clip = false; // the medium is clipped or cropped (vtkTyndallClipRegion)
     /// Groups of four waves of procedural detail (vtkTyndallDetailMedium); 0: none.
     int DetailGroups = 0;
     /// Free-flight samples per camera ray through the detail (RAY_CAST); 0: a march.
@@ -85,6 +89,7 @@ public:
     bool Accumulate = false;       // continues the rays of an earlier pass
     bool BruteForceLights = false; // some light marches to the light
     bool LightCache = false;       // map lights read the transmittance cache
+    int Octaves = 1;               // multiple-scattering octaves (1: single scattering)
     ///@}
   };
 

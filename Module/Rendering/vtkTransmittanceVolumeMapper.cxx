@@ -35,11 +35,46 @@
 
 vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 
+namespace
+{
+// The adaptive maps' threshold with multiple-scattering octaves: the last
+// octave sees T^(b^(N-1)), so the maps must resolve T down to
+// threshold^(1 / b^(N-1)) for it to fall below the threshold (b = 0: the
+// octave sees only whether T > 0, and the maps keep their whole range).
+double OctaveThreshold(double threshold, const vtkTyndallGridMedium& medium)
+{
+  const int octaves = medium.GetScatteringOctaves();
+  if (octaves <= 1)
+  {
+    return threshold;
+  }
+  const double exponent = std::pow(medium.GetOctaveFactors()[1], octaves - 1);
+  return std::max(exponent > 0.0 ? std::pow(threshold, 1.0 / exponent) : 0.0, 1.0e-30);
+}
+}
+
 //------------------------------------------------------------------------------
 class vtkTransmittanceVolumeMapper::vtkInternals
 {
 public:
   vtkTyndallSceneReader Scene;
+  bool WarnedClippedDetail = false;
+
+  // Procedural detail's closed forms (brute-force light, sampled camera
+  // rays) integrate the unclipped medium: said once per clipped scene.
+  void WarnClippedDetail(vtkTransmittanceVolumeMapper* self, bool closedForm)
+  {
+    const bool affected = closedForm && this->Scene.GetDetail().Enabled() &&
+      this->Scene.GetMedium().GetClip().Enabled();
+    if (affected && !this->WarnedClippedDetail)
+    {
+      vtkWarningWithObjectMacro(self,
+        << "Clipping planes and cropping cut the procedural detail's marched samples and maps, but "
+           "not its closed forms (brute-force light, sampled camera rays): use a map method and "
+           "marched camera rays to clip it.");
+    }
+    this->WarnedClippedDetail = affected;
+  }
   vtkTransmittanceFrame Frame;
   vtkNew<vtkTransmittanceMediumTextures> Textures;
   vtkNew<vtkTransmittanceOcclusionPass> Occlusion;
@@ -121,6 +156,8 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
     { double(self->GetMTime()), double(volume->GetMTime()),
       double(volume->GetProperty()->GetMTime()), double(input ? input->GetMTime() : 0),
       double(this->Maps->GetBuildCount()), double(this->Cache->GetBuildCount()) });
+  const std::vector<double>& clip = this->Scene.GetMedium().GetClip().GetKey();
+  key.insert(key.end(), clip.begin(), clip.end());
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator lit;
   lights->InitTraversal(lit);
@@ -296,12 +333,14 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   {
     return;
   }
+  in.WarnClippedDetail(
+    this, this->TransmittanceMethod == BRUTE_FORCE || this->DetailSamplesPerPixel > 0);
   vtkTransmittanceFrame::Settings settings;
   settings.Method = this->TransmittanceMethod;
   settings.Coefficients = this->NumberOfCoefficients;
   settings.MapSize = this->TransmittanceMapSize;
   settings.LightSampleCount = this->LightSampleCount;
-  settings.AdaptiveThreshold = this->AdaptiveThreshold;
+  settings.AdaptiveThreshold = OctaveThreshold(this->AdaptiveThreshold, in.Scene.GetMedium());
   settings.SampleDistance = this->SampleDistance;
   settings.Jitter = this->Jitter;
   settings.SkipEmptySpace = this->EmptySpaceSkipping;

@@ -32,7 +32,8 @@
  * Maps are rebuilt only when something they depend on changes: the input
  * data, the transfer functions, the density scale, the lights (position,
  * direction, type), the volume's matrix, the method, the number of
- * coefficients, the map size, LightSampleCount or AdaptiveThreshold. A
+ * coefficients, the map size, LightSampleCount or AdaptiveThreshold (for the
+ * adaptive methods also the medium's octave count and extinction factor). A
  * camera move never rebuilds them (but a headlight or camera light moves
  * with the camera, and so rebuilds its map). GetMapBuildCount() counts
  * the rebuilds.
@@ -136,7 +137,10 @@ public:
   ///@{
   /**
    * Transmittance threshold of the adaptive methods' first march, in
-   * [1e-6, 0.5]; default 0.01.
+   * [1e-6, 0.5]; default 0.01. With multiple-scattering octaves
+   * (vtkParticipatingMediumProperty::ScatteringOctaves N, OctaveExtinction
+   * b) the maps are built to threshold^(1 / b^(N-1)), so that the last
+   * octave's light is resolved as far as single scattering's is.
    */
   vtkSetClampMacro(AdaptiveThreshold, double, 1.0e-6, 0.5);
   vtkGetMacro(AdaptiveThreshold, double);

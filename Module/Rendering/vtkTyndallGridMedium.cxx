@@ -67,6 +67,10 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
 {
   this->Valid = this->UpdateScalars(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
     this->UpdateTable(volume, reporter);
+  if (this->Valid && this->Clip.Update(volume, this->IndexToWorld, this->IndexToData, reporter))
+  {
+    this->ExtinctionTime.Modified(); // the maps see the clipped medium
+  }
   return this->Valid;
 }
 
@@ -293,6 +297,13 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   this->ScatteringAnisotropy = source->GetScatteringAnisotropy();
   this->LightScale = source->GetLightScale();
   this->AmbientIntensity = source->GetAmbientIntensity();
+  this->ScatteringOctaves =
+    this->ScatteringModel == vtkParticipatingMediumProperty::SINGLE_SCATTERING
+    ? source->GetScatteringOctaves()
+    : 1;
+  this->OctaveFactors[0] = source->GetOctaveScattering();
+  this->OctaveFactors[1] = source->GetOctaveExtinction();
+  this->OctaveFactors[2] = source->GetOctaveAnisotropy();
   this->EmissionScale = source->GetEmissionScale();
   vtkColorTransferFunction* emission = medium ? medium->GetEmissionColor() : nullptr;
   this->HasEmission = this->ScatteringModel == vtkParticipatingMediumProperty::SINGLE_SCATTERING &&

@@ -22,7 +22,9 @@
  *   their values at the cell centres (constant over the outer half cells);
  *   an image with fewer than 2 points along an axis is refused (flat);
  * - the medium's parameters: the volume's vtkParticipatingMediumProperty, or
- *   the defaults for a plain vtkVolumeProperty.
+ *   the defaults for a plain vtkVolumeProperty;
+ * - the mapper's clipping planes and cropping (vtkTyndallClipRegion): the
+ *   medium is empty outside them, for the camera and for the light.
  *
  * "Field index" coordinates name the samples: index (i, j, k) is the
  * sample (point or cell centre) i, j, k from the first one; the medium
@@ -38,6 +40,7 @@
 #include "vtkDataArray.h"            // For the sampler
 #include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkTimeStamp.h"            // For vtkTimeStamp
+#include "vtkTyndallClipRegion.h"    // For the clip region
 #include "vtkTyndallTransferTable.h" // For the table
 #include "vtkType.h"                 // For vtkIdType
 
@@ -101,6 +104,9 @@ public:
   /// The length of the box's diagonal in world units.
   double GetWorldDiagonal() const;
 
+  /// What the mapper's clipping planes and cropping keep.
+  const vtkTyndallClipRegion& GetClip() const { return this->Clip; }
+
   /// The transfer functions, tabulated.
   const vtkTyndallTransferTable& GetTable() const { return this->Table; }
 
@@ -115,6 +121,9 @@ public:
   double GetScatteringAnisotropy() const { return this->ScatteringAnisotropy; }
   double GetLightScale() const { return this->LightScale; }
   double GetAmbientIntensity() const { return this->AmbientIntensity; }
+  /// Multiple-scattering octaves: their count (1: single scattering alone) and factors a, b, c.
+  int GetScatteringOctaves() const { return this->ScatteringOctaves; }
+  const double* GetOctaveFactors() const { return this->OctaveFactors; }
   double GetEmissionScale() const { return this->EmissionScale; }
   /// Single scattering with an emission colour and a positive scale.
   bool GetHasEmission() const { return this->HasEmission; }
@@ -126,7 +135,7 @@ public:
    * the GPU re-uploads what is newer than its copy. The extinction time
    * covers only what the table's extinction depends on (opacity function,
    * unit distance, finite range): the transmittance maps are rebuilt on it,
-   * not on a colour or emission edit.
+   * not on a colour or emission edit, and on a change of the clip region.
    */
   vtkMTimeType GetScalarsTime() const { return this->ScalarsTime.GetMTime(); }
   vtkMTimeType GetTableTime() const { return this->TableTime.GetMTime(); }
@@ -205,6 +214,8 @@ private:
   double IndexToData[16];
   double WorldToIndex[16];
 
+  vtkTyndallClipRegion Clip;
+
   // The table and the parameters.
   vtkTyndallTransferTable Table;
   std::vector<double> TableKey;
@@ -216,6 +227,8 @@ private:
   double ScatteringAnisotropy = 0.0;
   double LightScale = 1.0;
   double AmbientIntensity = 0.0;
+  int ScatteringOctaves = 1;
+  double OctaveFactors[3] = { 0.0, 0.0, 0.0 };
   double EmissionScale = 0.0;
   bool HasEmission = false;
 };

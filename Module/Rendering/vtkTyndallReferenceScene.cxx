@@ -86,9 +86,12 @@ void vtkTyndallReferenceScene::SetUpMedium(const vtkTyndallGridMedium& medium)
   this->SingleScattering = medium.GetSingleScattering();
   this->G = medium.GetScatteringAnisotropy();
   this->Ambient = medium.GetAmbientIntensity();
+  this->Octaves = medium.GetScatteringOctaves();
+  std::copy(medium.GetOctaveFactors(), medium.GetOctaveFactors() + 3, this->OctaveFactors);
   this->EmissionScale = medium.GetEmissionScale();
   this->HasEmission = medium.GetHasEmission();
   this->Table = &medium.GetTable();
+  this->Clip = medium.GetClip().Enabled() ? &medium.GetClip() : nullptr;
 }
 
 //------------------------------------------------------------------------------

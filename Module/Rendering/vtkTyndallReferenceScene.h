@@ -36,6 +36,7 @@
 #include "TyndallRenderingModule.h"  // For export macro
 #include "vtkMath.h"                 // For vtkMath::Dot
 #include "vtkTransmittanceMapMath.h" // For the phase function
+#include "vtkTyndallClipRegion.h"    // For Inside()
 #include "vtkType.h"                 // For vtkIdType
 
 #include <algorithm>  // For std::min, std::max, std::swap
@@ -81,11 +82,18 @@ public:
   bool SingleScattering = true;
   double G = 0.0;
   double Ambient = 0.0;
+  /// Multiple-scattering octaves (1: single scattering alone) and their factors a, b, c.
+  int Octaves = 1;
+  double OctaveFactors[3] = { 0.0, 0.0, 0.0 };
   double EmissionScale = 0.0;
   bool HasEmission = false;
   std::vector<LightSource> Lights;
   const vtkTyndallTransferTable* Table = nullptr;
   const vtkTyndallDetailMedium* Detail = nullptr; // procedural detail, or null
+  const vtkTyndallClipRegion* Clip = nullptr;     // clipping planes or cropping, or null
+
+  /// Whether the field index point p is kept by the clipping and cropping.
+  bool Inside(const double p[3]) const { return !this->Clip || this->Clip->InsideIndex(p); }
   double* Radiance = nullptr;
   double* Transmittance = nullptr;
 
@@ -177,10 +185,12 @@ public:
    * Adds E_l * f_l * p(mu_l) * T_l of every light to `in`, at the world
    * point x seen along the unit world direction w; `transmittance(dl,
    * tMax)` is the light transmittance T_l along dl (see LightGeometry()).
+   * With Octaves > 1, p(mu_l) T_l becomes the octaves' sum at the albedo
+   * `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
    */
   template <typename LightTransmittance>
-  void AddInScattering(
-    const double x[3], const double w[3], LightTransmittance&& transmittance, double in[3]) const
+  void AddInScattering(const double x[3], const double w[3], const double albedo[3],
+    LightTransmittance&& transmittance, double in[3]) const
   {
     for (const LightSource& light : this->Lights)
     {
@@ -190,10 +200,22 @@ public:
         continue;
       }
       // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
-      const double weight = factor * this->Phase(vtkMath::Dot(l, w)) * transmittance(dl, tMax);
+      const double mu = vtkMath::Dot(l, w);
+      const double T = transmittance(dl, tMax);
+      double weight[3] = { this->Phase(mu) * T, 0.0, 0.0 };
+      if (this->Octaves > 1)
+      {
+        const double* f = this->OctaveFactors;
+        vtkTransmittanceMapMath::OctaveScattering(
+          this->Octaves, f[0], f[1], f[2], this->G, mu, T, albedo, weight);
+      }
+      else
+      {
+        weight[1] = weight[2] = weight[0];
+      }
       for (int c = 0; c < 3; ++c)
       {
-        in[c] += light.E[c] * weight;
+        in[c] += light.E[c] * factor * weight[c];
       }
     }
   }

@@ -154,6 +154,10 @@ private:
   // sigma_t at a field index point inside the box.
   double Sigma(const double p[3]) const
   {
+    if (!this->S->Inside(p))
+    {
+      return 0.0;
+    }
     if (this->S->Detail)
     {
       return this->S->Detail->Extinction(p);
@@ -290,7 +294,7 @@ private:
     if (color[0] != 0.0 || color[1] != 0.0 || color[2] != 0.0)
     {
       s.AddInScattering(
-        x, w,
+        x, w, color,
         [&](const double dl[3], double tMax)
         { return this->LightTransmittance(p, dl, tMax, rng, timing); },
         in);
@@ -523,12 +527,18 @@ bool SetUpSampling(
   const vtkTyndallSceneReader& tyndall, int mode, Scene& scene, vtkObject* reporter)
 {
   const bool closedForm = mode == vtkVolumetricPathTracer::CLOSED_FORM;
-  scene.ClosedForm = closedForm && scene.Detail;
+  scene.ClosedForm = closedForm && scene.Detail && !scene.Clip;
   if (closedForm && !scene.Detail)
   {
     vtkWarningWithObjectMacro(
       reporter, << "Render: CLOSED_FORM distance sampling needs a procedural medium (a "
                    "DetailNoise); this grid medium is rendered with DELTA_TRACKING.");
+  }
+  else if (closedForm && scene.Clip)
+  {
+    vtkWarningWithObjectMacro(
+      reporter, << "Render: the closed form integrates the unclipped medium; with clipping "
+                   "planes or cropping the medium is rendered with DELTA_TRACKING.");
   }
   const vtkTyndallGridMedium& medium = tyndall.GetMedium();
   scene.Majorant =
@@ -558,6 +568,9 @@ bool vtkVolumetricPathTracer::RenderInternal(
   {
     return false;
   }
+  // The paths scatter for real: the octaves' approximation is what they
+  // are the reference for, so it is not applied to their light.
+  scene.Octaves = 1;
   scene.Samples = this->SamplesPerPixel;
   scene.MaxBounces = this->MaximumBounces;
   scene.Seed = this->Seed;

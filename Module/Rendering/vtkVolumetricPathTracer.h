@@ -85,6 +85,11 @@
  * 10^7 steps across the box) is reported with vtkErrorMacro and Render()
  * returns nullptr.
  *
+ * The property's multiple-scattering octaves
+ * (vtkParticipatingMediumProperty::ScatteringOctaves) are ignored: the paths
+ * scatter for real, and are what the octaves are measured against
+ * (BenchMultipleScattering).
+ *
  * @sa vtkSingleScatteringReference vtkCosineNoise vtkParticipatingMediumProperty
  */
 

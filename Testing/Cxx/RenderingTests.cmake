@@ -20,6 +20,8 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperTransmittanceCache.cxx
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
+  TestTransmittanceMapperOctaves.cxx
+  TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx

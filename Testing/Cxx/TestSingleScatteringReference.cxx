@@ -119,6 +119,7 @@ struct BoxScene
     this->Property->SetScalarOpacity(this->Opacity);
     this->Property->SetColor(this->Color);
     this->Property->SetScalarOpacityUnitDistance(unitDistance);
+    this->Property->SetScatteringOctaves(1); // single scattering: the closed forms below
     this->Sigma = -std::log(1.0 - alpha) / unitDistance;
     this->Mapper->SetInputData(this->Image);
     this->Volume->SetMapper(this->Mapper);
@@ -676,6 +677,7 @@ void TestVolumeMatrix()
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetScalarOpacityUnitDistance(0.1);
+  property->SetScatteringOctaves(1);
   vtkNew<vtkGPUVolumeRayCastMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
   vtkNew<vtkVolume> volume;
@@ -777,6 +779,7 @@ void TestConvergence()
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetScalarOpacityUnitDistance(0.1);
+  property->SetScatteringOctaves(1);
   vtkNew<vtkGPUVolumeRayCastMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
   vtkNew<vtkVolume> volume;

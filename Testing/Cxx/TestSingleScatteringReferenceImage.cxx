@@ -45,6 +45,7 @@ int TestSingleScatteringReferenceImage(int argc, char* argv[])
   vtkNew<vtkParticipatingMediumProperty> property;
   property->SetScatteringModelToSingleScattering();
   property->SetScatteringAnisotropy(0.3);
+  property->SetScatteringOctaves(1); // the baseline is single scattering
   property->SetAmbientIntensity(0.1);
   property->SetScalarOpacity(opacity);
   property->SetColor(albedo);

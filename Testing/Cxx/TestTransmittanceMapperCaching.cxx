@@ -97,6 +97,13 @@ int TestTransmittanceMapperCaching(int, char*[])
   property->SetAmbientIntensity(0.1);
   property->SetLightScale(10.0);
   expect(false, "anisotropy, ambient and light scale do not touch the maps");
+  property->SetOctaveScattering(0.7);
+  property->SetOctaveAnisotropy(0.2);
+  expect(false, "the octaves' scattering and anisotropy do not touch the maps");
+  property->SetScatteringOctaves(3);
+  expect(true, "more octaves extend the adaptive maps' range (rebuild)");
+  property->SetOctaveExtinction(0.6);
+  expect(true, "the octaves' extinction moves the adaptive maps' range (rebuild)");
   sun->SetPosition(-1.0, 0.5, 0.2);
   expect(true, "moving the light rebuilds");
   sun->SetIntensity(2.0);

@@ -138,6 +138,7 @@ struct Scene
     opacity->AddPoint(1.0, 0.9);
     this->Property->SetScalarOpacity(opacity);
     this->Property->SetDensityScale(2.0);
+    this->Property->SetScatteringOctaves(1);
     this->Mapper->SetInputData(this->Image);
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(this->Property);

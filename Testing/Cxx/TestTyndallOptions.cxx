@@ -161,6 +161,12 @@ int TestTyndallOptions(int, char*[])
     viewer->ApplyKey('-');
   }
   Check(viewer->GetNumber("coefficients") == 1, "-: down to the range's end, no further");
+  Check(std::string(viewer->ApplyKey('p')) == "clip-offset" && viewer->ApplyKey('p') &&
+      viewer->ApplyKey('o') && viewer->GetNumber("clip-offset") == 0.05,
+    "p, p, o: the clipping plane forward twice and back once by 0.05");
+  Check(std::string(viewer->ApplyKey('m')) == "octaves" && viewer->GetNumber("octaves") == 3 &&
+      viewer->ApplyKey('n') && viewer->ApplyKey('n') && viewer->GetNumber("octaves") == 1,
+    "m, n, n: one octave more, then two fewer");
   viewer->ApplyKey('a');
   viewer->ApplyKey('a');
   Check(std::abs(viewer->GetNumber("anisotropy") - 0.5) < 1e-12,

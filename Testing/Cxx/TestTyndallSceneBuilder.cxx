@@ -15,6 +15,8 @@
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkTestErrorObserver.h"
@@ -75,16 +77,22 @@ int TestTyndallSceneBuilder(int, char*[])
           std::string(builder->GetTransferFunctionDescription()) == "white cloud",
         "the white cloud");
       Check(builder->GetImage()->GetNumberOfPoints() == 16 * 16 * 16, "-r 16: a 16^3 cloud");
-      Check(p->GetScatteringAnisotropy() == 0.3 && p->GetAmbientIntensity() == 0.45 &&
+      Check(p->GetScatteringAnisotropy() == 0.3 && p->GetAmbientIntensity() == 0.25 &&
           p->GetScatteringModel() == vtkParticipatingMediumProperty::SINGLE_SCATTERING &&
           p->GetScalarOpacityUnitDistance() == 0.05,
-        "the default scene's medium (g 0.3, ambient 0.45)");
+        "the default scene's medium (g 0.3, ambient 0.25)");
+      vtkNew<vtkParticipatingMediumProperty> fresh;
+      Check(p->GetScatteringOctaves() == fresh->GetScatteringOctaves() &&
+          p->GetOctaveScattering() == fresh->GetOctaveScattering() &&
+          p->GetOctaveExtinction() == fresh->GetOctaveExtinction() &&
+          p->GetOctaveAnisotropy() == fresh->GetOctaveAnisotropy(),
+        "the options' octave defaults are the property's");
       Check(m->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::ADAPTIVE_ETM &&
           m->GetNumberOfCoefficients() == 8 && m->GetTransmittanceMapSize() == 256 &&
           m->GetJitter(),
         "adaptive ETM, 8 coefficients, 256^2 maps, jitter");
       Check(renderer->GetLights()->GetNumberOfItems() == 1 && builder->GetKeyLight() &&
-          builder->GetKeyLight()->GetIntensity() == 1.2 && renderer->GetGradientBackground(),
+          builder->GetKeyLight()->GetIntensity() == 0.85 && renderer->GetGradientBackground(),
         "the low sun and the sky");
       double position[3];
       renderer->GetActiveCamera()->GetPosition(position);
@@ -98,9 +106,10 @@ int TestTyndallSceneBuilder(int, char*[])
     auto renderer = Build(builder,
       { "-r", "16", "--method", "tfm", "--coefficients", "5", "--map-size", "64", "--density-scale",
         "2", "--anisotropy", "-0.3", "--ambient", "0.1", "--light-scale", "3", "--no-jitter",
-        "--model", "emission-absorption", "--light-direction", "0", "-1", "0", "--light-position",
-        "2", "2", "2", "--light-intensity", "0.5", "--background", "1", "0", "0", "--view-angle",
-        "45" });
+        "--octaves", "3", "--octave-scattering", "0.7", "--octave-extinction", "0.2",
+        "--octave-anisotropy", "0.1", "--model", "emission-absorption", "--light-direction", "0",
+        "-1", "0", "--light-position", "2", "2", "2", "--light-intensity", "0.5", "--background",
+        "1", "0", "0", "--view-angle", "45" });
     Check(renderer != nullptr, "a scene with every kind of option");
     if (renderer)
     {
@@ -112,6 +121,8 @@ int TestTyndallSceneBuilder(int, char*[])
         "the mapper's options");
       Check(p->GetDensityScale() == 2.0 && p->GetScatteringAnisotropy() == -0.3 &&
           p->GetAmbientIntensity() == 0.1 && p->GetLightScale() == 3.0 &&
+          p->GetScatteringOctaves() == 3 && p->GetOctaveScattering() == 0.7 &&
+          p->GetOctaveExtinction() == 0.2 && p->GetOctaveAnisotropy() == 0.1 &&
           p->GetScatteringModel() == vtkParticipatingMediumProperty::EMISSION_ABSORPTION,
         "the medium's options");
       Check(renderer->GetLights()->GetNumberOfItems() == 2 && !renderer->GetGradientBackground() &&
@@ -133,6 +144,43 @@ int TestTyndallSceneBuilder(int, char*[])
       builder->ApplyOptions();
       Check(m->GetNumberOfCoefficients() == 6 && p->GetDensityScale() == 2.5,
         "changed options reach the mapper and the medium");
+    }
+  }
+
+  // Clipping and cropping reach the mapper; the viewer's key moves the plane.
+  {
+    vtkNew<vtkTyndallSceneBuilder> builder;
+    auto renderer = Build(builder,
+      { "-r", "16", "--clip-normal", "0", "0", "2", "--clip-origin", "0", "0", "0.1",
+        "--clip-offset", "0.1", "--crop-low", "-1", "-0.5", "-1", "--crop-high", "1", "0.5",
+        "0.25" });
+    Check(renderer != nullptr, "a clipped and cropped scene");
+    if (renderer)
+    {
+      vtkTransmittanceVolumeMapper* m = builder->GetMapper();
+      vtkPlaneCollection* planes = m->GetClippingPlanes();
+      const double diagonal = 2.0 * std::sqrt(3.0); // the cloud fills [-1, 1]^3
+      bool plane = planes && planes->GetNumberOfItems() == 1;
+      if (plane)
+      {
+        const double* n = planes->GetItem(0)->GetNormal();
+        const double* o = planes->GetItem(0)->GetOrigin();
+        plane = n[0] == 0.0 && n[1] == 0.0 && n[2] == 1.0 && o[0] == 0.0 &&
+          std::abs(o[2] - (0.1 + 0.1 * diagonal)) < 1e-12;
+      }
+      Check(plane, "--clip-normal, --clip-origin, --clip-offset: one unit-normal plane, offset");
+      double crop[6];
+      m->GetCroppingRegionPlanes(crop);
+      Check(m->GetCropping() && crop[0] == -1.0 && crop[1] == 1.0 && crop[2] == -0.5 &&
+          crop[3] == 0.5 && crop[4] == -1.0 && crop[5] == 0.25 &&
+          m->GetCroppingRegionFlags() == VTK_CROP_SUBVOLUME,
+        "--crop-low, --crop-high: the subvolume");
+      // What the viewer's 'o' key does (vtkTyndallOptions::ApplyKey: 0.1 - 0.05).
+      builder->GetOptions()->SetNumber("clip-offset", 0.05);
+      builder->ApplyOptions();
+      Check(planes->GetNumberOfItems() == 1 &&
+          std::abs(planes->GetItem(0)->GetOrigin()[2] - (0.1 + 0.05 * diagonal)) < 1e-12,
+        "a new --clip-offset moves the plane (ApplyOptions)");
     }
   }
 
@@ -165,9 +213,10 @@ int TestTyndallSceneBuilder(int, char*[])
         "a float density: the Cloud preset, guessed");
       Check(std::abs(p->GetScalarOpacityUnitDistance() - 4.0 / 3.0) < 1e-12,
         "the preset's unit distance is the mean spacing");
-      Check(p->GetScatteringAnisotropy() == 0.0 && p->GetAmbientIntensity() == 0.25 &&
-          !renderer->GetGradientBackground() && renderer->GetBackground()[0] == 0.0,
-        "data: g 0, ambient 0.25, black");
+      Check(p->GetScatteringAnisotropy() == 0.0 && p->GetAmbientIntensity() == 0.2 &&
+          !renderer->GetGradientBackground() && renderer->GetBackground()[0] == 0.0 &&
+          builder->GetKeyLight()->GetIntensity() == 0.7,
+        "data: g 0, ambient 0.2, a key light of 0.7, black");
       double focal[3], light[3];
       renderer->GetActiveCamera()->GetFocalPoint(focal);
       builder->GetKeyLight()->GetFocalPoint(light);

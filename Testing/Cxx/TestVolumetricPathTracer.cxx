@@ -108,6 +108,9 @@ struct Scene
     this->Property->SetScalarOpacity(this->Opacity);
     this->Property->SetColor(this->Color);
     this->Property->SetScalarOpacityUnitDistance(0.05);
+    // One bounce is compared with single scattering alone (the octaves
+    // approximate what more bounces add: TestTransmittanceMapperOctaves).
+    this->Property->SetScatteringOctaves(1);
     this->Property->SetInterpolationTypeToLinear();
     this->Property->SetScatteringAnisotropy(0.4);
     this->Property->SetAmbientIntensity(0.05);

@@ -10,10 +10,12 @@
 #ifndef TyndallTestImage_h
 #define TyndallTestImage_h
 
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkPointData.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
@@ -25,6 +27,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace tyndall_test
 {
@@ -134,6 +137,31 @@ inline int RegressionTestWithPSNR(int argc, char* argv[], vtkRenderWindow* windo
     return vtkTesting::FAILED;
   }
   return vtkResult;
+}
+
+// The linear "Radiance" array of a CPU renderer's image
+// (vtkSingleScatteringReference, vtkVolumetricPathTracer), every component
+// in order.
+inline std::vector<double> RadianceValues(vtkImageData* image)
+{
+  vtkDataArray* array = image->GetPointData()->GetArray("Radiance");
+  std::vector<double> values(static_cast<size_t>(array->GetNumberOfValues()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    values[i] = array->GetVariantValue(static_cast<vtkIdType>(i)).ToDouble();
+  }
+  return values;
+}
+
+// The root mean square difference of two arrays of the same size.
+inline double RMS(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    sum += (a[i] - b[i]) * (a[i] - b[i]);
+  }
+  return std::sqrt(sum / static_cast<double>(a.size()));
 }
 }
 

@@ -81,7 +81,10 @@ inline vtkSmartPointer<vtkImageData> MakeSparseBlobs(int n)
 }
 
 // A white cloud medium: opacity up to `peakOpacity` per 0.05 world units at
-// density 8, albedo 0.9 (the property's other settings at their defaults).
+// density 8, albedo 0.9, single scattering alone (one octave: the tests of the
+// integrators and the maps compare single scattering; the multiple-scattering
+// octaves have their own test), the property's other settings at their
+// defaults.
 inline vtkSmartPointer<vtkParticipatingMediumProperty> MakeCloudProperty(double peakOpacity = 0.5)
 {
   vtkNew<vtkPiecewiseFunction> opacity;
@@ -95,6 +98,7 @@ inline vtkSmartPointer<vtkParticipatingMediumProperty> MakeCloudProperty(double 
   property->SetColor(color);
   property->SetInterpolationTypeToLinear();
   property->SetScalarOpacityUnitDistance(0.05);
+  property->SetScatteringOctaves(1);
   return property;
 }
 

@@ -30,7 +30,7 @@ import tempfile
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty,
+                                         vtkRenderWindow, vtkVolume,
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
@@ -92,7 +92,10 @@ albedo = vtkColorTransferFunction()
 a = SCATTER / (SCATTER + ABSORB)
 albedo.AddRGBPoint(lo, a, a, a)
 albedo.AddRGBPoint(hi, a, a, a)
-prop = vtkVolumeProperty()
+# vdb_render scatters once: Tyndall's multiple-scattering octaves (on by
+# default) are turned off to compare the same model.
+prop = tyndall.vtkParticipatingMediumProperty()
+prop.SetScatteringOctaves(1)
 prop.SetScalarOpacity(opacity)
 prop.SetColor(albedo)
 prop.SetScalarOpacityUnitDistance(unit)

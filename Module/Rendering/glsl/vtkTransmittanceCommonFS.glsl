@@ -105,6 +105,39 @@ bool tyndallSkipEmpty(vec3 bo, vec3 bd, float ts, inout float tBlockEnd, inout i
 }
 #endif
 
+#if TYNDALL_CLIP
+// The mapper's clipping planes and cropping (vtkTyndallClipRegion): the
+// medium is empty outside them, for camera rays and for the light. A plane
+// (n, d) keeps n . x + d >= 0 (world); cropping keeps the regions of the
+// 3 x 3 x 3 split of the data coordinates whose bit is set in cropFlags.
+uniform vec4 clipPlanes[TYNDALL_MAX_CLIP_PLANES];
+uniform int clipPlaneCount;
+uniform int cropping;
+uniform mat4 worldToData;
+uniform vec3 cropLow;
+uniform vec3 cropHigh;
+uniform int cropFlags;
+
+bool tyndallClipped(vec3 x)
+{
+  for (int i = 0; i < TYNDALL_MAX_CLIP_PLANES; ++i)
+  {
+    if (i < clipPlaneCount && dot(clipPlanes[i].xyz, x) + clipPlanes[i].w < 0.0)
+    {
+      return true;
+    }
+  }
+  if (cropping != 0)
+  {
+    vec3 d = (worldToData * vec4(x, 1.0)).xyz;
+    ivec3 r = ivec3(step(cropLow, d) + step(cropHigh, d));
+    int region = r.x + 3 * r.y + 9 * r.z;
+    return ((cropFlags >> region) & 1) == 0;
+  }
+  return false;
+}
+#endif
+
 // Procedural detail (vtkTransmittanceDetailFS.glsl) when TYNDALL_DETAIL_GROUPS > 0.
 //TYNDALL::Detail
 
@@ -114,6 +147,14 @@ bool tyndallSkipEmpty(vec3 bo, vec3 bd, float ts, inout float tBlockEnd, inout i
 // without sampling the volume again.
 float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
 {
+#if TYNDALL_CLIP
+  if (tyndallClipped(x))
+  {
+    color = vec3(0.0);
+    tableCoord = 0.0;
+    return 0.0;
+  }
+#endif
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   vec3 texel = q * volumeTexScale + volumeTexShift;
 #if TYNDALL_MISSING_DATA

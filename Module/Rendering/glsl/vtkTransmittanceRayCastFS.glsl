@@ -132,8 +132,41 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
 #endif
 }
 
-// In-scattered radiance per unit sigma_s at x, for the view direction w.
-vec3 inScattering(vec3 x, vec3 w)
+#if TYNDALL_OCTAVES > 1
+uniform vec3 octaveFactors; // a (scattering), b (extinction), c (anisotropy)
+#endif
+
+// p(g, mu) T, or with TYNDALL_OCTAVES > 1 the octaves' sum
+// sum_i (a albedo)^i p(c^i g, mu) T^(b^i) (Documentation/rendering-model.md,
+// "Multiple scattering"; CPU twin: vtkTransmittanceMapMath::OctaveScattering).
+// The octave loop has a constant trip count: it is unrolled, and costs no
+// loop iterations of llvmpipe's budget.
+vec3 tyndallOctaves(float mu, float T, vec3 albedo)
+{
+  vec3 sum = vec3(tyndallPhaseHG(anisotropy, mu) * T);
+#if TYNDALL_OCTAVES > 1
+  if (T <= 0.0)
+  {
+    return vec3(0.0);
+  }
+  float logT = log(min(T, 1.0));
+  vec3 scale = vec3(1.0);
+  float extinction = 1.0;
+  float g = anisotropy;
+  for (int i = 1; i < TYNDALL_OCTAVES; ++i)
+  {
+    scale *= octaveFactors.x * albedo;
+    extinction *= octaveFactors.y;
+    g *= octaveFactors.z;
+    sum += scale * tyndallPhaseHG(g, mu) * exp(extinction * logT);
+  }
+#endif
+  return sum;
+}
+
+// In-scattered radiance per unit sigma_s at x, for the view direction w, at
+// a sample of albedo `albedo` (which only the octaves read).
+vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 {
   vec3 sum = vec3(ambient);
   for (int l = 0; l < numberOfLights; ++l)
@@ -165,7 +198,7 @@ vec3 inScattering(vec3 x, vec3 w)
     // mu: cosine between the light's travel direction and the direction
     // towards the camera.
     float mu = dot(-toLight, -w);
-    sum += E * tyndallPhaseHG(anisotropy, mu) * lightTransmittance(l, x, toLight, distance);
+    sum += E * tyndallOctaves(mu, lightTransmittance(l, x, toLight, distance), albedo);
   }
   return sum;
 }
@@ -225,7 +258,7 @@ vec4 tyndallSampledRay(vec3 p0, vec3 w, float tNear, float tFar)
     vec3 source = color;
     if (scatteringModel != 0)
     {
-      source *= inScattering(x, w);
+      source *= inScattering(x, w, color);
 #if TYNDALL_EMISSION
       source += emissionScale * tyndallEmissionColor(tableCoord);
 #endif
@@ -316,7 +349,7 @@ void main()
       }
       else
       {
-        source = color * inScattering(x, w);
+        source = color * inScattering(x, w, color);
 #if TYNDALL_EMISSION
         source += emissionScale * tyndallEmissionColor(tableCoord);
 #endif

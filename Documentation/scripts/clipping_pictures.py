@@ -1,0 +1,94 @@
+"""Renders the documentation's clipping picture: the built-in cloud clipped in
+half by a plane and lit from the clipped side, drawn by
+vtkTransmittanceVolumeMapper (the light respects the clipping), by the CPU
+reference (the same) and by the CPU reference with LightIgnoresClipping (what
+a renderer whose shadow rays ignore clipping draws: the half that remains sits
+in the removed half's shadow).
+
+    PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
+        Documentation/scripts/clipping_pictures.py Documentation/images
+"""
+
+import sys
+
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane
+from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
+                                         vtkRenderWindow, vtkVolume, vtkWindowToImageFilter)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
+
+from tyndall import (vtkCosineNoiseSource, vtkParticipatingMediumProperty,
+                     vtkSingleScatteringReference, vtkTransmittanceVolumeMapper)
+
+SIZE = 256
+
+source = vtkCosineNoiseSource()
+source.SetWholeExtent(0, 95, 0, 95, 0, 95)
+source.SetSpacing(2 / 95, 2 / 95, 2 / 95)
+source.Update()
+
+opacity = vtkPiecewiseFunction()
+opacity.AddPoint(0.0, 0.0)
+opacity.AddPoint(8.0, 0.6)
+albedo = vtkColorTransferFunction()
+albedo.AddRGBPoint(0.0, 0.9, 0.9, 0.9)
+albedo.AddRGBPoint(8.0, 0.9, 0.9, 0.9)
+medium = vtkParticipatingMediumProperty()
+medium.SetScalarOpacity(opacity)
+medium.SetColor(albedo)
+medium.SetScalarOpacityUnitDistance(0.05)
+medium.SetAmbientIntensity(0.05)
+
+plane = vtkPlane()  # keeps x <= 0.05: the half away from the sun
+plane.SetOrigin(0.05, 0, 0)
+plane.SetNormal(-1, 0, 0)
+mapper = vtkTransmittanceVolumeMapper()
+mapper.SetInputConnection(source.GetOutputPort())
+mapper.JitterOff()
+mapper.AddClippingPlane(plane)
+volume = vtkVolume()
+volume.SetMapper(mapper)
+volume.SetProperty(medium)
+
+renderer = vtkRenderer()
+renderer.AddVolume(volume)
+renderer.SetBackground(0.2, 0.3, 0.45)
+sun = vtkLight()
+sun.SetLightTypeToSceneLight()
+sun.SetPositional(False)
+sun.SetPosition(1.0, 0.25, 0.15)  # from +x: across the clipped half
+sun.SetFocalPoint(0, 0, 0)
+sun.SetIntensity(0.8)
+renderer.AddLight(sun)
+camera = renderer.GetActiveCamera()
+camera.SetPosition(0, -0.6, 4.2)
+camera.SetFocalPoint(0, 0, 0)
+camera.SetViewAngle(30)
+renderer.ResetCameraClippingRange()
+
+window = vtkRenderWindow()
+window.SetMultiSamples(0)
+window.SetSize(SIZE, SIZE)
+window.AddRenderer(renderer)
+window.Render()
+grab = vtkWindowToImageFilter()
+grab.SetInput(window)
+grab.ReadFrontBufferOff()
+grab.Update()
+
+row = vtkImageAppend()
+row.SetAppendAxis(0)
+row.AddInputData(grab.GetOutput())
+for ignores in (False, True):
+    reference = vtkSingleScatteringReference()
+    reference.SetLightIgnoresClipping(ignores)
+    reference.Render(renderer, volume, SIZE, SIZE)
+    picture = reference.Composite()
+    copy = picture.NewInstance()
+    copy.DeepCopy(picture)
+    row.AddInputData(copy)
+writer = vtkPNGWriter()
+writer.SetInputConnection(row.GetOutputPort())
+writer.SetFileName(sys.argv[1] + "/clipping.png")
+writer.Write()
