@@ -21,6 +21,10 @@ PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/clipping_pictures.py" "$images"
 
+# Fire: black-body emission from a temperature array (rendering-model.md).
+PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
+  "$root/Documentation/scripts/fire_picture.py" "$images"
+
 # The transfer-function presets, each on data it is meant for (needs
 # ../shared/data; Documentation/io.md shows them).
 data="$root/../shared/data"

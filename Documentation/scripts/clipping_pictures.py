@@ -14,9 +14,9 @@ import sys
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolume
+
+from doc_scene import grab, window_around
 
 from tyndall import (vtkCosineNoiseSource, vtkParticipatingMediumProperty,
                      vtkSingleScatteringReference, vtkTransmittanceVolumeMapper)
@@ -51,35 +51,12 @@ volume = vtkVolume()
 volume.SetMapper(mapper)
 volume.SetProperty(medium)
 
-renderer = vtkRenderer()
-renderer.AddVolume(volume)
-renderer.SetBackground(0.2, 0.3, 0.45)
-sun = vtkLight()
-sun.SetLightTypeToSceneLight()
-sun.SetPositional(False)
-sun.SetPosition(1.0, 0.25, 0.15)  # from +x: across the clipped half
-sun.SetFocalPoint(0, 0, 0)
-sun.SetIntensity(0.8)
-renderer.AddLight(sun)
-camera = renderer.GetActiveCamera()
-camera.SetPosition(0, -0.6, 4.2)
-camera.SetFocalPoint(0, 0, 0)
-camera.SetViewAngle(30)
-renderer.ResetCameraClippingRange()
-
-window = vtkRenderWindow()
-window.SetMultiSamples(0)
-window.SetSize(SIZE, SIZE)
-window.AddRenderer(renderer)
-window.Render()
-grab = vtkWindowToImageFilter()
-grab.SetInput(window)
-grab.ReadFrontBufferOff()
-grab.Update()
+# The sun comes from +x: across the clipped half.
+window, renderer = window_around(volume, SIZE, (0.2, 0.3, 0.45), (1.0, 0.25, 0.15), 0.8)
 
 row = vtkImageAppend()
 row.SetAppendAxis(0)
-row.AddInputData(grab.GetOutput())
+row.AddInputData(grab(window))
 for ignores in (False, True):
     reference = vtkSingleScatteringReference()
     reference.SetLightIgnoresClipping(ignores)

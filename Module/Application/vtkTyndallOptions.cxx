@@ -123,6 +123,15 @@ const Spec kOptions[] = {
   { "emission-scale", "", Kind::Number, 0, Huge, false, "", "E", "0", "Scattering", Both,
     "emission strength (single scattering); the emission colour comes from the transfer "
     "function file's 'emission' lines, else its colour" },
+  { "emission-array", "", Kind::Text, 0, 0, false, "", "NAME", "", "Scattering", Both,
+    "emit from this array of the input (a .vdb: this grid, read beside the rendered one), per unit "
+    "length and independently of the density: fire from a temperature grid; --emission-scale "
+    "defaults to 1 with it" },
+  { "blackbody", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "the emission array is a temperature: black-body colours, luminance 1 at its hottest value "
+    "(else the transfer function's emission colour)" },
+  { "temperature-scale", "", Kind::Number, 0, Huge, false, "", "K", "1", "Scattering", Both,
+    "Kelvin per unit of the emission array (--blackbody)" },
   { "light-scale", "", Kind::Number, 0, Huge, false, "", "K", "4 pi", "Scattering", Both,
     "irradiance per unit of light intensity" },
   { "no-jitter", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,

@@ -199,6 +199,10 @@ bool vtkTyndallSceneBuilder::LoadMedium()
   {
     reader->SetGridName(o->GetText("grid"));
   }
+  if (o->IsSet("emission-array"))
+  {
+    reader->SetExtraGridName(o->GetText("emission-array")); // .vdb only
+  }
   if (o->IsSet("component"))
   {
     reader->SetComponent(static_cast<int>(o->GetNumber("component")));
@@ -297,7 +301,12 @@ void vtkTyndallSceneBuilder::ApplyOptions()
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
   this->ApplyDetail();
   this->ApplyClipping();
-  medium->SetEmissionScale(o->GetNumber("emission-scale"));
+  const bool emissionArray = o->IsSet("emission-array");
+  medium->SetEmissionArrayName(emissionArray ? o->GetText("emission-array") : nullptr);
+  medium->SetBlackbody(o->GetFlag("blackbody"));
+  medium->SetTemperatureScale(o->GetNumber("temperature-scale"));
+  medium->SetEmissionScale(
+    emissionArray && !o->IsSet("emission-scale") ? 1.0 : o->GetNumber("emission-scale"));
   if (medium->GetEmissionScale() > 0.0 && !medium->GetEmissionColor())
   {
     // The file's emission lines, else the colour.

@@ -162,6 +162,7 @@ vtkVolumeFileReader::~vtkVolumeFileReader()
 {
   this->SetFileName(nullptr);
   this->SetGridName(nullptr);
+  this->SetExtraGridName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -414,6 +415,36 @@ bool vtkVolumeFileReader::ReadOpenVDB(const std::string& path)
   if (this->GridName && *this->GridName)
   {
     reader->SetGridName(this->GridName);
+  }
+  if (this->ExtraGridName && *this->ExtraGridName)
+  {
+    if (!(this->GridName && *this->GridName))
+    {
+      // The automatic choice, made explicit so that the extra grid follows it.
+      reader->UpdateInformation();
+      std::string chosen;
+      for (int i = 0; i < reader->GetNumberOfGrids() && chosen.empty(); ++i)
+      {
+        if (std::string(reader->GetGridName(i)) == "density" &&
+          std::string(reader->GetGridValueType(i)) == "float")
+        {
+          chosen = "density";
+        }
+      }
+      for (int i = 0; i < reader->GetNumberOfGrids() && chosen.empty(); ++i)
+      {
+        if (std::string(reader->GetGridValueType(i)) == "float" &&
+          std::string(reader->GetGridName(i)) != this->ExtraGridName)
+        {
+          chosen = reader->GetGridName(i);
+        }
+      }
+      if (!chosen.empty())
+      {
+        reader->SetGridName(chosen.c_str());
+      }
+    }
+    reader->AddGridName(this->ExtraGridName);
   }
   return this->RunReader(reader, path, "OpenVDB");
 }

@@ -102,6 +102,15 @@ public:
    */
   vtkSetStringMacro(GridName);
   vtkGetStringMacro(GridName);
+
+  /**
+   * OpenVDB only: one more grid read into the same image as a further
+   * point-data array (vtkOpenVDBImageReader::AddGridName()), for example
+   * the "temperature" of a fire beside its "density"; default none. The
+   * rendered grid stays GridName's (or the automatic choice).
+   */
+  vtkSetStringMacro(ExtraGridName);
+  vtkGetStringMacro(ExtraGridName);
   ///@}
 
   ///@{
@@ -194,6 +203,7 @@ protected:
 
   char* FileName = nullptr;
   char* GridName = nullptr;
+  char* ExtraGridName = nullptr;
   int Component = -1;
   double MemoryLimit = 4096.0;
   int Frame = 0;

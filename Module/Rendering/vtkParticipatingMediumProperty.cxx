@@ -21,6 +21,7 @@ vtkParticipatingMediumProperty::vtkParticipatingMediumProperty()
 vtkParticipatingMediumProperty::~vtkParticipatingMediumProperty()
 {
   this->SetEmissionColor(nullptr);
+  this->SetEmissionArrayName(nullptr);
   this->SetDetailNoise(nullptr);
 }
 
@@ -50,6 +51,9 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetOctaveAnisotropy(medium->OctaveAnisotropy);
   this->SetEmissionScale(medium->EmissionScale);
   this->SetEmissionColor(medium->EmissionColor);
+  this->SetEmissionArrayName(medium->EmissionArrayName);
+  this->SetBlackbody(medium->Blackbody);
+  this->SetTemperatureScale(medium->TemperatureScale);
   this->SetDetailNoise(medium->DetailNoise);
 }
 
@@ -83,5 +87,10 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OctaveAnisotropy: " << this->OctaveAnisotropy << "\n";
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "EmissionColor: " << this->EmissionColor << "\n";
+  os << indent
+     << "EmissionArrayName: " << (this->EmissionArrayName ? this->EmissionArrayName : "(none)")
+     << "\n";
+  os << indent << "Blackbody: " << this->Blackbody << "\n";
+  os << indent << "TemperatureScale: " << this->TemperatureScale << "\n";
   os << indent << "DetailNoise: " << this->DetailNoise << "\n";
 }

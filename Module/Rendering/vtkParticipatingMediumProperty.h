@@ -144,6 +144,32 @@ public:
 
   ///@{
   /**
+   * Emission from a separate array, for fire and explosions
+   * (Documentation/rendering-model.md, "Fire: emission from a temperature
+   * array"). With EmissionArrayName set (default none) to a one-component
+   * array of the input image beside the rendered scalars (same point or
+   * cell association; a VDB's grid read with vtkOpenVDBImageReader::
+   * AddGridName()), single scattering emits, per unit length and
+   * independently of the extinction, EmissionScale times the emission colour
+   * of that array's value a: with Blackbody on (default off) the colour of a
+   * black body at a * TemperatureScale Kelvin (TemperatureScale in
+   * [0, 1e6], default 1; vtkBlackbody::LinearSRGB normalised to luminance 1
+   * at the array's largest temperature), else the EmissionColor transfer
+   * function of a (or the colour transfer function without one). Non-finite
+   * values emit nothing. The extinction and albedo still follow the
+   * rendered scalars. A name the input lacks is an error.
+   */
+  vtkSetStringMacro(EmissionArrayName);
+  vtkGetStringMacro(EmissionArrayName);
+  vtkSetMacro(Blackbody, bool);
+  vtkGetMacro(Blackbody, bool);
+  vtkBooleanMacro(Blackbody, bool);
+  vtkSetClampMacro(TemperatureScale, double, 0.0, 1.0e6);
+  vtkGetMacro(TemperatureScale, double);
+  ///@}
+
+  ///@{
+  /**
    * Procedural detail (default none): with a vtkCosineNoise set, the medium
    * is the volume's pre-classified extinction (each voxel's scalar through
    * the opacity transfer function, times DensityScale, interpolated
@@ -186,6 +212,9 @@ protected:
   double OctaveAnisotropy = 0.0;
   double EmissionScale = 0.0;
   vtkColorTransferFunction* EmissionColor = nullptr;
+  char* EmissionArrayName = nullptr;
+  bool Blackbody = false;
+  double TemperatureScale = 1.0;
   vtkCosineNoise* DetailNoise = nullptr;
 
 private:

@@ -154,10 +154,16 @@ private:
     {
       const double t = t0 + (m + 0.5) * dt;
       const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-      double sigma;
-      int k;
-      double f;
-      if (!this->Extinction(p, sigma, k, f))
+      double sigma = 0.0;
+      int k = 0;
+      double f = 0.0;
+      const bool dense = this->Extinction(p, sigma, k, f);
+      if (s.EmissionArray && s.Inside(p))
+      {
+        // Emission per unit length, attenuated within the step.
+        this->AddArrayEmission(p, Tv * (dense ? -std::expm1(-sigma * dt) / sigma : dt), L);
+      }
+      if (!dense)
       {
         continue;
       }
@@ -179,6 +185,21 @@ private:
     radiance[1] = L[1];
     radiance[2] = L[2];
     transmittance = Tv;
+  }
+
+  // L += weight * EmissionScale * the emission array's colour at index point p.
+  void AddArrayEmission(const double p[3], double weight, double L[3]) const
+  {
+    const Scene& s = *this->S;
+    int k;
+    double f;
+    s.Table->LocateEmission(s.Medium->EmissionValue(p), k, f);
+    double e[3];
+    vtkTyndallTransferTable::RGBAt(s.Table->Emission, k, f, e);
+    for (int c = 0; c < 3; ++c)
+    {
+      L[c] += weight * s.EmissionScale * e[c];
+    }
   }
 
   // The source term J at the table position (k, f), at the distance t along
@@ -206,7 +227,7 @@ private:
     {
       J[c] = color[c] * in[c];
     }
-    if (s.HasEmission)
+    if (s.HasEmission && !s.EmissionArray)
     {
       double e[3];
       vtkTyndallTransferTable::RGBAt(s.Table->Emission, k, f, e);

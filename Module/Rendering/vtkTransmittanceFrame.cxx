@@ -129,7 +129,10 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
     variant.DetailGroups = static_cast<int>((this->Detail->GetWaves().size() + 3) / 4);
   }
   variant.MissingData = this->Textures && this->Textures->GetValidityTexture() != nullptr;
-  variant.SkipEmpty = this->Integrator.SkipEmptySpace;
+  // Emission from a separate array glows where the extinction is 0: no
+  // block is empty then.
+  variant.SkipEmpty =
+    this->Integrator.SkipEmptySpace && !(this->Medium && this->Medium->GetEmissionFromArray());
   variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
   return variant;
 }
@@ -186,6 +189,14 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
   this->SetClipUniforms(program);
+  if (vtkTextureObject* emission = this->Textures->GetEmissionTexture())
+  {
+    // Declared only by the ray cast's emission-array variant.
+    program->SetUniformi("emissionTexture", emission->GetTextureUnit());
+    const float toTable[2] = { static_cast<float>(table.EmissionTextureScale()),
+      static_cast<float>(table.EmissionTextureShift()) };
+    program->SetUniform2f("emissionToTable", toTable);
+  }
   this->SetDetailUniforms(program);
 
   int positional[kMaxLights] = { 0 }, hasFrustum[kMaxLights] = { 0 };

@@ -157,6 +157,10 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
     vtkErrorWithObjectMacro(reporter, << "Could not create the volume's 3-D texture.");
     return false;
   }
+  if (!this->UploadEmission(window, medium, reporter))
+  {
+    return false;
+  }
   if (!missing)
   {
     if (this->ValidityTexture)
@@ -175,6 +179,52 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
         this->Dimensions[2], 1, VTK_UNSIGNED_CHAR, valid.data()))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not create the volume's validity texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadEmission(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  const std::vector<float>& emission = medium.GetEmissionValues();
+  if (emission.empty())
+  {
+    if (this->EmissionTexture)
+    {
+      this->EmissionTexture->ReleaseGraphicsResources(window);
+    }
+    this->EmissionTexture = nullptr;
+    return true;
+  }
+  // Every Factor-th sample, as the scalars.
+  const int* full = medium.GetDimensions();
+  const int* dims = this->Dimensions;
+  std::vector<float> values(static_cast<size_t>(dims[0]) * dims[1] * dims[2]);
+  size_t i = 0;
+  for (int z = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x, ++i)
+      {
+        values[i] = emission[(static_cast<size_t>(z) * this->Factor * full[1] +
+                               static_cast<size_t>(y) * this->Factor) *
+            full[0] +
+          static_cast<size_t>(x) * this->Factor];
+      }
+    }
+  }
+  if (!this->EmissionTexture)
+  {
+    this->EmissionTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTransmittanceOffscreenDraw::SetClamped(this->EmissionTexture, window, true);
+  if (!this->EmissionTexture->Create3DFromRaw(
+        dims[0], dims[1], dims[2], 1, VTK_FLOAT, values.data()))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the emission array's 3-D texture.");
     return false;
   }
   return true;
@@ -261,8 +311,9 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
 //------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
-         this->TransferTexture.Get(), this->BlockTexture.Get(), this->DetailTexture.Get() })
+  for (vtkTextureObject* texture :
+    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get(),
+      this->BlockTexture.Get(), this->DetailTexture.Get(), this->EmissionTexture.Get() })
   {
     if (texture)
     {
@@ -274,6 +325,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->TransferTexture = nullptr;
   this->BlockTexture = nullptr;
   this->DetailTexture = nullptr;
+  this->EmissionTexture = nullptr;
   this->DetailTime = 0;
   this->UploadedMedium = nullptr;
   this->ScalarsTime = this->TableTime = 0;

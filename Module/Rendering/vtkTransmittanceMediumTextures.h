@@ -63,6 +63,8 @@ public:
   vtkTextureObject* GetDetailTexture() const { return this->DetailTexture; }
 
   vtkTextureObject* GetVolumeTexture() const { return this->VolumeTexture; }
+  /// Null without an emission array (vtkTyndallGridMedium::GetEmissionValues()).
+  vtkTextureObject* GetEmissionTexture() const { return this->EmissionTexture; }
   /// Null when the scalars hold no NaN.
   vtkTextureObject* GetValidityTexture() const { return this->ValidityTexture; }
   vtkTextureObject* GetTransferTexture() const { return this->TransferTexture; }
@@ -93,6 +95,8 @@ private:
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadTable(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadEmission(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadMajorants(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
 
@@ -101,6 +105,7 @@ private:
   vtkSmartPointer<vtkTextureObject> TransferTexture;
   vtkSmartPointer<vtkTextureObject> BlockTexture;
   vtkSmartPointer<vtkTextureObject> DetailTexture;
+  vtkSmartPointer<vtkTextureObject> EmissionTexture;
   vtkMTimeType DetailTime = 0;
   vtkTyndallMajorantGrid Majorants;
   double BlockRangeTime = 0.0;

@@ -146,7 +146,9 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   {
     variant.BruteForceLights |= light.Method == vtkTransmittanceMapMath::BRUTE_FORCE;
   }
-  variant.Emission = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
+  const bool emits = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
+  variant.EmissionArray = emits && frame.Medium->GetEmissionFromArray();
+  variant.Emission = emits && !variant.EmissionArray;
   variant.Octaves = frame.Medium->GetScatteringOctaves();
   return variant;
 }

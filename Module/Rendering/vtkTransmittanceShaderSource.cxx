@@ -54,6 +54,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("ADAPTIVE_MAPS", variant.AdaptiveMaps ? 1 : 0);
   define("OCCLUSION", variant.Occlusion ? 1 : 0);
   define("EMISSION", variant.Emission ? 1 : 0);
+  define("EMISSION_ARRAY", variant.EmissionArray ? 1 : 0);
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);

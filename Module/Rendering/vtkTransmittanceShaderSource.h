@@ -43,9 +43,10 @@
  *   family), TYNDALL_LIGHT_CACHE (map lights read the transmittance cache
  *   of vtkTransmittanceLightCachePass instead), TYNDALL_ADAPTIVE_MAPS (the bounds layer),
  * TYNDALL_OCCLUSION (opaque occluders), TYNDALL_EMISSION, TYNDALL_BRUTE_FORCE_LIGHTS (a light
- * marches to the light) and TYNDALL_OCTAVES (multiple-scattering octaves, 1: none): only what the
- * frame uses is compiled in (a None frame fetched 6 textures per sample, all but 2 of them unused,
- * and ran a masked brute-force light march, before).
+ * marches to the light), TYNDALL_EMISSION_ARRAY (emission from a separate array,
+ * vtkTyndallGridMedium::GetEmissionValues()) and TYNDALL_OCTAVES (multiple-scattering octaves, 1:
+ * none): only what the frame uses is compiled in (a None frame fetched 6 textures per sample, all
+ * but 2 of them unused, and ran a masked brute-force light march, before).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -85,7 +86,8 @@ public:
     bool MapExtinction = false; // the maps hold extinction (ETM), else transmittance (TFM)
     bool AdaptiveMaps = false;
     bool Occlusion = false;
-    bool Emission = false;
+    bool Emission = false;         // emission per unit extinction (the colour's table)
+    bool EmissionArray = false;    // emission per unit length from a separate array
     bool Accumulate = false;       // continues the rays of an earlier pass
     bool BruteForceLights = false; // some light marches to the light
     bool LightCache = false;       // map lights read the transmittance cache

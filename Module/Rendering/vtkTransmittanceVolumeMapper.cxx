@@ -347,9 +347,10 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   settings.CacheSize = this->TransmittanceCache ? this->TransmittanceCacheSize : 0;
   in.Frame.Prepare(renderer, window, in.Scene, *in.Textures, settings);
 
-  vtkTransmittanceScopedTextures medium({ in.Textures->GetVolumeTexture(),
-    in.Textures->GetValidityTexture(), in.Textures->GetTransferTexture(),
-    in.Textures->GetBlockTexture(), in.Textures->GetDetailTexture() });
+  vtkTransmittanceScopedTextures medium(
+    { in.Textures->GetVolumeTexture(), in.Textures->GetValidityTexture(),
+      in.Textures->GetTransferTexture(), in.Textures->GetBlockTexture(),
+      in.Textures->GetDetailTexture(), in.Textures->GetEmissionTexture() });
   vtkTransmittanceRayCastPass::Inputs inputs;
   if (in.Occlusion->Render(in.Frame, this))
   {

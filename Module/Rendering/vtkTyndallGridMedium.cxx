@@ -3,6 +3,8 @@
 #include "vtkAbstractMapper.h"
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkAlgorithm.h"
+#include "vtkBlackbody.h"
+#include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -14,6 +16,7 @@
 #include "vtkObject.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -65,7 +68,8 @@ bool AllFinite(const double* v, int n)
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
 {
-  this->Valid = this->UpdateScalars(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
+  this->Valid = this->UpdateScalars(volume, reporter) &&
+    this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
     this->UpdateTable(volume, reporter);
   if (this->Valid && this->Clip.Update(volume, this->IndexToWorld, this->IndexToData, reporter))
   {
@@ -224,6 +228,113 @@ bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalar
 }
 
 //------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter)
+{
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
+  const char* name = medium ? medium->GetEmissionArrayName() : nullptr;
+  auto* image = vtkImageData::SafeDownCast(volume->GetMapper()->GetDataSetInput());
+  vtkDataSetAttributes* data = this->CellScalars
+    ? static_cast<vtkDataSetAttributes*>(image->GetCellData())
+    : static_cast<vtkDataSetAttributes*>(image->GetPointData());
+  vtkDataArray* array = name && *name ? data->GetArray(name) : nullptr;
+  const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(array)),
+    array ? static_cast<double>(array->GetMTime()) : -1.0, static_cast<double>(image->GetMTime()),
+    static_cast<double>(reinterpret_cast<uintptr_t>(this->Scalars.Get())) };
+  const bool wanted = name && *name;
+  if (!wanted)
+  {
+    if (!this->EmissionValues.empty())
+    {
+      this->EmissionValues.clear();
+      this->ScalarsTime.Modified(); // the textures drop the emission array
+    }
+    this->EmissionKey.clear();
+    return true;
+  }
+  if (!array || array->GetNumberOfComponents() != 1 ||
+    array->GetNumberOfTuples() != this->Scalars->GetNumberOfTuples())
+  {
+    if (array)
+    {
+      vtkErrorWithObjectMacro(reporter, << "The emission array '" << name
+                                        << "' must have one component and one value per sample "
+                                           "of the rendered scalars.");
+    }
+    else
+    {
+      vtkErrorWithObjectMacro(reporter, << "The emission array '" << name
+                                        << "' is not in the input's "
+                                        << (this->CellScalars ? "cell" : "point") << " data.");
+    }
+    this->EmissionValues.clear();
+    this->EmissionKey.clear();
+    return false;
+  }
+  if (key == this->EmissionKey)
+  {
+    return true;
+  }
+  this->EmissionKey = key;
+  const vtkIdType n = array->GetNumberOfTuples();
+  this->EmissionValues.resize(static_cast<size_t>(n));
+  double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = array->GetComponent(i, 0);
+    this->EmissionValues[i] = static_cast<float>(v);
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  if (!(lo <= hi))
+  {
+    lo = hi = 0.0;
+  }
+  for (float& v : this->EmissionValues)
+  {
+    v = std::isfinite(v) ? v : static_cast<float>(lo); // non-finite: the coolest value
+  }
+  this->EmissionRange[0] = lo;
+  this->EmissionRange[1] = hi;
+  this->EmissionArrayTime.Modified();
+  this->ScalarsTime.Modified(); // re-upload with the emission texture
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::EmissionValue(const double p[3]) const
+{
+  // Trilinear, clamped to the samples at the border (the scalars' Sampler).
+  int i0[3];
+  double f[3];
+  vtkIdType stride[3] = { 1, this->Dimensions[0],
+    static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] };
+  for (int a = 0; a < 3; ++a)
+  {
+    const double x = std::min(std::max(p[a], 0.0), double(this->Dimensions[a] - 1));
+    i0[a] = std::min(static_cast<int>(x), std::max(this->Dimensions[a] - 2, 0));
+    f[a] = x - i0[a];
+  }
+  const float* base = this->EmissionValues.data() + i0[0] + i0[1] * stride[1] + i0[2] * stride[2];
+  double value = 0.0;
+  for (int c = 0; c < 8; ++c)
+  {
+    double w = 1.0;
+    vtkIdType offset = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int bit = (c >> a) & 1;
+      w *= bit ? f[a] : 1.0 - f[a];
+      offset += bit && this->Dimensions[a] > 1 ? stride[a] : 0;
+    }
+    value += w * base[offset];
+  }
+  return value;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter)
 {
   auto* image = vtkImageData::SafeDownCast(volume->GetMapper()->GetDataSetInput());
@@ -306,8 +417,9 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   this->OctaveFactors[2] = source->GetOctaveAnisotropy();
   this->EmissionScale = source->GetEmissionScale();
   vtkColorTransferFunction* emission = medium ? medium->GetEmissionColor() : nullptr;
+  const bool fromArray = !this->EmissionValues.empty();
   this->HasEmission = this->ScatteringModel == vtkParticipatingMediumProperty::SINGLE_SCATTERING &&
-    emission && this->EmissionScale > 0.0;
+    (emission || fromArray) && this->EmissionScale > 0.0;
 
   // What the table depends on (not the property's other settings: changing
   // the anisotropy or the ambient must not rebuild the GPU's maps), the
@@ -327,6 +439,14 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
          : static_cast<vtkObject*>(property->GetRGBTransferFunction(0)));
   identify(key, emission);
+  const bool blackbody = fromArray && medium->GetBlackbody();
+  const double temperatureScale = medium ? medium->GetTemperatureScale() : 1.0;
+  if (fromArray)
+  {
+    key.insert(key.end(),
+      { this->EmissionRange[0], this->EmissionRange[1], double(blackbody), temperatureScale,
+        static_cast<double>(this->EmissionArrayTime.GetMTime()) });
+  }
   if (key == this->TableKey)
   {
     return true;
@@ -339,6 +459,30 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     this->ExtinctionKey.clear();
     vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
     return false;
+  }
+  if (fromArray)
+  {
+    // The emission colour over the array's range: a black body normalised
+    // to luminance 1 at the hottest value, or a colour transfer function.
+    const double hottest = this->EmissionRange[1] * temperatureScale;
+    vtkColorTransferFunction* colors =
+      emission ? emission : (gray ? nullptr : property->GetRGBTransferFunction(0));
+    this->Table.TabulateEmission(this->EmissionRange[0], this->EmissionRange[1],
+      [&](double v, double rgb[3])
+      {
+        if (blackbody)
+        {
+          vtkBlackbody::LinearSRGB(v * temperatureScale, hottest, rgb);
+        }
+        else if (colors)
+        {
+          colors->GetColor(v, rgb);
+        }
+        else
+        {
+          rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(v);
+        }
+      });
   }
   if (extinction != this->ExtinctionKey)
   {

@@ -104,6 +104,20 @@ public:
   /// The length of the box's diagonal in world units.
   double GetWorldDiagonal() const;
 
+  ///@{
+  /**
+   * Emission from a separate array (vtkParticipatingMediumProperty::
+   * EmissionArrayName): its values, one per sample like the scalars
+   * (non-finite values replaced by the finite minimum; empty without one),
+   * their finite range, and the value at a field index point (trilinear,
+   * clamped at the border like the scalars).
+   */
+  const std::vector<float>& GetEmissionValues() const { return this->EmissionValues; }
+  bool GetEmissionFromArray() const { return !this->EmissionValues.empty(); }
+  const double* GetEmissionRange() const { return this->EmissionRange; }
+  double EmissionValue(const double p[3]) const;
+  ///@}
+
   /// What the mapper's clipping planes and cropping keep.
   const vtkTyndallClipRegion& GetClip() const { return this->Clip; }
 
@@ -191,6 +205,7 @@ private:
   bool UpdateScalars(vtkVolume* volume, vtkObject* reporter);
   bool ReadScalars(vtkImageData* image, vtkDataArray* scalars, int cellFlag, std::ostream& error,
     vtkObject* reporter);
+  bool UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter);
   bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
   bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
 
@@ -215,6 +230,10 @@ private:
   double WorldToIndex[16];
 
   vtkTyndallClipRegion Clip;
+  std::vector<float> EmissionValues;
+  double EmissionRange[2] = { 0.0, 0.0 };
+  std::vector<double> EmissionKey;
+  vtkTimeStamp EmissionArrayTime;
 
   // The table and the parameters.
   vtkTyndallTransferTable Table;

@@ -92,6 +92,8 @@ void vtkTyndallReferenceScene::SetUpMedium(const vtkTyndallGridMedium& medium)
   this->HasEmission = medium.GetHasEmission();
   this->Table = &medium.GetTable();
   this->Clip = medium.GetClip().Enabled() ? &medium.GetClip() : nullptr;
+  this->Medium = &medium;
+  this->EmissionArray = this->HasEmission && medium.GetEmissionFromArray();
 }
 
 //------------------------------------------------------------------------------

@@ -91,6 +91,8 @@ public:
   const vtkTyndallTransferTable* Table = nullptr;
   const vtkTyndallDetailMedium* Detail = nullptr; // procedural detail, or null
   const vtkTyndallClipRegion* Clip = nullptr;     // clipping planes or cropping, or null
+  const vtkTyndallGridMedium* Medium = nullptr;   // the grid medium read
+  bool EmissionArray = false;                     // emission per unit length from a separate array
 
   /// Whether the field index point p is kept by the clipping and cropping.
   bool Inside(const double p[3]) const { return !this->Clip || this->Clip->InsideIndex(p); }

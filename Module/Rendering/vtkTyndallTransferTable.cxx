@@ -24,6 +24,7 @@ bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransfe
   }
   this->Minimum = lo;
   this->Maximum = hi;
+  this->EmissionFromArray = false;
   this->Scale = this->Maximum > this->Minimum ? (Size - 1) / (this->Maximum - this->Minimum) : 0.0;
 
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
@@ -53,6 +54,22 @@ bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransfe
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallTransferTable::TabulateEmission(
+  double lo, double hi, const std::function<void(double, double[3])>& color)
+{
+  this->EmissionFromArray = true;
+  this->EmissionMinimum = lo;
+  this->EmissionEntries = hi > lo ? (Size - 1) / (hi - lo) : 0.0;
+  this->Emission.assign(3 * Size, 0.0);
+  for (int i = 0; i < Size; ++i)
+  {
+    const double v =
+      std::min(this->EmissionEntries > 0.0 ? lo + i / this->EmissionEntries : lo, hi);
+    color(v, this->Emission.data() + 3 * i);
+  }
 }
 
 //------------------------------------------------------------------------------

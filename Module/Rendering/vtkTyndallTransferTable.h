@@ -29,8 +29,9 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 
-#include <string> // For std::string
-#include <vector> // For std::vector
+#include <functional> // For std::function
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
 class vtkColorTransferFunction;
 class vtkVolumeProperty;
@@ -64,10 +65,38 @@ public:
   std::vector<double> Albedo;   // RGB
   std::vector<double> Emission; // RGB
 
+  ///@{
+  /**
+   * Emission from a separate array (vtkParticipatingMediumProperty::
+   * EmissionArrayName): the Emission entries then tabulate the emission
+   * colour over that array's finite range [lo, hi] instead, at
+   * EmissionMinimum + i / EmissionEntries; `color(v, rgb)` gives the colour
+   * of value v. LocateEmission() and EmissionTextureScale() / Shift() are
+   * Locate() and TextureScale() / Shift() for it.
+   */
+  void TabulateEmission(double lo, double hi, const std::function<void(double, double[3])>& color);
+  bool EmissionFromArray = false;
+  double EmissionMinimum = 0.0;
+  double EmissionEntries = 0.0;
+  void LocateEmission(double v, int& k, double& f) const
+  {
+    Position((v - this->EmissionMinimum) * this->EmissionEntries, k, f);
+  }
+  double EmissionTextureScale() const { return this->EmissionEntries / Size; }
+  double EmissionTextureShift() const
+  {
+    return 0.5 / Size - this->EmissionMinimum * this->EmissionEntries / Size;
+  }
+  ///@}
+
   /// The table position of scalar s (see the class description).
   void Locate(double s, int& k, double& f) const
   {
-    double x = (s - this->Minimum) * this->Scale;
+    Position((s - this->Minimum) * this->Scale, k, f);
+  }
+  /// Entry k and fraction f of the table position x (clamped to the table).
+  static void Position(double x, int& k, double& f)
+  {
     x = x > 0.0 ? (x < Size - 1 ? x : Size - 1) : 0.0;
     k = static_cast<int>(x);
     k = k < Size - 2 ? k : Size - 2;

@@ -541,6 +541,13 @@ bool SetUpSampling(
                    "planes or cropping the medium is rendered with DELTA_TRACKING.");
   }
   const vtkTyndallGridMedium& medium = tyndall.GetMedium();
+  if (scene.EmissionArray)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: emission from a separate array "
+                                         "(EmissionArrayName) is not supported by the path "
+                                         "tracer; vtkSingleScatteringReference renders it.");
+    return false;
+  }
   scene.Majorant =
     scene.ClosedForm ? 0.0 : (scene.Detail ? scene.Detail->GetMajorant() : GridMajorant(medium));
   if (!std::isfinite(scene.Majorant) ||

@@ -605,6 +605,28 @@ int MakeData(const std::vector<std::string>& args)
     writer->Write();
   }
   {
+    // Fire: the blob as the density and a "temperature" array (Kelvin),
+    // 600 K at the top rising to 2200 K at the bottom.
+    auto fire = Blob(1);
+    double bounds[6];
+    fire->GetBounds(bounds);
+    vtkNew<vtkFloatArray> temperature;
+    temperature->SetName("temperature");
+    temperature->SetNumberOfTuples(fire->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < fire->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      fire->GetPoint(i, x);
+      const double up = (x[1] - bounds[2]) / (bounds[3] - bounds[2]);
+      temperature->SetValue(i, static_cast<float>(2200.0 - 1600.0 * up));
+    }
+    fire->GetPointData()->AddArray(temperature);
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(fire);
+    writer->SetFileName((dir + "/fire.vti").c_str());
+    writer->Write();
+  }
+  {
     // A single slice: not a volume.
     auto flat = vtkSmartPointer<vtkImageData>::New();
     flat->SetDimensions(16, 16, 1);

@@ -1,6 +1,7 @@
 # Tests of Tyndall::Core (included from CMakeLists.txt).
 vtk_add_test_cxx(TyndallCoreCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
+  TestBlackbody.cxx
   TestCosineNoiseClosedForm.cxx
   TestCosineNoiseSampleDistance.cxx
   TestCosineNoiseSource.cxx

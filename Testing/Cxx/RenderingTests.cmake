@@ -22,6 +22,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOctaves.cxx
   TestTransmittanceMapperClipping.cxx
+  TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx

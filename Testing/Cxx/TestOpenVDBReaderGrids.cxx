@@ -12,6 +12,7 @@
 #include "vtkOpenVDBImageReader.h"
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkVolumeFileReader.h"
 
 #include "TyndallTestOpenVDB.h"
 
@@ -150,6 +151,26 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
   const std::string multi = dir + "/multi.vdb";
   // "density" is not first: the automatic choice must still find it.
   WriteGrids(multi, { temperature, other, density, velocity, flow });
+
+  // vtkVolumeFileReader::ExtraGridName (tyndall-render --emission-array):
+  // the automatic choice rendered, the extra grid beside it in one image.
+  {
+    vtkNew<vtkVolumeFileReader> files;
+    files->SetFileName(multi.c_str());
+    files->SetExtraGridName("temperature");
+    files->Update();
+    vtkPointData* data = files->GetOutput()->GetPointData();
+    vtkDataArray* scalars = data->GetScalars();
+    vtkDataArray* heat = data->GetArray("temperature");
+    double range[2] = { 0.0, 0.0 };
+    if (heat)
+    {
+      heat->GetRange(range);
+    }
+    Check(scalars && scalars->GetName() && std::string(scalars->GetName()) == "density" && heat &&
+        range[1] == 500.0,
+      "ExtraGridName: density rendered, temperature (up to 500) beside it");
+  }
 
   // Information and the automatic choice.
   reader->SetFileName(multi.c_str());

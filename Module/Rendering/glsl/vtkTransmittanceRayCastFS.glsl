@@ -132,6 +132,28 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
 #endif
 }
 
+#if TYNDALL_EMISSION_ARRAY
+// Emission from a separate array (fire: a temperature grid): the array's
+// value at x, through the emission row of the table (blackbody or colour
+// function, vtkTyndallTransferTable::TabulateEmission); per unit length,
+// independent of the extinction; nothing where the medium is clipped.
+uniform sampler3D emissionTexture;
+uniform vec2 emissionToTable; // table coordinate = value * x + y
+
+vec3 tyndallArrayEmission(vec3 x)
+{
+#if TYNDALL_CLIP
+  if (tyndallClipped(x))
+  {
+    return vec3(0.0);
+  }
+#endif
+  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
+  float value = texture(emissionTexture, q * volumeTexScale + volumeTexShift).r;
+  return tyndallEmissionColor(value * emissionToTable.x + emissionToTable.y);
+}
+#endif
+
 #if TYNDALL_OCTAVES > 1
 uniform vec3 octaveFactors; // a (scattering), b (extinction), c (anisotropy)
 #endif
@@ -339,6 +361,16 @@ void main()
     vec3 color;
     float tableCoord;
     float sigma = tyndallMedium(x, color, tableCoord);
+#if TYNDALL_EMISSION_ARRAY
+    // Emission per unit length over the step, attenuated within it:
+    // (1 - exp(-sigma dt)) / sigma; its series dt (1 - sigma dt / 2) where
+    // sigma dt is small (1 - exp() cancels in single precision there).
+    {
+      float depth = sigma * dt;
+      radiance += Tv * emissionScale * tyndallArrayEmission(x) *
+        (depth > 1e-3 ? (1.0 - exp(-depth)) / sigma : dt * (1.0 - 0.5 * depth));
+    }
+#endif
     if (sigma > 0.0)
     {
       float stepOpacity = 1.0 - exp(-sigma * dt);
