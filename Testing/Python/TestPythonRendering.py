@@ -100,6 +100,30 @@ camera.Azimuth(30)
 window.Render()
 check(builds == 1 and mapper.GetMapBuildCount() == 1, "orbiting reuses the map")
 
+# A clipping plane from Python: the maps are rebuilt and the picture changes.
+from vtkmodules.vtkCommonDataModel import vtkPlane  # noqa: E402
+plane = vtkPlane()
+plane.SetOrigin(0, 0, 0)
+plane.SetNormal(-1, 0, 0)
+mapper.AddClippingPlane(plane)
+window.Render()
+check(mapper.GetMapBuildCount() == 2, "a clipping plane rebuilds the maps")
+mapper.RemoveAllClippingPlanes()
+
+# The medium's newer settings are wrapped: octaves, the emission array,
+# black bodies.
+from tyndall import vtkBlackbody, vtkParticipatingMediumProperty  # noqa: E402
+medium = vtkParticipatingMediumProperty()
+medium.SetScatteringOctaves(20)
+check(medium.GetScatteringOctaves() == 8, "octaves clamp to 8")
+medium.SetEmissionArrayName("temperature")
+medium.BlackbodyOn()
+check(medium.GetEmissionArrayName() == "temperature" and medium.GetBlackbody(),
+      "emission array and black body")
+rgb = [0.0, 0.0, 0.0]
+vtkBlackbody.LinearSRGB(1500.0, 1500.0, rgb)
+check(rgb[0] > rgb[1] > rgb[2] >= 0.0, "1500 K is orange from Python: %s" % rgb)
+
 if failures:
     sys.exit(1)
 print("ok")
