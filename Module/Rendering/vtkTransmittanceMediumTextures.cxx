@@ -71,6 +71,16 @@ bool vtkTransmittanceMediumTextures::Update(
     }
     this->ScalarsTime = medium.GetScalarsTime();
   }
+  // The emission array: its own upload, at the scalars' sampling (Factor).
+  if (newScalars || medium.GetEmissionTime() > this->EmissionTime)
+  {
+    this->EmissionTime = 0;
+    if (!this->UploadEmission(window, medium, reporter))
+    {
+      return false;
+    }
+    this->EmissionTime = medium.GetEmissionTime();
+  }
   if (!sameMedium || medium.GetTableTime() > this->TableTime || newScalars)
   {
     this->TableTime = 0;
@@ -155,10 +165,6 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
         this->Dimensions[0], this->Dimensions[1], this->Dimensions[2], 1, VTK_FLOAT, values.data()))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not create the volume's 3-D texture.");
-    return false;
-  }
-  if (!this->UploadEmission(window, medium, reporter))
-  {
     return false;
   }
   if (!missing)
@@ -328,7 +334,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->EmissionTexture = nullptr;
   this->DetailTime = 0;
   this->UploadedMedium = nullptr;
-  this->ScalarsTime = this->TableTime = 0;
+  this->ScalarsTime = this->TableTime = this->EmissionTime = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -111,6 +111,7 @@ private:
   double BlockRangeTime = 0.0;
   double MajorantTime = 0.0;
   vtkMTimeType ScalarsTime = 0;
+  vtkMTimeType EmissionTime = 0;
   vtkMTimeType TableTime = 0;
   const vtkTyndallGridMedium* UploadedMedium = nullptr;
   int Dimensions[3] = { 0, 0, 0 };

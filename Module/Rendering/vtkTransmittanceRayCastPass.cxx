@@ -80,7 +80,7 @@ bool vtkTransmittanceRayCastPass::Render(
   program->SetUniformf("stepLength", static_cast<float>(step));
   if (sampled)
   {
-    program->SetUniformi("detailFrame", inputs.DetailFrame);
+    program->SetUniformi("detailFrame", inputs.HistoryFrames);
   }
   this->LastPassCount = passes;
   if (direct)

@@ -24,8 +24,9 @@
  * With procedural detail and Inputs::DetailSamples > 0 the rays are not
  * marched: each pixel draws that many free-flight distances in closed form
  * (vtkTransmittanceDetailFS.glsl) and shades them, one pass; the pictures
- * of successive still frames (Inputs::DetailFrame) are averaged by the
- * accumulation pass (Inputs::HistoryFrames, GetLastHistoryFrames()). The
+ * of successive still frames are averaged by the accumulation pass
+ * (Inputs::HistoryFrames, GetLastHistoryFrames(), which also picks each
+ * frame's samples). The
  * samples are fewer when a pixel's loop iterations (a walk over the
  * shape's cells, each sample's solve and brute-force light walks) would
  * pass IterationBudget (GetLastDetailSamples()).
@@ -74,9 +75,8 @@ public:
     double StepScale = 1.0; // camera steps StepScale times the frame's
     /// Procedural detail: free-flight samples per pixel drawn in closed form (0: march).
     int DetailSamples = 0;
-    /// The still frame's index, which picks the samples (DetailSamples > 0).
-    int DetailFrame = 0;
-    /// Frames already averaged into the history (DetailSamples > 0; 0: start anew).
+    /// Frames already averaged into the history (DetailSamples > 0; 0: start
+    /// anew); also the still frame's index, which picks its samples.
     int HistoryFrames = 0;
   };
 

@@ -187,7 +187,6 @@ void vtkTransmittanceVolumeMapper::vtkInternals::UpdateStillFrame(
 {
   inputs.DetailSamples = self->GetDetailSamplesPerPixel();
   inputs.HistoryFrames = 0;
-  inputs.DetailFrame = 0;
   if (vtkTransmittanceRayCastPass::DetailSamplesFor(this->Frame, inputs.DetailSamples) == 0)
   {
     this->StillKey.clear();
@@ -204,7 +203,6 @@ void vtkTransmittanceVolumeMapper::vtkInternals::UpdateStillFrame(
     same = std::abs(a - b) <= 1e-6 * std::max({ 1.0, std::abs(a), std::abs(b) });
   }
   inputs.HistoryFrames = same ? this->RayCast->GetLastHistoryFrames() : 0;
-  inputs.DetailFrame = inputs.HistoryFrames;
 }
 
 //------------------------------------------------------------------------------

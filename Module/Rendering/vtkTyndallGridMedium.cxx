@@ -246,7 +246,7 @@ bool vtkTyndallGridMedium::UpdateEmissionArray(vtkVolume* volume, vtkObject* rep
     if (!this->EmissionValues.empty())
     {
       this->EmissionValues.clear();
-      this->ScalarsTime.Modified(); // the textures drop the emission array
+      this->EmissionArrayTime.Modified(); // the GPU drops its texture
     }
     this->EmissionKey.clear();
     return true;
@@ -299,39 +299,13 @@ bool vtkTyndallGridMedium::UpdateEmissionArray(vtkVolume* volume, vtkObject* rep
   this->EmissionRange[0] = lo;
   this->EmissionRange[1] = hi;
   this->EmissionArrayTime.Modified();
-  this->ScalarsTime.Modified(); // re-upload with the emission texture
   return true;
 }
 
 //------------------------------------------------------------------------------
 double vtkTyndallGridMedium::EmissionValue(const double p[3]) const
 {
-  // Trilinear, clamped to the samples at the border (the scalars' Sampler).
-  int i0[3];
-  double f[3];
-  vtkIdType stride[3] = { 1, this->Dimensions[0],
-    static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] };
-  for (int a = 0; a < 3; ++a)
-  {
-    const double x = std::min(std::max(p[a], 0.0), double(this->Dimensions[a] - 1));
-    i0[a] = std::min(static_cast<int>(x), std::max(this->Dimensions[a] - 2, 0));
-    f[a] = x - i0[a];
-  }
-  const float* base = this->EmissionValues.data() + i0[0] + i0[1] * stride[1] + i0[2] * stride[2];
-  double value = 0.0;
-  for (int c = 0; c < 8; ++c)
-  {
-    double w = 1.0;
-    vtkIdType offset = 0;
-    for (int a = 0; a < 3; ++a)
-    {
-      const int bit = (c >> a) & 1;
-      w *= bit ? f[a] : 1.0 - f[a];
-      offset += bit && this->Dimensions[a] > 1 ? stride[a] : 0;
-    }
-    value += w * base[offset];
-  }
-  return value;
+  return Sampler<float>(*this, this->EmissionValues.data()).Scalar(p);
 }
 
 //------------------------------------------------------------------------------

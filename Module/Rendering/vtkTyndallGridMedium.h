@@ -116,6 +116,8 @@ public:
   bool GetEmissionFromArray() const { return !this->EmissionValues.empty(); }
   const double* GetEmissionRange() const { return this->EmissionRange; }
   double EmissionValue(const double p[3]) const;
+  /// When the emission array (or its absence) last changed.
+  vtkMTimeType GetEmissionTime() const { return this->EmissionArrayTime.GetMTime(); }
   ///@}
 
   /// What the mapper's clipping planes and cropping keep.
@@ -177,12 +179,14 @@ public:
   {
   public:
     Sampler(const vtkTyndallGridMedium& medium);
+    /// Another array of the same layout (the emission array), not cleaned.
+    Sampler(const vtkTyndallGridMedium& medium, const T* data);
     double Scalar(const double p[3]) const;
 
   private:
     double Value(T v) const
     {
-      if (std::numeric_limits<T>::has_quiet_NaN)
+      if (std::numeric_limits<T>::has_quiet_NaN && this->Clean)
       {
         return this->Medium->Clean(static_cast<double>(v));
       }
@@ -190,6 +194,7 @@ public:
     }
     const vtkTyndallGridMedium* Medium;
     const T* Data;
+    bool Clean = true;
     int Dims[3];
     vtkIdType Stride[3];
   };
@@ -265,6 +270,15 @@ vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium)
   this->Stride[0] = 1;
   this->Stride[1] = this->Dims[0];
   this->Stride[2] = static_cast<vtkIdType>(this->Dims[0]) * this->Dims[1];
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, const T* data)
+  : Sampler(medium)
+{
+  this->Data = data;
+  this->Clean = false;
 }
 
 //------------------------------------------------------------------------------

@@ -120,8 +120,8 @@ int TestTransmittanceMapperFire(int, char*[])
   // 1. GPU against CPU.
   const int methods[2] = { vtkTransmittanceVolumeMapper::BRUTE_FORCE,
     vtkTransmittanceVolumeMapper::ADAPTIVE_ETM };
-  // Measured 56.7 and 54.5 dB on llvmpipe (the bar: 40).
-  const double floors[2] = { 55.0, 53.0 };
+  // Measured 58.6 and 55.5 dB on llvmpipe (the bar: 40).
+  const double floors[2] = { 57.5, 54.5 };
   vtkSmartPointer<vtkImageData> fire;
   for (int m = 0; m < 2; ++m)
   {
