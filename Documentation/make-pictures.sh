@@ -25,6 +25,10 @@ PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/fire_picture.py" "$images"
 
+# Coloured extinction: grey | blue densest | red densest (rendering-model.md).
+PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
+  "$root/Documentation/scripts/chromatic_picture.py" "$images"
+
 # The transfer-function presets, each on data it is meant for (needs
 # ../shared/data; Documentation/io.md shows them).
 data="$root/../shared/data"

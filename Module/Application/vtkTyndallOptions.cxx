@@ -102,6 +102,9 @@ const Spec kOptions[] = {
     "Henyey-Greenstein g; > 0 scatters forward", KeyMode::Add, "a", "z", 0.1 },
   { "density-scale", "", Kind::Number, 0, Huge, false, "", "S", "1", "Scattering", Both,
     "multiplies the extinction", KeyMode::Multiply, "d", "c", 1.25 },
+  { "extinction-color", "", Kind::Triple, 0, 1, false, "", "R G B", "1 1 1", "Scattering", Both,
+    "extinction per channel, relative to the density (a chromatic medium: the light it lets "
+    "through takes the colour of the weakest components)" },
   { "sample-distance", "", Kind::Number, 0, Huge, false, "", "D", "0", "Scattering", Both,
     "camera-ray step in world units; 0 = half the smallest voxel spacing" },
   { "light-samples", "", Kind::Integer, 1, 2048, false, "", "N", "128", "Scattering", Both,

@@ -297,6 +297,12 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   medium->SetOctaveExtinction(o->GetNumber("octave-extinction"));
   medium->SetOctaveAnisotropy(o->GetNumber("octave-anisotropy"));
   medium->SetDensityScale(o->GetNumber("density-scale"));
+  if (o->IsSet("extinction-color"))
+  {
+    double color[3];
+    o->GetVector("extinction-color", color);
+    medium->SetExtinctionColor(color);
+  }
   medium->SetLightScale(
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
   this->ApplyDetail();

@@ -6,6 +6,7 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkParticipatingMediumProperty);
 vtkCxxSetObjectMacro(vtkParticipatingMediumProperty, EmissionColor, vtkColorTransferFunction);
@@ -32,6 +33,22 @@ const char* vtkParticipatingMediumProperty::GetScatteringModelAsString()
 }
 
 //------------------------------------------------------------------------------
+void vtkParticipatingMediumProperty::SetExtinctionColor(double red, double green, double blue)
+{
+  const double in[3] = { red, green, blue };
+  double color[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    color[k] = std::isnan(in[k]) ? 1.0 : std::min(std::max(in[k], 0.0), 1.0);
+  }
+  if (!std::equal(color, color + 3, this->ExtinctionColor))
+  {
+    std::copy(color, color + 3, this->ExtinctionColor);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
 {
   this->Superclass::DeepCopy(p);
@@ -45,6 +62,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetScatteringAnisotropy(medium->ScatteringAnisotropy);
   this->SetLightScale(medium->LightScale);
   this->SetAmbientIntensity(medium->AmbientIntensity);
+  this->SetExtinctionColor(medium->ExtinctionColor);
   this->SetScatteringOctaves(medium->ScatteringOctaves);
   this->SetOctaveScattering(medium->OctaveScattering);
   this->SetOctaveExtinction(medium->OctaveExtinction);
@@ -81,6 +99,8 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "AmbientIntensity: " << this->AmbientIntensity << "\n";
+  os << indent << "ExtinctionColor: (" << this->ExtinctionColor[0] << ", "
+     << this->ExtinctionColor[1] << ", " << this->ExtinctionColor[2] << ")\n";
   os << indent << "ScatteringOctaves: " << this->ScatteringOctaves << "\n";
   os << indent << "OctaveScattering: " << this->OctaveScattering << "\n";
   os << indent << "OctaveExtinction: " << this->OctaveExtinction << "\n";

@@ -123,6 +123,28 @@ public:
 
   ///@{
   /**
+   * Coloured extinction (a chromatic medium: coloured smoke, stained
+   * tissue, a Rayleigh-like tint; Documentation/rendering-model.md,
+   * "Coloured extinction"): the extinction of channel k is ExtinctionColor[k]
+   * times the extinction the opacity transfer function gives, so light
+   * crossing the medium takes the colour of its transmittance. Each
+   * component in [0, 1]; default (1, 1, 1), grey. Equal components are the
+   * same as a DensityScale (and cost nothing more); different ones make
+   * the view transmittance and the light transmittance per channel (the
+   * maps are unchanged: each channel's optical depth is a multiple of the
+   * densest channel's, so its transmittance is a power of the map's).
+   * vtkVolumetricPathTracer refuses a chromatic medium.
+   */
+  void SetExtinctionColor(double red, double green, double blue);
+  void SetExtinctionColor(const double color[3])
+  {
+    this->SetExtinctionColor(color[0], color[1], color[2]);
+  }
+  vtkGetVector3Macro(ExtinctionColor, double);
+  ///@}
+
+  ///@{
+  /**
    * Unshadowed white ambient in-scattering (single scattering only), in
    * [0, 1e6]; default 0.
    */
@@ -206,6 +228,7 @@ protected:
   double ScatteringAnisotropy = 0.0;
   double LightScale;
   double AmbientIntensity = 0.0;
+  double ExtinctionColor[3] = { 1.0, 1.0, 1.0 };
   int ScatteringOctaves = 2;
   double OctaveScattering = 0.9;
   double OctaveExtinction = 0.3;

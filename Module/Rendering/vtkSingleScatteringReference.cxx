@@ -61,8 +61,16 @@ public:
       for (int i = 0; i < this->S->Width; ++i)
       {
         const vtkIdType pixel = j * this->S->Width + i;
-        this->RenderPixel(
-          i, static_cast<int>(j), this->S->Radiance + 3 * pixel, this->S->Transmittance[pixel]);
+        double transmittance[3];
+        this->RenderPixel(i, static_cast<int>(j), this->S->Radiance + 3 * pixel, transmittance);
+        if (this->S->Chromatic)
+        {
+          std::copy(transmittance, transmittance + 3, this->S->Transmittance + 3 * pixel);
+        }
+        else
+        {
+          this->S->Transmittance[pixel] = transmittance[0];
+        }
       }
     }
   }
@@ -125,11 +133,13 @@ private:
     return std::exp(-tau);
   }
 
-  void RenderPixel(int i, int j, double* radiance, double& transmittance) const
+  // The pixel's radiance and view transmittance per channel (equal
+  // channels without a coloured extinction).
+  void RenderPixel(int i, int j, double* radiance, double transmittance[3]) const
   {
     const Scene& s = *this->S;
     radiance[0] = radiance[1] = radiance[2] = 0.0;
-    transmittance = 1.0;
+    transmittance[0] = transmittance[1] = transmittance[2] = 1.0;
     // Unproject the pixel centre at the near and far planes.
     double origin[3], w[3], rayLength;
     if (!s.CameraRay(i, j, origin, w, rayLength))
@@ -148,8 +158,8 @@ private:
     const int n = static_cast<int>(steps);
     const double dt = (t1 - t0) / n;
 
-    double Tv = 1.0;
-    double L[3] = { 0.0, 0.0, 0.0 };
+    double* Tv = transmittance;
+    double* L = radiance;
     for (int m = 0; m < n; ++m)
     {
       const double t = t0 + (m + 0.5) * dt;
@@ -158,10 +168,20 @@ private:
       int k = 0;
       double f = 0.0;
       const bool dense = this->Extinction(p, sigma, k, f);
+      double sigmaC[3]; // per channel
+      for (int c = 0; c < 3; ++c)
+      {
+        sigmaC[c] = dense ? sigma * s.ExtinctionColor[c] : 0.0;
+      }
       if (s.EmissionArray && s.Inside(p))
       {
         // Emission per unit length, attenuated within the step.
-        this->AddArrayEmission(p, Tv * (dense ? -std::expm1(-sigma * dt) / sigma : dt), L);
+        double weight[3];
+        for (int c = 0; c < 3; ++c)
+        {
+          weight[c] = Tv[c] * (sigmaC[c] > 0.0 ? -std::expm1(-sigmaC[c] * dt) / sigmaC[c] : dt);
+        }
+        this->AddArrayEmission(p, weight, L);
       }
       if (!dense)
       {
@@ -170,25 +190,21 @@ private:
       double J[3];
       this->Source(k, f, origin, w, t, p, J);
       // The step's medium is constant: integrate it exactly.
-      const double a = -std::expm1(-sigma * dt);
       for (int c = 0; c < 3; ++c)
       {
-        L[c] += Tv * J[c] * a;
+        const double a = -std::expm1(-sigmaC[c] * dt);
+        L[c] += Tv[c] * J[c] * a;
+        Tv[c] *= 1.0 - a;
       }
-      Tv *= 1.0 - a;
-      if (Tv < s.Threshold)
+      if (std::max(std::max(Tv[0], Tv[1]), Tv[2]) < s.Threshold)
       {
         break;
       }
     }
-    radiance[0] = L[0];
-    radiance[1] = L[1];
-    radiance[2] = L[2];
-    transmittance = Tv;
   }
 
-  // L += weight * EmissionScale * the emission array's colour at index point p.
-  void AddArrayEmission(const double p[3], double weight, double L[3]) const
+  // L += weight * EmissionScale * the emission array's colour at index point p (per channel).
+  void AddArrayEmission(const double p[3], const double weight[3], double L[3]) const
   {
     const Scene& s = *this->S;
     int k;
@@ -198,7 +214,7 @@ private:
     vtkTyndallTransferTable::RGBAt(s.Table->Emission, k, f, e);
     for (int c = 0; c < 3; ++c)
     {
-      L[c] += weight * s.EmissionScale * e[c];
+      L[c] += weight[c] * s.EmissionScale * e[c];
     }
   }
 
@@ -322,6 +338,8 @@ bool SetUpSteps(const vtkTyndallSceneReader& tyndall, double stepSize, double li
     const double exponent = std::pow(scene.OctaveFactors[1], scene.Octaves - 1);
     scene.MaxOpticalDepth = exponent > 0.0 ? scene.MaxOpticalDepth / exponent : kInfinity;
   }
+  // The faintest channel of a coloured extinction sees T^e.
+  scene.MaxOpticalDepth /= medium.GetFaintestChannel();
   return true;
 }
 }
@@ -348,7 +366,9 @@ bool vtkSingleScatteringReference::RenderInternal(
   radiance->SetNumberOfComponents(3);
   vtkNew<vtkDoubleArray> transmittance;
   transmittance->SetName("Transmittance");
-  if (!radiance->Allocate(3 * pixels) || !transmittance->Allocate(pixels))
+  transmittance->SetNumberOfComponents(scene.Chromatic ? 3 : 1);
+  if (!radiance->Allocate(3 * pixels) ||
+    !transmittance->Allocate(transmittance->GetNumberOfComponents() * pixels))
   {
     vtkErrorMacro(<< "Render: cannot allocate a " << width << " x " << height << " image.");
     return false;

@@ -22,10 +22,13 @@
  * - "Radiance" (3 components, double, the active scalars): the linear,
  *   premultiplied integral term of the pixel's ray, without the background;
  * - "Transmittance" (1 component, double): the view transmittance T_v(t_far)
- *   of the ray (the frame buffer's alpha would be 1 - T_v).
+ *   of the ray (the frame buffer's alpha would be 1 - T_v); 3 components,
+ *   one per channel, for a coloured extinction
+ *   (vtkParticipatingMediumProperty::ExtinctionColor with unequal
+ *   components).
  *
  * Composite() blends that over a constant background colour
- * (Radiance + Transmittance * background, what VTK's frame buffer gets from
+ * (Radiance + Transmittance * background per channel, what VTK's frame buffer gets from
  * the mapper's ONE, ONE_MINUS_SRC_ALPHA blending) and converts it like an
  * 8-bit frame buffer: clamp to [0, 1], round(x * 255).
  *

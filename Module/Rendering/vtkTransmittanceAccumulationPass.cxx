@@ -48,21 +48,35 @@ bool vtkTransmittanceAccumulationPass::AllocateImage(const vtkTransmittanceFrame
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Allocate(
-  const vtkTransmittanceFrame& frame, int width, int height, vtkObject* reporter)
+  const vtkTransmittanceFrame& frame, int width, int height, bool chromatic, vtkObject* reporter)
 {
   if (!this->Framebuffer)
   {
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   }
   this->Framebuffer->SetContext(frame.Window);
-  for (vtkSmartPointer<vtkTextureObject>& image : this->Images)
+  for (int k = 0; k < 2; ++k)
   {
-    if (!this->AllocateImage(frame, image, width, height, reporter))
+    if (!this->AllocateImage(frame, this->Images[k], width, height, reporter) ||
+      (chromatic && !this->AllocateImage(frame, this->Opacities[k], width, height, reporter)))
     {
       return false;
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceAccumulationPass::Attach(int k, bool chromatic)
+{
+  this->Framebuffer->AddColorAttachment(0, this->Images[k]);
+  if (chromatic)
+  {
+    this->Framebuffer->AddColorAttachment(1, this->Opacities[k]);
+  }
+  const int targets = chromatic ? 2 : 1;
+  this->Framebuffer->ActivateDrawBuffers(targets);
+  return targets;
 }
 
 //------------------------------------------------------------------------------
@@ -130,9 +144,15 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame,
   const int viewport[4], int width, int height, int passes, const DrawFunction& draw,
-  vtkObject* reporter, int historyFrames)
+  vtkObject* reporter, int historyFrames, bool chromatic)
 {
-  if (!this->Allocate(frame, width, height, reporter))
+  if (chromatic && historyFrames >= 0)
+  {
+    vtkErrorWithObjectMacro(
+      reporter, << "A coloured extinction cannot be averaged over still frames.");
+    return false;
+  }
+  if (!this->Allocate(frame, width, height, chromatic, reporter))
   {
     return false;
   }
@@ -141,31 +161,36 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
     vtkTransmittanceOffscreenDraw offscreen(state, this->Framebuffer, width, height);
     vtkOpenGLState::ScopedglClearColor savedClear(state);
     // The state before the first pass: no radiance, transmittance 1.
-    this->Framebuffer->AddColorAttachment(0, this->Images[1]);
-    this->Framebuffer->ActivateDrawBuffers(1);
+    int targets = this->Attach(1, chromatic);
     state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    this->Framebuffer->RemoveColorAttachments(1);
+    this->Framebuffer->RemoveColorAttachments(targets);
     for (int pass = 0; pass < passes; ++pass)
     {
-      this->Framebuffer->AddColorAttachment(0, this->Images[pass % 2]);
-      this->Framebuffer->ActivateDrawBuffers(1);
+      targets = this->Attach(pass % 2, chromatic);
       const char* status = nullptr;
       if (!vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_DRAW_FRAMEBUFFER, status))
       {
-        this->Framebuffer->RemoveColorAttachments(1);
+        this->Framebuffer->RemoveColorAttachments(targets);
         vtkErrorWithObjectMacro(
           reporter, << "The camera rays' framebuffer is incomplete: " << status);
         return false;
       }
       vtkTextureObject* previous = this->Images[(pass + 1) % 2];
-      previous->SetMinificationFilter(vtkTextureObject::Nearest);
-      previous->SetMagnificationFilter(vtkTextureObject::Nearest);
+      vtkTextureObject* previousOpacity = chromatic ? this->Opacities[(pass + 1) % 2] : nullptr;
+      for (vtkTextureObject* image : { previous, previousOpacity })
       {
-        vtkTransmittanceScopedTextures bind({ previous });
-        draw(pass, previous);
+        if (image)
+        {
+          image->SetMinificationFilter(vtkTextureObject::Nearest);
+          image->SetMagnificationFilter(vtkTextureObject::Nearest);
+        }
       }
-      this->Framebuffer->RemoveColorAttachments(1);
+      {
+        vtkTransmittanceScopedTextures bind({ previous, previousOpacity });
+        draw(pass, previous, previousOpacity);
+      }
+      this->Framebuffer->RemoveColorAttachments(targets);
     }
   }
   const bool upscaled = width != viewport[2] || height != viewport[3];
@@ -173,15 +198,16 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   if (historyFrames < 0)
   {
     this->HistoryFrames = 0;
-    return this->Composite(frame, result, upscaled, reporter);
+    return this->Composite(frame, result,
+      chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr, upscaled, reporter);
   }
   return this->AddToHistory(frame, result, width, height, historyFrames, reporter) &&
-    this->Composite(frame, this->History, upscaled, reporter);
+    this->Composite(frame, this->History, nullptr, upscaled, reporter);
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceAccumulationPass::Composite(
-  const vtkTransmittanceFrame& frame, vtkTextureObject* image, bool upscaled, vtkObject* reporter)
+bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& frame,
+  vtkTextureObject* image, vtkTextureObject* opacity, bool upscaled, vtkObject* reporter)
 {
   vtkShaderProgram* program = this->CompositeProgram(frame, reporter);
   if (!program)
@@ -189,19 +215,39 @@ bool vtkTransmittanceAccumulationPass::Composite(
     return false;
   }
   const int filter = upscaled ? vtkTextureObject::Linear : vtkTextureObject::Nearest;
-  image->SetMinificationFilter(filter);
-  image->SetMagnificationFilter(filter);
+  for (vtkTextureObject* texture : { image, opacity })
+  {
+    if (texture)
+    {
+      texture->SetMinificationFilter(filter);
+      texture->SetMagnificationFilter(filter);
+    }
+  }
+  if (!opacity)
+  {
+    vtkTransmittanceScopedTextures bind({ image });
+    program->SetUniformi("accumulated", image->GetTextureUnit());
+    this->Quad.RenderOver(frame.State);
+    return true;
+  }
+  // Per channel: background x transmittance, then + radiance.
+  {
+    vtkTransmittanceScopedTextures bind({ opacity });
+    program->SetUniformi("accumulated", opacity->GetTextureUnit());
+    this->Quad.RenderOver(
+      frame.State, GL_ZERO, GL_ONE_MINUS_SRC_COLOR, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+  }
   vtkTransmittanceScopedTextures bind({ image });
   program->SetUniformi("accumulated", image->GetTextureUnit());
-  this->Quad.RenderOver(frame.State);
+  this->Quad.RenderOver(frame.State, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkSmartPointer<vtkTextureObject>* image :
-    { &this->Images[0], &this->Images[1], &this->History })
+  for (vtkSmartPointer<vtkTextureObject>* image : { &this->Images[0], &this->Images[1],
+         &this->Opacities[0], &this->Opacities[1], &this->History })
   {
     if (*image)
     {

@@ -19,11 +19,18 @@
  *   1); 0 starts a new average), and that mean is what is drawn.
  *
  * Render() clears two RGBA32F images of the reduced size to 0 and calls
- * `draw(pass, previous)` `passes` times, each drawing into one image with the
- * other bound as `previous` (the rays' state so far: premultiplied radiance
- * and 1 - transmittance); then it draws the last image over the renderer's
- * viewport in the framebuffer that was bound, blended ONE,
- * ONE_MINUS_SRC_ALPHA (vtkTransmittanceCompositeFS.glsl).
+ * `draw(pass, previous, previousOpacity)` `passes` times, each drawing into
+ * one image with the other bound as `previous` (the rays' state so far:
+ * premultiplied radiance and 1 - transmittance); then it draws the last
+ * image over the renderer's viewport in the framebuffer that was bound,
+ * blended ONE, ONE_MINUS_SRC_ALPHA (vtkTransmittanceCompositeFS.glsl).
+ *
+ * With a coloured extinction (`chromatic`) each image has a second one
+ * beside it, drawn as the second render target: 1 - the transmittance per
+ * channel (`previousOpacity`). The result is then composited in two draws,
+ * the window's colour multiplied by the transmittance (blended ZERO,
+ * ONE_MINUS_SRC_COLOR), then the radiance added (ONE, ONE): radiance +
+ * transmittance x background, per channel. No history is kept for it.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -51,19 +58,26 @@ public:
   vtkTypeMacro(vtkTransmittanceAccumulationPass, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Draws one pass into the bound image; `previous` holds the passes before it.
-  using DrawFunction = std::function<void(int pass, vtkTextureObject* previous)>;
+  /**
+   * Draws one pass into the bound image (and opacity image); `previous`
+   * (and `previousOpacity`, else null) hold the passes before it.
+   */
+  using DrawFunction =
+    std::function<void(int pass, vtkTextureObject* previous, vtkTextureObject* previousOpacity)>;
 
   /**
    * Runs `passes` passes into width x height images and composites the
    * result over `viewport` (x, y, width, height in window pixels); with
    * `historyFrames` >= 0, composites the mean of the result and the
    * `historyFrames` results before it instead (a history of another size
-   * restarts at this frame). False (with an error through `reporter`) when
-   * the images or their framebuffer cannot be made.
+   * restarts at this frame). `chromatic`: the passes draw a second image of
+   * per-channel opacity (then `historyFrames` must be negative). False (with
+   * an error through `reporter`) when the images or their framebuffer
+   * cannot be made.
    */
   bool Render(const vtkTransmittanceFrame& frame, const int viewport[4], int width, int height,
-    int passes, const DrawFunction& draw, vtkObject* reporter, int historyFrames = -1);
+    int passes, const DrawFunction& draw, vtkObject* reporter, int historyFrames = -1,
+    bool chromatic = false);
 
   /// Frames in the running average after the last Render() (0: no history kept).
   int GetHistoryFrames() const { return this->HistoryFrames; }
@@ -78,9 +92,13 @@ private:
   vtkTransmittanceAccumulationPass(const vtkTransmittanceAccumulationPass&) = delete;
   void operator=(const vtkTransmittanceAccumulationPass&) = delete;
 
-  bool Allocate(const vtkTransmittanceFrame& frame, int width, int height, vtkObject* reporter);
-  bool Composite(const vtkTransmittanceFrame& frame, vtkTextureObject* image, bool upscaled,
-    vtkObject* reporter);
+  bool Allocate(
+    const vtkTransmittanceFrame& frame, int width, int height, bool chromatic, vtkObject* reporter);
+  /// Binds image `k` (and its opacity image) as the framebuffer's render targets; returns their
+  /// count.
+  int Attach(int k, bool chromatic);
+  bool Composite(const vtkTransmittanceFrame& frame, vtkTextureObject* image,
+    vtkTextureObject* opacity, bool upscaled, vtkObject* reporter);
 
   bool AllocateImage(const vtkTransmittanceFrame& frame, vtkSmartPointer<vtkTextureObject>& image,
     int width, int height, vtkObject* reporter);
@@ -90,6 +108,7 @@ private:
     int height, int historyFrames, vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> Images[2];
+  vtkSmartPointer<vtkTextureObject> Opacities[2]; // beside Images, with a coloured extinction
   vtkSmartPointer<vtkTextureObject> History;
   int HistoryFrames = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;

@@ -37,6 +37,10 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->Integrator = settings;
   this->Layers = M::GetNumberOfMapLayers(settings.Method, settings.Coefficients);
   this->BoundsLayer = M::GetBoundsLayer(settings.Method, settings.Coefficients);
+  this->MapSets = this->Medium->GetChromatic() &&
+      (settings.Method == M::TFM || settings.Method == M::ADAPTIVE_TFM)
+    ? 3
+    : 1;
   this->Medium->GetWorldCorners(this->Corners);
   this->Diagonal = this->Medium->GetWorldDiagonal();
   this->MinimumSpacing = this->Medium->GetMinimumWorldSpacing();
@@ -134,6 +138,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   variant.SkipEmpty =
     this->Integrator.SkipEmptySpace && !(this->Medium && this->Medium->GetEmissionFromArray());
   variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
+  variant.Chromatic = this->Medium && this->Medium->GetChromatic();
   return variant;
 }
 
@@ -146,6 +151,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetMapVariant() con
   variant.MapCoefficients = this->Integrator.Coefficients;
   variant.MapExtinction = method == M::ETM || method == M::ADAPTIVE_ETM;
   variant.AdaptiveMaps = this->BoundsLayer >= 0;
+  variant.ChannelMaps = this->MapSets > 1;
   return variant;
 }
 
@@ -157,12 +163,15 @@ void vtkTransmittanceFrame::SetMapUniforms(
   program->SetUniformi("layersPerLight", std::max(this->Layers, 1));
   program->SetUniformi("boundsLayer", std::max(this->BoundsLayer, 0));
   program->SetUniformi("mapSlices", std::max(slices, 1));
+  program->SetUniformi(
+    "mapSetStride", static_cast<int>(this->Lights.size()) * std::max(this->Layers, 1));
 }
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
 {
   const vtkTyndallTransferTable& table = this->Medium->GetTable();
+  this->SetLightMapUniforms(program);
   const int volumeUnit = this->Textures->GetVolumeTexture()->GetTextureUnit();
   program->SetUniformi("volumeTexture", volumeUnit);
   if (vtkTextureObject* validity = this->Textures->GetValidityTexture())
@@ -181,7 +190,6 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
     program->SetUniform3f("boxToBlockShift", this->Textures->GetBlockShift());
   }
   program->SetUniformi("transferTexture", this->Textures->GetTransferTexture()->GetTextureUnit());
-  program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
   program->SetUniform3f("volumeTexScale", this->Textures->GetTextureScale());
   program->SetUniform3f("volumeTexShift", this->Textures->GetTextureShift());
   const float toTable[2] = { static_cast<float>(table.TextureScale()),
@@ -198,7 +206,18 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
     program->SetUniform2f("emissionToTable", toTable);
   }
   this->SetDetailUniforms(program);
+}
 
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
+{
+  program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
+  if (this->Medium->GetChromatic())
+  {
+    const double* e = this->Medium->GetExtinctionColor();
+    const float color[3] = { float(e[0]), float(e[1]), float(e[2]) };
+    program->SetUniform3f("extinctionColor", color);
+  }
   int positional[kMaxLights] = { 0 }, hasFrustum[kMaxLights] = { 0 };
   float origin[kMaxLights][3] = {}, axisX[kMaxLights][3] = {}, axisY[kMaxLights][3] = {},
         axisZ[kMaxLights][3] = {};

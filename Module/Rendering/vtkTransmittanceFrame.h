@@ -69,6 +69,12 @@ public:
     const vtkTyndallSceneReader& scene, const vtkTransmittanceMediumTextures& textures,
     const Settings& settings);
 
+  /**
+   * Sets the uniforms of the light maps' lookup (vtkTransmittanceLightMapFS.glsl:
+   * the box, the extinction colour, the light frusta) on `program`.
+   */
+  void SetLightMapUniforms(vtkShaderProgram* program) const;
+
   /// Sets the shared uniforms (medium, table, light frusta) on `program`.
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
@@ -86,7 +92,7 @@ public:
    */
   vtkTransmittanceShaderSource::Variant GetMapVariant() const;
 
-  /// Sets the map lookup's uniforms (GetMapVariant()) for `maps` of `slices` slices.
+  /// Sets the map lookup's uniforms (GetMapVariant()) for `maps` of `slices` slices (all sets).
   void SetMapUniforms(vtkShaderProgram* program, vtkTextureObject* maps, int slices) const;
 
   /// Whether some light uses a map method.
@@ -110,6 +116,13 @@ public:
   int Layers = 0;
   /// The adaptive methods' bounds layer within a light's layers, else -1.
   int BoundsLayer = -1;
+  /**
+   * Sets of maps: 3 (one per channel, each light's layers per set) for the
+   * transmittance-function methods with a coloured extinction, whose
+   * reconstruction error near T = 0 a channel's power T^e would magnify;
+   * else 1 (an extinction map gives every channel exactly: exp(-e tau)).
+   */
+  int MapSets = 1;
   std::vector<Light> Lights;
   double Corners[24];
   double Diagonal = 1.0;

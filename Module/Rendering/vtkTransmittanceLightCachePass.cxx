@@ -11,6 +11,7 @@
 #include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallGridMedium.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -44,8 +45,9 @@ bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
   int size[3];
   LatticeSize(frame.BoxExtents, frame.Integrator.CacheSize, size);
   const int lights = static_cast<int>(frame.Lights.size());
+  const double* color = frame.Medium->GetExtinctionColor();
   if (this->CacheTexture && mapBuild == this->BuiltFromMaps && lights == this->Lights &&
-    std::equal(size, size + 3, this->Size))
+    std::equal(size, size + 3, this->Size) && std::equal(color, color + 3, this->Color))
   {
     return true;
   }
@@ -59,6 +61,7 @@ bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
   glFinish();
   timer->StopTimer();
   this->BuiltFromMaps = mapBuild;
+  std::copy(color, color + 3, this->Color);
   this->LastBuildTime = timer->GetElapsedTime();
   ++this->BuildCount;
   return true;
@@ -69,7 +72,9 @@ bool vtkTransmittanceLightCachePass::Allocate(
   const vtkTransmittanceFrame& frame, const int size[3], vtkObject* reporter)
 {
   const int lights = static_cast<int>(frame.Lights.size());
-  if (this->CacheTexture && lights == this->Lights && std::equal(size, size + 3, this->Size))
+  const bool chromatic = frame.Medium->GetChromatic();
+  if (this->CacheTexture && lights == this->Lights && std::equal(size, size + 3, this->Size) &&
+    chromatic == this->Chromatic)
   {
     return true;
   }
@@ -79,13 +84,14 @@ bool vtkTransmittanceLightCachePass::Allocate(
   }
   this->CacheTexture->ReleaseGraphicsResources(frame.Window);
   vtkTransmittanceOffscreenDraw::SetClamped(this->CacheTexture, frame.Window, true);
-  this->CacheTexture->SetInternalFormat(GL_R16F);
+  this->CacheTexture->SetInternalFormat(chromatic ? GL_RGBA16F : GL_R16F);
+  const int components = chromatic ? 4 : 1;
   int maximum3D = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maximum3D);
   const int depth = size[2] * lights;
-  const double bytes = 2.0 * size[0] * size[1] * static_cast<double>(depth);
+  const double bytes = 2.0 * components * size[0] * size[1] * static_cast<double>(depth);
   if (bytes > MaximumBytes || std::max({ size[0], size[1], depth }) > maximum3D ||
-    !this->CacheTexture->Create3DFromRaw(size[0], size[1], depth, 1, VTK_FLOAT, nullptr))
+    !this->CacheTexture->Create3DFromRaw(size[0], size[1], depth, components, VTK_FLOAT, nullptr))
   {
     vtkErrorWithObjectMacro(
       reporter, << "Could not allocate the transmittance cache (" << size[0] << " x " << size[1]
@@ -100,6 +106,7 @@ bool vtkTransmittanceLightCachePass::Allocate(
   }
   std::copy(size, size + 3, this->Size);
   this->Lights = lights;
+  this->Chromatic = chromatic;
   return true;
 }
 

@@ -19,6 +19,12 @@
  * builds. A cache over MaximumBytes or the driver's largest 3-D texture is
  * refused with an error, and the camera rays read the maps.
  *
+ * With a coloured extinction the texels hold the three channels'
+ * transmittances (an RGBA half-float texture, 8 bytes per texel and light,
+ * rebuilt when the extinction colour changes): each channel stored, not
+ * the densest one's to be raised to a power, which half floats near 0
+ * could not carry.
+ *
  * What it costs: one map lookup per texel and light when the maps change
  * (a 256^3 lattice is 16.8 million lookups), 2 bytes per texel and light;
  * and the picture differs from per-sample lookups by the trilinear
@@ -95,7 +101,9 @@ private:
   vtkTransmittanceShaderQuad Quad;
   int Size[3] = { 0, 0, 0 };
   int Lights = 0;
-  int BuiltFromMaps = -1; // the map build the cache holds; -1: none
+  int BuiltFromMaps = -1;              // the map build the cache holds; -1: none
+  bool Chromatic = false;              // per-channel texels (RGBA)
+  double Color[3] = { 1.0, 1.0, 1.0 }; // the extinction colour they were built for
   int BuildCount = 0;
   double LastBuildTime = 0.0;
 };

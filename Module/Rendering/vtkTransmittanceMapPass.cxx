@@ -58,10 +58,17 @@ vtkTransmittanceMapPass::~vtkTransmittanceMapPass() = default;
 std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& frame) const
 {
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
+  // The threshold only where the maps use it (the adaptive methods).
+  const double threshold = frame.BoundsLayer >= 0 ? s.AdaptiveThreshold : -1.0;
   std::vector<double> key = { double(s.Method), double(s.Coefficients), double(s.MapSize),
-    double(s.LightSampleCount), s.AdaptiveThreshold, frame.Medium->GetDensityScale(),
+    double(s.LightSampleCount), threshold, frame.Medium->GetDensityScale(),
     double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetExtinctionTime()),
-    double(s.SkipEmptySpace) };
+    double(s.SkipEmptySpace), double(frame.MapSets) };
+  if (frame.MapSets > 1)
+  {
+    const double* e = frame.Medium->GetExtinctionColor();
+    key.insert(key.end(), e, e + 3);
+  }
   key.insert(key.end(), frame.Corners, frame.Corners + 24);
   // Per light, its method and, when it has a map, the frustum the map is
   // built along (which also covers the frustum's padding and field of view).
@@ -112,7 +119,7 @@ bool vtkTransmittanceMapPass::Render(const vtkTransmittanceFrame& frame, vtkObje
 bool vtkTransmittanceMapPass::Allocate(const vtkTransmittanceFrame& frame, vtkObject* reporter)
 {
   const int size = frame.Integrator.MapSize;
-  const int slices = static_cast<int>(frame.Lights.size()) * frame.Layers;
+  const int slices = static_cast<int>(frame.Lights.size()) * frame.Layers * frame.MapSets;
   if (this->MapTexture && this->Size == size && this->Slices == slices)
   {
     return true;
@@ -169,15 +176,21 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
   this->Framebuffer->SetContext(frame.Window);
   vtkTransmittanceOffscreenDraw draw(frame.State, this->Framebuffer, this->Size, this->Size);
   const int layers = frame.Layers;
-  for (int l = 0; l < static_cast<int>(frame.Lights.size()); ++l)
+  const int lights = static_cast<int>(frame.Lights.size());
+  // Set k of lights x layers slices: channel k's maps (one set without them).
+  for (int i = 0; i < lights * frame.MapSets; ++i)
   {
+    const int l = i % lights;
     if (!vtkTransmittanceMapMath::IsMapMethod(frame.Lights[l].Method))
     {
       continue;
     }
+    const int set = i / lights;
+    program->SetUniformf("channelExtinction",
+      frame.MapSets > 1 ? static_cast<float>(frame.Medium->GetExtinctionColor()[set]) : 1.0f);
     for (int k = 0; k < layers; ++k)
     {
-      this->Framebuffer->AddColorAttachment(k, this->MapTexture, l * layers + k);
+      this->Framebuffer->AddColorAttachment(k, this->MapTexture, i * layers + k);
     }
     this->Framebuffer->ActivateDrawBuffers(layers);
     const char* status = nullptr;

@@ -6,13 +6,17 @@
  * one fragment per texel marches the texel's light ray through the medium
  * and projects it onto the TFM or ETM basis, in the layout of
  * vtkTransmittanceMapMath::GetNumberOfMapLayers() (all layers of all lights
- * are slices of one RGBA float 3-D texture). Maps are rebuilt only when
- * something they depend on changed: the medium's scalars or table, its
- * density scale or placement, the lights (position, direction, type,
- * method), or the integrator's method, coefficient count, map size, light
- * samples or adaptive threshold. GetBuildCount() counts the builds.
+ * are slices of one RGBA float 3-D texture). With a coloured extinction the
+ * transmittance-function methods build three sets, one per channel (its
+ * extinction scaled by the channel's ExtinctionColor component; set k's
+ * slices after set k - 1's, vtkTransmittanceFrame::MapSets). Maps are
+ * rebuilt only when something they depend on changed: the medium's scalars
+ * or table, its density scale or placement, the lights (position,
+ * direction, type, method), the integrator's method, coefficient count, map
+ * size, light samples or adaptive threshold (adaptive methods), or (for per-channel sets) the
+ * extinction colour. GetBuildCount() counts the builds.
  *
- * GetMap() reads a light's map back to the CPU (for tests and inspection).
+ * GetMap() reads a light's map (the first set) back to the CPU (for tests and inspection).
  *
  * Internal to Tyndall::Rendering.
  */

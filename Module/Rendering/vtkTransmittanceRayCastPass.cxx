@@ -63,7 +63,9 @@ bool vtkTransmittanceRayCastPass::Render(
   const int perPass = sampled ? steps : StepsPerPass(frame);
   const int passes = (steps + perPass - 1) / perPass;
   const int reduction = std::max(inputs.Reduction, 1);
-  const bool direct = !sampled && passes == 1 && reduction == 1;
+  // A coloured extinction needs a second render target: never drawn direct.
+  const bool chromatic = frame.Medium->GetChromatic();
+  const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic;
   vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
   variant.DetailSamples = this->LastDetailSamples;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
@@ -96,21 +98,26 @@ bool vtkTransmittanceRayCastPass::Render(
     static_cast<float>(viewport[3]) / height, static_cast<float>(viewport[0]),
     static_cast<float>(viewport[1]) };
   program->SetUniform4f("fragToWindow", toWindow);
-  auto draw = [&](int pass, vtkTextureObject* previous)
+  auto draw = [&](int pass, vtkTextureObject* previous, vtkTextureObject* previousOpacity)
   {
     program->SetUniformi("previousTexture", previous->GetTextureUnit());
+    if (previousOpacity)
+    {
+      program->SetUniformi("previousOpacityTexture", previousOpacity->GetTextureUnit());
+    }
     program->SetUniformi("firstStep", pass * perPass);
     program->SetUniformi("endStep", std::min(steps, (pass + 1) * perPass));
     this->Quad.Render();
   };
   return this->Accumulation->Render(frame, viewport, width, height, passes, draw, reporter,
-    sampled ? std::max(inputs.HistoryFrames, 0) : -1);
+    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic);
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceRayCastPass::DetailSamplesFor(const vtkTransmittanceFrame& frame, int requested)
 {
-  if (requested <= 0 || !frame.Detail || !frame.Detail->Enabled())
+  // Free flights are drawn from one transmittance: not with a coloured extinction.
+  if (requested <= 0 || !frame.Detail || !frame.Detail->Enabled() || frame.Medium->GetChromatic())
   {
     return 0;
   }

@@ -54,17 +54,19 @@ public:
 
   /**
    * Draws the quad's premultiplied colour over what was drawn (blended ONE,
-   * ONE_MINUS_SRC_ALPHA; no depth test or depth writes), restoring the
-   * state after.
+   * ONE_MINUS_SRC_ALPHA, or the factors given; no depth test or depth
+   * writes), restoring the state after.
    */
-  void RenderOver(vtkOpenGLState* state)
+  void RenderOver(vtkOpenGLState* state, GLenum sourceColor = GL_ONE,
+    GLenum destinationColor = GL_ONE_MINUS_SRC_ALPHA, GLenum sourceAlpha = GL_ONE,
+    GLenum destinationAlpha = GL_ONE_MINUS_SRC_ALPHA)
   {
     vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable savedDepth(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
     vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
     state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglBlendFuncSeparate(sourceColor, destinationColor, sourceAlpha, destinationAlpha);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
     this->Quad->Render();

@@ -12,6 +12,7 @@
 #include "vtkTransmittanceCompositeFS.h"
 #include "vtkTransmittanceDetailFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
+#include "vtkTransmittanceLightMapFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
@@ -59,6 +60,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
   define("OCTAVES", variant.Octaves);
+  define("CHROMATIC", variant.Chromatic ? 1 : 0);
+  define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
   // Procedural detail: wave groups, and the preprocessor loop over them.
   define("DETAIL_GROUPS", variant.DetailGroups);
   define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);
@@ -70,6 +73,12 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   }
   os << "\n";
   return os.str();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetLightMapLookup(const Variant& variant)
+{
+  return GetConstants(variant) + vtkTransmittanceLightMapFS;
 }
 
 //------------------------------------------------------------------------------
@@ -96,6 +105,7 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
       break;
   }
   vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(variant));
+  vtkShaderProgram::Substitute(source, "//TYNDALL::LightMaps", vtkTransmittanceLightMapFS);
   vtkShaderProgram::Substitute(
     source, "//TYNDALL::Detail", variant.DetailGroups > 0 ? vtkTransmittanceDetailFS : "");
   return source;

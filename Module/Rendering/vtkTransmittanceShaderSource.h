@@ -93,10 +93,21 @@ public:
     bool LightCache = false;       // map lights read the transmittance cache
     int Octaves = 1;               // multiple-scattering octaves (1: single scattering)
     ///@}
+    /// Extinction per channel: light and view transmittances per channel.
+    bool Chromatic = false;
+    /// Transmittance-function maps of a coloured extinction: one set per channel.
+    bool ChannelMaps = false;
   };
 
   /// The fragment shader of a pass, constants injected.
   static std::string GetFragmentShader(int pass, const Variant& variant);
+
+  /**
+   * The light maps' lookup alone (vtkTransmittanceLightMapFS.glsl, its
+   * constants first): declarations and functions for another program's
+   * fragment shader, e.g. an opaque surface receiving the medium's shadow.
+   */
+  static std::string GetLightMapLookup(const Variant& variant);
   static std::string GetFragmentShader(int pass) { return GetFragmentShader(pass, Variant()); }
 
   /// The #define lines that replace `//TYNDALL::Constants`.

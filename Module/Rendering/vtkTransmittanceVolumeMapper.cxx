@@ -37,18 +37,23 @@ vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 
 namespace
 {
-// The adaptive maps' threshold with multiple-scattering octaves: the last
-// octave sees T^(b^(N-1)), so the maps must resolve T down to
-// threshold^(1 / b^(N-1)) for it to fall below the threshold (b = 0: the
-// octave sees only whether T > 0, and the maps keep their whole range).
-double OctaveThreshold(double threshold, const vtkTyndallGridMedium& medium)
+// The adaptive maps' threshold for the faintest transmittance a sample
+// reads: the last multiple-scattering octave sees T^(b^(N-1)) and the
+// faintest channel of a coloured extinction T^e (e its smallest positive
+// component; not where each channel has its own maps: `channelMaps`), so the
+// maps must resolve T down to threshold^(1 / (b^(N-1) e)) for those to fall
+// below the threshold (b = 0: the octave sees only whether T > 0, and the
+// maps keep their whole range).
+double LightThreshold(double threshold, const vtkTyndallGridMedium& medium, bool channelMaps)
 {
   const int octaves = medium.GetScatteringOctaves();
-  if (octaves <= 1)
+  const double exponent =
+    (octaves > 1 ? std::pow(medium.GetOctaveFactors()[1], octaves - 1) : 1.0) *
+    (channelMaps ? 1.0 : medium.GetFaintestChannel());
+  if (exponent == 1.0)
   {
     return threshold;
   }
-  const double exponent = std::pow(medium.GetOctaveFactors()[1], octaves - 1);
   return std::max(exponent > 0.0 ? std::pow(threshold, 1.0 / exponent) : 0.0, 1.0e-30);
 }
 }
@@ -109,6 +114,22 @@ public:
   void ChooseDetail(vtkRenderer* renderer, vtkVolume* volume, bool adjust, int maximum,
     vtkTransmittanceRayCastPass::Inputs& inputs) const;
   bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter);
+
+  /**
+   * Reads the scene, uploads what changed and fills Frame for (renderer,
+   * volume), the first steps of every Render(); false (reported) on error.
+   */
+  bool PrepareFrame(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume,
+    vtkOpenGLRenderWindow* window);
+
+  /// The medium's textures, bound for the scope of the returned object.
+  vtkTransmittanceScopedTextures BindMedium() const
+  {
+    return vtkTransmittanceScopedTextures(
+      { this->Textures->GetVolumeTexture(), this->Textures->GetValidityTexture(),
+        this->Textures->GetTransferTexture(), this->Textures->GetBlockTexture(),
+        this->Textures->GetDetailTexture(), this->Textures->GetEmissionTexture() });
+  }
 };
 
 //------------------------------------------------------------------------------
@@ -307,6 +328,65 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVolumeMapper* self,
+  vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window)
+{
+  if (this->Window && this->Window != window)
+  {
+    // Released in their own context, then back to this one.
+    this->Window->MakeCurrent();
+    self->ReleaseGraphicsResources(this->Window);
+    window->MakeCurrent();
+  }
+  this->Window = window;
+  if (!this->Scene.Update(renderer, volume, self) ||
+    !this->Textures->Update(window, this->Scene.GetMedium(), self) ||
+    !this->Textures->UpdateDetail(window, this->Scene.GetDetail(), self))
+  {
+    return false;
+  }
+  this->WarnClippedDetail(
+    self, self->TransmittanceMethod == BRUTE_FORCE || self->DetailSamplesPerPixel > 0);
+  vtkTransmittanceFrame::Settings settings;
+  settings.Method = self->TransmittanceMethod;
+  settings.Coefficients = self->NumberOfCoefficients;
+  settings.MapSize = self->TransmittanceMapSize;
+  settings.LightSampleCount = self->LightSampleCount;
+  const bool channelMaps =
+    self->TransmittanceMethod == TFM || self->TransmittanceMethod == ADAPTIVE_TFM;
+  settings.AdaptiveThreshold =
+    LightThreshold(self->AdaptiveThreshold, this->Scene.GetMedium(), channelMaps);
+  settings.SampleDistance = self->SampleDistance;
+  settings.Jitter = self->Jitter;
+  settings.SkipEmptySpace = self->EmptySpaceSkipping;
+  settings.CacheSize = self->TransmittanceCache ? self->TransmittanceCacheSize : 0;
+  this->Frame.Prepare(renderer, window, this->Scene, *this->Textures, settings);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::UpdateShadowMaps(vtkRenderer* renderer, vtkVolume* volume)
+{
+  vtkInternals& in = *this->Internals;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  if (!window || !in.PrepareFrame(this, renderer, volume, window) || !in.Frame.NeedsMaps())
+  {
+    return false;
+  }
+  vtkTransmittanceScopedTextures medium = in.BindMedium();
+  return in.Maps->Render(in.Frame, this);
+}
+
+//------------------------------------------------------------------------------
+const vtkTransmittanceFrame& vtkTransmittanceVolumeMapper::GetShadowFrame(
+  vtkTextureObject*& maps, int& slices)
+{
+  maps = this->Internals->Maps->GetTexture();
+  slices = this->Internals->Maps->GetSlices();
+  return this->Internals->Frame;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume)
 {
   vtkInternals& in = *this->Internals;
@@ -317,38 +397,11 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     return;
   }
   in.Complete = false;
-  if (in.Window && in.Window != window)
-  {
-    // Released in their own context, then back to this one.
-    in.Window->MakeCurrent();
-    this->ReleaseGraphicsResources(in.Window);
-    window->MakeCurrent();
-  }
-  in.Window = window;
-  if (!in.Scene.Update(renderer, volume, this) ||
-    !in.Textures->Update(window, in.Scene.GetMedium(), this) ||
-    !in.Textures->UpdateDetail(window, in.Scene.GetDetail(), this))
+  if (!in.PrepareFrame(this, renderer, volume, window))
   {
     return;
   }
-  in.WarnClippedDetail(
-    this, this->TransmittanceMethod == BRUTE_FORCE || this->DetailSamplesPerPixel > 0);
-  vtkTransmittanceFrame::Settings settings;
-  settings.Method = this->TransmittanceMethod;
-  settings.Coefficients = this->NumberOfCoefficients;
-  settings.MapSize = this->TransmittanceMapSize;
-  settings.LightSampleCount = this->LightSampleCount;
-  settings.AdaptiveThreshold = OctaveThreshold(this->AdaptiveThreshold, in.Scene.GetMedium());
-  settings.SampleDistance = this->SampleDistance;
-  settings.Jitter = this->Jitter;
-  settings.SkipEmptySpace = this->EmptySpaceSkipping;
-  settings.CacheSize = this->TransmittanceCache ? this->TransmittanceCacheSize : 0;
-  in.Frame.Prepare(renderer, window, in.Scene, *in.Textures, settings);
-
-  vtkTransmittanceScopedTextures medium(
-    { in.Textures->GetVolumeTexture(), in.Textures->GetValidityTexture(),
-      in.Textures->GetTransferTexture(), in.Textures->GetBlockTexture(),
-      in.Textures->GetDetailTexture(), in.Textures->GetEmissionTexture() });
+  vtkTransmittanceScopedTextures medium = in.BindMedium();
   vtkTransmittanceRayCastPass::Inputs inputs;
   if (in.Occlusion->Render(in.Frame, this))
   {

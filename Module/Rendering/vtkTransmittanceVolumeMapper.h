@@ -82,6 +82,8 @@
 #include <memory> // For std::unique_ptr
 
 class vtkImageData;
+class vtkTextureObject;
+class vtkTransmittanceFrame;
 class vtkTransmittanceLightFrustum;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceVolumeMapper : public vtkVolumeMapper
@@ -139,8 +141,11 @@ public:
    * Transmittance threshold of the adaptive methods' first march, in
    * [1e-6, 0.5]; default 0.01. With multiple-scattering octaves
    * (vtkParticipatingMediumProperty::ScatteringOctaves N, OctaveExtinction
-   * b) the maps are built to threshold^(1 / b^(N-1)), so that the last
-   * octave's light is resolved as far as single scattering's is.
+   * b) and a coloured extinction (vtkParticipatingMediumProperty::
+   * ExtinctionColor, its smallest positive component e relative to the
+   * largest) the maps are built to threshold^(1 / (b^(N-1) e)), so that the
+   * last octave's light and the faintest channel's are resolved as far as
+   * single scattering's grey light is.
    */
   vtkSetClampMacro(AdaptiveThreshold, double, 1.0e-6, 0.5);
   vtkGetMacro(AdaptiveThreshold, double);
@@ -292,7 +297,9 @@ public:
    *
    * Fewer than n are drawn where a pixel's loop iterations would pass the
    * ray-cast pass's budget (GetLastDetailSamplesPerPixel()). No effect
-   * without detail.
+   * without detail, and none with a coloured extinction
+   * (vtkParticipatingMediumProperty::ExtinctionColor: the free flights
+   * follow one transmittance), which marches.
    */
   vtkSetClampMacro(DetailSamplesPerPixel, int, 0, 64);
   vtkGetMacro(DetailSamplesPerPixel, int);
@@ -386,6 +393,23 @@ public:
    * Render the volume (called by the renderer).
    */
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
+
+  /**
+   * For vtkVolumeShadowReceiverPass, before the opaque geometry is drawn:
+   * brings this volume's transmittance maps up to date for `renderer` (built
+   * only when stale; Render() then reuses them). False when no light of the
+   * frame has a map (the None and BruteForce methods, a light inside the
+   * volume's box) or on error.
+   */
+  bool UpdateShadowMaps(vtkRenderer* renderer, vtkVolume* volume);
+
+#ifndef __VTK_WRAP__
+  /**
+   * Internal (vtkVolumeShadowReceiverPass): the frame of the last
+   * UpdateShadowMaps() or Render() and its maps (`maps`, `slices` slices).
+   */
+  const vtkTransmittanceFrame& GetShadowFrame(vtkTextureObject*& maps, int& slices);
+#endif
 
   /**
    * Release the OpenGL resources of the window.

@@ -371,6 +371,20 @@ bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter
 }
 
 //------------------------------------------------------------------------------
+double vtkTyndallGridMedium::GetFaintestChannel() const
+{
+  double faintest = 1.0;
+  for (double e : this->ExtinctionColor)
+  {
+    if (e > 0.0)
+    {
+      faintest = std::min(faintest, e);
+    }
+  }
+  return faintest;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
 {
   vtkVolumeProperty* property = volume->GetProperty();
@@ -378,7 +392,20 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   vtkNew<vtkParticipatingMediumProperty> defaults;
   vtkParticipatingMediumProperty* source = medium ? medium : defaults.Get();
   this->ScatteringModel = source->GetScatteringModel();
-  this->DensityScale = source->GetDensityScale();
+  // The densest channel's extinction scales the density; the channels are
+  // relative to it.
+  const double* color = source->GetExtinctionColor();
+  const double densest = std::max(std::max(color[0], color[1]), color[2]);
+  this->DensityScale = source->GetDensityScale() * densest;
+  for (int k = 0; k < 3; ++k)
+  {
+    this->ExtinctionColor[k] = densest > 0.0 ? color[k] / densest : 1.0;
+  }
+  if (densest > 0.0)
+  {
+    // Exactly 1 for the densest channel, whatever the division rounds to.
+    this->ExtinctionColor[std::max_element(color, color + 3) - color] = 1.0;
+  }
   this->ScatteringAnisotropy = source->GetScatteringAnisotropy();
   this->LightScale = source->GetLightScale();
   this->AmbientIntensity = source->GetAmbientIntensity();

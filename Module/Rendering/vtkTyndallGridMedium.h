@@ -141,6 +141,25 @@ public:
   int GetScatteringOctaves() const { return this->ScatteringOctaves; }
   const double* GetOctaveFactors() const { return this->OctaveFactors; }
   double GetEmissionScale() const { return this->EmissionScale; }
+  /**
+   * Coloured extinction: channel k's extinction is GetExtinctionColor()[k]
+   * times the extinction (GetDensityScale() already holds the property's
+   * largest ExtinctionColor component, so the largest component here is 1,
+   * and the extinction is the densest channel's: the maps and the majorants
+   * need no change).
+   */
+  const double* GetExtinctionColor() const { return this->ExtinctionColor; }
+  /// Whether the channels' extinctions differ (the renderers then track three transmittances).
+  bool GetChromatic() const
+  {
+    return this->ExtinctionColor[0] != 1.0 || this->ExtinctionColor[1] != 1.0 ||
+      this->ExtinctionColor[2] != 1.0;
+  }
+  /**
+   * The smallest positive component of GetExtinctionColor() (1 for a grey
+   * medium): the faintest channel's transmittance is the map's raised to it.
+   */
+  double GetFaintestChannel() const;
   /// Single scattering with an emission colour and a positive scale.
   bool GetHasEmission() const { return this->HasEmission; }
   ///@}
@@ -251,6 +270,7 @@ private:
   double ScatteringAnisotropy = 0.0;
   double LightScale = 1.0;
   double AmbientIntensity = 0.0;
+  double ExtinctionColor[3] = { 1.0, 1.0, 1.0 };
   int ScatteringOctaves = 1;
   double OctaveFactors[3] = { 0.0, 0.0, 0.0 };
   double EmissionScale = 0.0;

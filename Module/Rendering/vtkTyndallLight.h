@@ -37,6 +37,11 @@ public:
   /// Cosine of the cone angle, and the spot exponent (spot lights).
   double ConeCosine = -1.0;
   double Exponent = 1.0;
+  /**
+   * The light's index among the renderer's switched-on lights (the index
+   * of its lightColor<i> uniform in VTK's polydata shaders).
+   */
+  int RendererIndex = 0;
 };
 
 #endif

@@ -83,6 +83,8 @@ void vtkTyndallReferenceScene::SetUpMedium(const vtkTyndallGridMedium& medium)
     this->BoxHigh[r] = medium.GetBoxHigh()[r];
   }
   this->DensityScale = medium.GetDensityScale();
+  this->Chromatic = medium.GetChromatic();
+  std::copy(medium.GetExtinctionColor(), medium.GetExtinctionColor() + 3, this->ExtinctionColor);
   this->SingleScattering = medium.GetSingleScattering();
   this->G = medium.GetScatteringAnisotropy();
   this->Ambient = medium.GetAmbientIntensity();
@@ -248,9 +250,10 @@ void vtkTyndallReferenceScene::Composite(vtkImageData* image, vtkDataArray* radi
   unsigned char* out = rgb->GetPointer(0);
   for (vtkIdType i = 0; i < pixels; ++i)
   {
-    const double t = transmittance->GetComponent(i, 0);
     for (int c = 0; c < 3; ++c)
     {
+      const double t =
+        transmittance->GetComponent(i, transmittance->GetNumberOfComponents() == 3 ? c : 0);
       const double v =
         std::min(1.0, std::max(0.0, radiance->GetComponent(i, c) + t * background[c]));
       out[3 * i + c] = static_cast<unsigned char>(std::floor(v * 255.0 + 0.5));

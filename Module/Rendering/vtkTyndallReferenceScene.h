@@ -40,6 +40,7 @@
 #include "vtkType.h"                 // For vtkIdType
 
 #include <algorithm>  // For std::min, std::max, std::swap
+#include <cmath>      // For std::pow
 #include <functional> // For std::function
 #include <vector>     // For std::vector
 
@@ -79,6 +80,9 @@ public:
   double BoxLow[3];
   double BoxHigh[3];
   double DensityScale = 1.0;
+  /// Coloured extinction: channel k's extinction is ExtinctionColor[k] times the medium's.
+  bool Chromatic = false;
+  double ExtinctionColor[3] = { 1.0, 1.0, 1.0 };
   bool SingleScattering = true;
   double G = 0.0;
   double Ambient = 0.0;
@@ -134,6 +138,16 @@ public:
   }
   ///@}
 
+  /**
+   * Channel k's transmittance where the densest channel's is T:
+   * T^ExtinctionColor[k] (1 for a channel without extinction).
+   */
+  double ChannelTransmittance(double T, int k) const
+  {
+    const double e = this->ExtinctionColor[k];
+    return e == 0.0 ? 1.0 : (T > 0.0 ? std::pow(std::min(T, 1.0), e) : 0.0);
+  }
+
   /// The phase function at the cosine mu (Henyey-Greenstein, anisotropy G).
   double Phase(double mu) const { return vtkTransmittanceMapMath::HenyeyGreenstein(this->G, mu); }
 
@@ -188,7 +202,8 @@ public:
    * point x seen along the unit world direction w; `transmittance(dl,
    * tMax)` is the light transmittance T_l along dl (see LightGeometry()).
    * With Octaves > 1, p(mu_l) T_l becomes the octaves' sum at the albedo
-   * `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
+   * `albedo` (vtkTransmittanceMapMath::OctaveScattering()). With a
+   * coloured extinction, channel k sees ChannelTransmittance(T_l, k).
    */
   template <typename LightTransmittance>
   void AddInScattering(const double x[3], const double w[3], const double albedo[3],
@@ -204,22 +219,41 @@ public:
       // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
       const double mu = vtkMath::Dot(l, w);
       const double T = transmittance(dl, tMax);
-      double weight[3] = { this->Phase(mu) * T, 0.0, 0.0 };
-      if (this->Octaves > 1)
+      double weight[3];
+      if (!this->Chromatic)
       {
-        const double* f = this->OctaveFactors;
-        vtkTransmittanceMapMath::OctaveScattering(
-          this->Octaves, f[0], f[1], f[2], this->G, mu, T, albedo, weight);
+        this->LightWeight(mu, T, albedo, weight);
       }
       else
       {
-        weight[1] = weight[2] = weight[0];
+        for (int c = 0; c < 3; ++c)
+        {
+          double channel[3];
+          this->LightWeight(mu, this->ChannelTransmittance(T, c), albedo, channel);
+          weight[c] = channel[c];
+        }
       }
       for (int c = 0; c < 3; ++c)
       {
         in[c] += light.E[c] * factor * weight[c];
       }
     }
+  }
+
+  /**
+   * p(mu) T per channel, or with Octaves > 1 the octaves' sum at the albedo
+   * `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
+   */
+  void LightWeight(double mu, double T, const double albedo[3], double weight[3]) const
+  {
+    if (this->Octaves > 1)
+    {
+      const double* f = this->OctaveFactors;
+      vtkTransmittanceMapMath::OctaveScattering(
+        this->Octaves, f[0], f[1], f[2], this->G, mu, T, albedo, weight);
+      return;
+    }
+    weight[0] = weight[1] = weight[2] = this->Phase(mu) * T;
   }
 
   /**

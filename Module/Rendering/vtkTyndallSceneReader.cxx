@@ -86,8 +86,10 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
+  int switchedOn = 0;
   while (vtkLight* light = lights->GetNextLight(it))
   {
+    const int rendererIndex = light->GetSwitch() ? switchedOn++ : -1;
     if (!light->GetSwitch() || !(light->GetIntensity() > 0.0))
     {
       continue;
@@ -98,6 +100,7 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
       continue;
     }
     vtkTyndallLight l;
+    l.RendererIndex = rendererIndex;
     double focalPoint[3];
     PlaceLight(light, camera, follow, l.Position, focalPoint);
     for (int c = 0; c < 3; ++c)

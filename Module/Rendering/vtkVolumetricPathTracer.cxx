@@ -548,6 +548,13 @@ bool SetUpSampling(
                                          "tracer; vtkSingleScatteringReference renders it.");
     return false;
   }
+  if (scene.Chromatic)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: a coloured extinction (ExtinctionColor with "
+                                         "unequal components) is not supported by the path "
+                                         "tracer; vtkSingleScatteringReference renders it.");
+    return false;
+  }
   scene.Majorant =
     scene.ClosedForm ? 0.0 : (scene.Detail ? scene.Detail->GetMajorant() : GridMajorant(medium));
   if (!std::isfinite(scene.Majorant) ||

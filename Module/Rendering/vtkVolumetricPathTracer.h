@@ -83,7 +83,9 @@
  * refuses, a size outside [1, 16384], a camera projection that cannot be
  * inverted, a majorant so large that delta tracking would take more than
  * 10^7 steps across the box) is reported with vtkErrorMacro and Render()
- * returns nullptr.
+ * returns nullptr. So are what it does not render: emission from a separate
+ * array (EmissionArrayName) and a coloured extinction (ExtinctionColor with
+ * unequal components), which vtkSingleScatteringReference renders.
  *
  * The property's multiple-scattering octaves
  * (vtkParticipatingMediumProperty::ScatteringOctaves) are ignored: the paths

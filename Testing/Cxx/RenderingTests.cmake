@@ -23,6 +23,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperOctaves.cxx
   TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperFire.cxx
+  TestTransmittanceMapperChromatic.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx

@@ -124,6 +124,28 @@ rgb = [0.0, 0.0, 0.0]
 vtkBlackbody.LinearSRGB(1500.0, 1500.0, rgb)
 check(rgb[0] > rgb[1] > rgb[2] >= 0.0, "1500 K is orange from Python: %s" % rgb)
 
+medium.SetExtinctionColor(0.25, 2.0, -1.0)
+check(medium.GetExtinctionColor() == (0.25, 1.0, 0.0),
+      "the extinction colour clamps to [0, 1]: %s" % (medium.GetExtinctionColor(),))
+
+# A coloured extinction from Python: the CPU reference's transmittance is
+# per channel, and the GPU draws it.
+colored_prop = vtkParticipatingMediumProperty()
+colored_prop.DeepCopy(prop)
+colored_prop.SetExtinctionColor(0.3, 0.6, 1.0)
+volume.SetProperty(colored_prop)
+mapper.SetTransmittanceMethodToBruteForce()
+window.Render()
+grab.Modified()
+grab.Update()
+colored = grab.GetOutput().GetPointData().GetScalars()
+reference.Render(renderer, volume, 96, 96)
+T = reference.GetOutput().GetPointData().GetArray("Transmittance")
+check(T.GetNumberOfComponents() == 3, "per-channel view transmittance")
+changed = sum(abs(colored.GetComponent(i, 0) - gpu.GetComponent(i, 0)) for i in range(n))
+check(changed > 0, "the coloured extinction changes the GPU picture")
+volume.SetProperty(prop)
+
 if failures:
     sys.exit(1)
 print("ok")

@@ -16,5 +16,6 @@ void main()
   // texCoord is (i + 0.5) / n at the texel's centre.
   vec2 q = (texCoord * lightCacheSize.xy - 0.5) / (lightCacheSize.xy - 1.0);
   vec3 x = (boxToWorld * vec4(q, sliceCoordinate, 1.0)).xyz;
-  gl_FragData[0] = vec4(tyndallMapTransmittance(lightIndex, x), 0.0, 0.0, 1.0);
+  // Per channel with a coloured extinction (an RGBA texture then), else in red.
+  gl_FragData[0] = vec4(vec3(tyndallMapTransmittance(lightIndex, x)), 1.0);
 }

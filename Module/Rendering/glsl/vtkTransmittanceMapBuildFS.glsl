@@ -12,6 +12,9 @@ uniform int method;
 uniform int coefficientCount;
 uniform int sampleCount;
 uniform float adaptiveThreshold;
+// Transmittance-function maps of a coloured extinction are built per
+// channel: the channel's extinction relative to the medium's (else 1).
+uniform float channelExtinction;
 
 float coefficients[TYNDALL_MAX_COEFFICIENTS];
 
@@ -45,7 +48,7 @@ float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool e
     }
 #endif
     ++n;
-    float sigma = tyndallExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
+    float sigma = channelExtinction * tyndallExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
     float opticalStep = sigma * rangeLength * du;
     float value = etm ? sigma * rangeLength : exp(-(tau + 0.5 * opticalStep));
     // cos(j pi u) by the angle-addition recurrence.
@@ -101,7 +104,7 @@ void main()
           continue;
         }
 #endif
-        float sigma = tyndallExtinction(kIn + (float(n) + 0.5) * du * D * dir);
+        float sigma = channelExtinction * tyndallExtinction(kIn + (float(n) + 0.5) * du * D * dir);
         if (sMin < 0.0 && sigma > 0.0)
         {
           sMin = float(n) * du;

@@ -2,7 +2,9 @@
 // the pixel's ray through the volume up to the depth of opaque geometry and
 // integrates emission-absorption or single scattering with the light
 // transmittance of the selected method (Documentation/rendering-model.md).
-// Writes premultiplied radiance and alpha = 1 - view transmittance.
+// Writes premultiplied radiance and alpha = 1 - view transmittance; with a
+// coloured extinction (TYNDALL_CHROMATIC, always accumulated) also 1 - the
+// view transmittance per channel, into a second image (tyndallWrite()).
 //
 // A ray's steps n = firstStep .. endStep - 1 are marched by one pass: the
 // whole ray in one (drawn straight into the window), or split over several
@@ -19,6 +21,55 @@ uniform int endStep;
 #if TYNDALL_ACCUMULATE
 uniform sampler2D previousTexture;
 #endif
+
+// Coloured extinction: TyndallTransmittance and extinctionColor are the
+// common shader's (TYNDALL_CHROMATIC); the camera rays then track three view
+// transmittances, written to a second image.
+#if TYNDALL_CHROMATIC
+#if !TYNDALL_ACCUMULATE
+#error "A coloured extinction is drawn through the accumulation images."
+#endif
+uniform sampler2D previousOpacityTexture; // 1 - view transmittance per channel
+#endif
+
+float tyndallLargest(float t)
+{
+  return t;
+}
+
+float tyndallLargest(vec3 t)
+{
+  return max(max(t.r, t.g), t.b);
+}
+
+// (1 - exp(-sigma dt)) / sigma: a step's emission per unit length attenuated
+// within the step; its series dt (1 - sigma dt / 2) where sigma dt is small
+// (1 - exp() cancels in single precision there).
+float tyndallAttenuatedLength(float sigma, float dt)
+{
+  float depth = sigma * dt;
+  return depth > 1e-3 ? (1.0 - exp(-depth)) / sigma : dt * (1.0 - 0.5 * depth);
+}
+
+vec3 tyndallAttenuatedLength(vec3 sigma, float dt)
+{
+  return vec3(tyndallAttenuatedLength(sigma.r, dt), tyndallAttenuatedLength(sigma.g, dt),
+    tyndallAttenuatedLength(sigma.b, dt));
+}
+
+// The pass's output: the rays' premultiplied radiance and 1 - their view
+// transmittance (per channel in a second image with a coloured extinction;
+// the first image's alpha is then 1 - the channels' mean).
+void tyndallWrite(vec3 radiance, TyndallTransmittance Tv)
+{
+#if TYNDALL_CHROMATIC
+  float opacity = 1.0 - (Tv.r + Tv.g + Tv.b) / 3.0;
+  gl_FragData[0] = vec4(radiance, opacity);
+  gl_FragData[1] = vec4(1.0 - Tv, opacity);
+#else
+  gl_FragData[0] = vec4(radiance, 1.0 - Tv);
+#endif
+}
 
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform float stepLength;
@@ -78,17 +129,15 @@ bool occluded(int l, vec3 x)
 #endif
 }
 
-// Light transmittance from x towards light l (world direction toLight).
-float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
+// Light transmittance through the medium (per channel with a coloured
+// extinction) from x towards light l (world direction toLight); opaque
+// geometry is occluded()'s.
+TyndallTransmittance lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
 {
-  if (occluded(l, x))
-  {
-    return 0.0;
-  }
   int m = lightMethod[l];
   if (m == TYNDALL_NONE)
   {
-    return 1.0;
+    return TyndallTransmittance(1.0);
   }
 #if TYNDALL_BRUTE_FORCE_LIGHTS
   if (m == TYNDALL_BRUTE_FORCE)
@@ -97,11 +146,11 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
     float tEnd = min(range.y, lightDistance);
     if (tEnd <= 0.0)
     {
-      return 1.0;
+      return TyndallTransmittance(1.0);
     }
 #if TYNDALL_DETAIL_GROUPS > 0
     // Procedural detail: the closed form, exact at any distance.
-    return exp(-tyndallDetailDepth(x, toLight, tEnd));
+    return exp(-tyndallDetailDepth(x, toLight, tEnd) * extinctionColor);
 #else
     float dt = tEnd / float(lightSampleCount);
     float tau = 0.0;
@@ -119,7 +168,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
         }
       }
     }
-    return exp(-tau * dt);
+    return exp(-tau * dt * extinctionColor);
 #endif
   }
 #endif
@@ -128,7 +177,7 @@ float lightTransmittance(int l, vec3 x, vec3 toLight, float lightDistance)
 #elif TYNDALL_MAP_COEFFICIENTS > 0
   return tyndallMapTransmittance(l, x);
 #else
-  return 1.0;
+  return TyndallTransmittance(1.0);
 #endif
 }
 
@@ -156,6 +205,29 @@ vec3 tyndallArrayEmission(vec3 x)
 
 #if TYNDALL_OCTAVES > 1
 uniform vec3 octaveFactors; // a (scattering), b (extinction), c (anisotropy)
+#endif
+
+#if TYNDALL_CHROMATIC
+// tyndallOctaves() per channel, channel k seeing the light through T[k].
+vec3 tyndallOctaves(float mu, vec3 T, vec3 albedo)
+{
+  vec3 sum = tyndallPhaseHG(anisotropy, mu) * T;
+#if TYNDALL_OCTAVES > 1
+  vec3 live = vec3(greaterThan(T, vec3(0.0)));
+  vec3 logT = log(clamp(T, 1e-30, 1.0));
+  vec3 scale = vec3(1.0);
+  float extinction = 1.0;
+  float g = anisotropy;
+  for (int i = 1; i < TYNDALL_OCTAVES; ++i)
+  {
+    scale *= octaveFactors.x * albedo;
+    extinction *= octaveFactors.y;
+    g *= octaveFactors.z;
+    sum += live * scale * tyndallPhaseHG(g, mu) * exp(extinction * logT);
+  }
+#endif
+  return sum;
+}
 #endif
 
 // p(g, mu) T, or with TYNDALL_OCTAVES > 1 the octaves' sum
@@ -220,6 +292,10 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
     // mu: cosine between the light's travel direction and the direction
     // towards the camera.
     float mu = dot(-toLight, -w);
+    if (occluded(l, x))
+    {
+      continue; // opaque geometry: no light in any channel
+    }
     sum += E * tyndallOctaves(mu, lightTransmittance(l, x, toLight, distance), albedo);
   }
   return sum;
@@ -299,6 +375,11 @@ void main()
     2.0 * texture(depthTexture, windowXY / vec2(textureSize(depthTexture, 0))).r - 1.0;
 #if TYNDALL_ACCUMULATE
   vec4 previous = texelFetch(previousTexture, ivec2(gl_FragCoord.xy), 0);
+#if TYNDALL_CHROMATIC
+  vec3 previousTv = 1.0 - texelFetch(previousOpacityTexture, ivec2(gl_FragCoord.xy), 0).rgb;
+#else
+  float previousTv = 1.0 - previous.a;
+#endif
 #endif
   vec3 p0 = unproject(ndc, -1.0);
   vec3 p1 = unproject(ndc, depthNdc);
@@ -308,9 +389,9 @@ void main()
   float tNear = max(range.x, 0.0);
   float tFar = min(range.y, tDepth);
 #if TYNDALL_ACCUMULATE
-  if (!(tNear < tFar) || 1.0 - previous.a < TYNDALL_VIEW_TERMINATION)
+  if (!(tNear < tFar) || tyndallLargest(previousTv) < TYNDALL_VIEW_TERMINATION)
   {
-    gl_FragData[0] = previous; // nothing (more) to march
+    tyndallWrite(previous.rgb, previousTv); // nothing (more) to march
     return;
   }
 #if TYNDALL_DETAIL_SAMPLES > 0
@@ -318,14 +399,14 @@ void main()
   return;
 #endif
   vec3 radiance = previous.rgb;
-  float Tv = 1.0 - previous.a;
+  TyndallTransmittance Tv = previousTv;
 #else
   if (!(tNear < tFar))
   {
     discard;
   }
   vec3 radiance = vec3(0.0);
-  float Tv = 1.0;
+  TyndallTransmittance Tv = TyndallTransmittance(1.0);
 #endif
   float offset = 0.5;
   if (jitter != 0)
@@ -362,18 +443,13 @@ void main()
     float tableCoord;
     float sigma = tyndallMedium(x, color, tableCoord);
 #if TYNDALL_EMISSION_ARRAY
-    // Emission per unit length over the step, attenuated within it:
-    // (1 - exp(-sigma dt)) / sigma; its series dt (1 - sigma dt / 2) where
-    // sigma dt is small (1 - exp() cancels in single precision there).
-    {
-      float depth = sigma * dt;
-      radiance += Tv * emissionScale * tyndallArrayEmission(x) *
-        (depth > 1e-3 ? (1.0 - exp(-depth)) / sigma : dt * (1.0 - 0.5 * depth));
-    }
+    // Emission per unit length over the step, attenuated within it.
+    radiance += Tv * emissionScale * tyndallArrayEmission(x) *
+      tyndallAttenuatedLength(sigma * extinctionColor, dt);
 #endif
     if (sigma > 0.0)
     {
-      float stepOpacity = 1.0 - exp(-sigma * dt);
+      TyndallTransmittance stepOpacity = 1.0 - exp(-sigma * extinctionColor * dt);
       vec3 source; // per unit sigma_t
       if (scatteringModel == 0)
       {
@@ -388,12 +464,12 @@ void main()
       }
       radiance += Tv * stepOpacity * source;
       Tv *= 1.0 - stepOpacity;
-      if (Tv < TYNDALL_VIEW_TERMINATION)
+      if (tyndallLargest(Tv) < TYNDALL_VIEW_TERMINATION)
       {
-        Tv = 0.0;
+        Tv = TyndallTransmittance(0.0);
         break;
       }
     }
   }
-  gl_FragData[0] = vec4(radiance, 1.0 - Tv);
+  tyndallWrite(radiance, Tv);
 }
