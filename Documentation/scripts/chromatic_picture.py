@@ -9,32 +9,17 @@ through it reddened) and 1 0.5 0.15 (red the densest), side by side.
 
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolume
+from vtkmodules.vtkRenderingCore import vtkVolume
 
-from doc_scene import grab, window_around
+from doc_scene import cloud_medium, cloud_source, grab, window_around
 
-from tyndall import (vtkCosineNoiseSource, vtkParticipatingMediumProperty,
-                     vtkTransmittanceVolumeMapper)
+from tyndall import vtkTransmittanceVolumeMapper
 
 SIZE = 256
-source = vtkCosineNoiseSource()
-source.SetWholeExtent(0, 95, 0, 95, 0, 95)
-source.SetSpacing(2 / 95, 2 / 95, 2 / 95)
-
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(0.0, 0.0)
-opacity.AddPoint(8.0, 0.6)
-albedo = vtkColorTransferFunction()
-albedo.AddRGBPoint(0.0, 0.9, 0.9, 0.9)
-albedo.AddRGBPoint(8.0, 0.9, 0.9, 0.9)
-medium = vtkParticipatingMediumProperty()
-medium.SetScalarOpacity(opacity)
-medium.SetColor(albedo)
-medium.SetScalarOpacityUnitDistance(0.05)
-medium.SetAmbientIntensity(0.1)
+source = cloud_source()
+medium = cloud_medium(0.6, 0.9, 0.1)
 
 mapper = vtkTransmittanceVolumeMapper()
 mapper.SetInputConnection(source.GetOutputPort())

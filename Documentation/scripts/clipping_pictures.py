@@ -11,34 +11,19 @@ in the removed half's shadow).
 
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane
+from vtkmodules.vtkCommonDataModel import vtkPlane
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolume
+from vtkmodules.vtkRenderingCore import vtkVolume
 
-from doc_scene import grab, window_around
+from doc_scene import cloud_medium, cloud_source, grab, window_around
 
-from tyndall import (vtkCosineNoiseSource, vtkParticipatingMediumProperty,
-                     vtkSingleScatteringReference, vtkTransmittanceVolumeMapper)
+from tyndall import vtkSingleScatteringReference, vtkTransmittanceVolumeMapper
 
 SIZE = 256
 
-source = vtkCosineNoiseSource()
-source.SetWholeExtent(0, 95, 0, 95, 0, 95)
-source.SetSpacing(2 / 95, 2 / 95, 2 / 95)
-source.Update()
-
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(0.0, 0.0)
-opacity.AddPoint(8.0, 0.6)
-albedo = vtkColorTransferFunction()
-albedo.AddRGBPoint(0.0, 0.9, 0.9, 0.9)
-albedo.AddRGBPoint(8.0, 0.9, 0.9, 0.9)
-medium = vtkParticipatingMediumProperty()
-medium.SetScalarOpacity(opacity)
-medium.SetColor(albedo)
-medium.SetScalarOpacityUnitDistance(0.05)
-medium.SetAmbientIntensity(0.05)
+source = cloud_source()
+medium = cloud_medium(0.6, 0.9, 0.05)
 
 plane = vtkPlane()  # keeps x <= 0.05: the half away from the sun
 plane.SetOrigin(0.05, 0, 0)

@@ -1,9 +1,39 @@
-"""What the documentation's picture scripts share: a renderer with one sun
-and the tests' camera around a volume, a window, and grabbing its picture."""
+"""What the documentation's picture scripts share: the built-in cloud and a
+white cloud medium, a renderer with one sun and the tests' camera around a
+volume, a window, and grabbing its picture."""
 
-from vtkmodules.vtkRenderingCore import (vtkLight, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
+                                         vtkRenderWindow, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
+
+from tyndall import vtkCosineNoiseSource, vtkParticipatingMediumProperty
+
+
+def cloud_source(n=96):
+    """The built-in cloud (vtkCosineNoiseSource's defaults) at n^3 over [-1, 1]^3."""
+    source = vtkCosineNoiseSource()
+    source.SetWholeExtent(0, n - 1, 0, n - 1, 0, n - 1)
+    source.SetSpacing(2 / (n - 1), 2 / (n - 1), 2 / (n - 1))
+    source.Update()
+    return source
+
+
+def cloud_medium(peak_opacity, albedo, ambient):
+    """A grey medium for the cloud: opacity up to `peak_opacity` per 0.05
+    world units at the density 8, the albedo `albedo`, ambient `ambient`."""
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0.0, 0.0)
+    opacity.AddPoint(8.0, peak_opacity)
+    color = vtkColorTransferFunction()
+    color.AddRGBPoint(0.0, albedo, albedo, albedo)
+    color.AddRGBPoint(8.0, albedo, albedo, albedo)
+    medium = vtkParticipatingMediumProperty()
+    medium.SetScalarOpacity(opacity)
+    medium.SetColor(color)
+    medium.SetScalarOpacityUnitDistance(0.05)
+    medium.SetAmbientIntensity(ambient)
+    return medium
 
 
 def window_around(volume, size, background, sun_from, sun_intensity):

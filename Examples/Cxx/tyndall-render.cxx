@@ -432,7 +432,8 @@ int main(int argc, char* argv[])
   if (!exr.empty())
   {
     floatPass->SetColorFormat(vtkTextureObject::Float32);
-    floatPass->SetDelegatePass(steps);
+    // The builder's passes (--ground) inside the float frame buffer, else VTK's usual steps.
+    floatPass->SetDelegatePass(renderer->GetPass() ? renderer->GetPass() : steps.Get());
     renderer->SetPass(floatPass);
   }
   errors->Clear();

@@ -217,6 +217,9 @@ const Spec kOptions[] = {
   { "background", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
     "background colour in [0, 1] (the bottom colour of a gradient) [default scene: sky "
     "gradient; data: black]" },
+  { "ground", "", Kind::Flag, 0, 0, false, "", "", "", "Image", Both,
+    "a grey ground under the volume (perpendicular to the view-up) that receives its shadow "
+    "(vtkVolumeShadowReceiverPass)" },
   { "background2", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
     "top colour: makes the background a vertical gradient" },
   { "output", "-o", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,

@@ -1,5 +1,6 @@
 #include "vtkTyndallSceneBuilder.h"
 
+#include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -16,6 +17,9 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkStringArray.h"
 #include "vtkTransferFunctionFileReader.h"
@@ -24,6 +28,7 @@
 #include "vtkTyndallOptions.h"
 #include "vtkVolume.h"
 #include "vtkVolumeFileReader.h"
+#include "vtkVolumeShadowReceiverPass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -153,8 +158,59 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
     return false;
   }
   this->SetUpLights(renderer);
+  this->AddGround(renderer);
   renderer->ResetCameraClippingRange();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::AddGround(vtkRenderer* renderer)
+{
+  this->Ground = nullptr;
+  this->GroundShadows = nullptr;
+  if (!this->Options->GetFlag("ground"))
+  {
+    return;
+  }
+  // Perpendicular to the camera's view-up, a tenth of the volume's diagonal
+  // below its lowest corner, four diagonals wide.
+  double bounds[6], up[3], center[3];
+  this->Volume->GetBounds(bounds);
+  renderer->GetActiveCamera()->GetViewUp(up);
+  vtkMath::Normalize(up);
+  double lowest = 0.0, diagonal = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    center[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
+    lowest -= 0.5 * std::abs(up[a]) * (bounds[2 * a + 1] - bounds[2 * a]);
+    diagonal += (bounds[2 * a + 1] - bounds[2 * a]) * (bounds[2 * a + 1] - bounds[2 * a]);
+  }
+  diagonal = std::sqrt(diagonal);
+  double u[3], v[3];
+  vtkMath::Perpendiculars(up, u, v, 0.0);
+  vtkMath::Cross(up, u, v); // u x v = up: the plane's normal points up
+  vtkNew<vtkPlaneSource> plane;
+  double origin[3], p1[3], p2[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    origin[a] = center[a] + (lowest - 0.1 * diagonal) * up[a] - 2.0 * diagonal * (u[a] + v[a]);
+    p1[a] = origin[a] + 4.0 * diagonal * u[a];
+    p2[a] = origin[a] + 4.0 * diagonal * v[a];
+  }
+  plane->SetOrigin(origin);
+  plane->SetPoint1(p1);
+  plane->SetPoint2(p2);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  this->Ground = vtkSmartPointer<vtkActor>::New();
+  this->Ground->SetMapper(mapper);
+  this->Ground->GetProperty()->SetColor(0.8, 0.8, 0.8);
+  this->Ground->GetProperty()->SetAmbient(0.15);
+  this->Ground->GetProperty()->SetDiffuse(0.85);
+  this->Ground->GetProperty()->SetSpecular(0.0);
+  renderer->AddActor(this->Ground);
+  this->GroundShadows = vtkSmartPointer<vtkVolumeShadowReceiverPass>::New();
+  this->GroundShadows->Install(renderer);
 }
 
 //------------------------------------------------------------------------------

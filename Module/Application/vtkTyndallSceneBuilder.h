@@ -47,6 +47,7 @@
 
 #include <string> // For std::string
 
+class vtkActor;
 class vtkAlgorithm;
 class vtkImageData;
 class vtkLight;
@@ -57,6 +58,7 @@ class vtkTransferFunctionFileReader;
 class vtkTransmittanceVolumeMapper;
 class vtkTyndallOptions;
 class vtkVolume;
+class vtkVolumeShadowReceiverPass;
 
 class TYNDALLAPPLICATION_EXPORT vtkTyndallSceneBuilder : public vtkObject
 {
@@ -146,6 +148,8 @@ private:
   bool SetUpCamera(vtkRenderer* renderer);
   void SetUpLights(vtkRenderer* renderer);
   void SetUpBackground(vtkRenderer* renderer);
+  // --ground: a white ground under the volume that receives its shadow.
+  void AddGround(vtkRenderer* renderer);
   bool Run(vtkAlgorithm* source);
 
   vtkSmartPointer<vtkAlgorithm> Source;
@@ -155,6 +159,8 @@ private:
   vtkSmartPointer<vtkCosineNoise> DetailNoise;
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkLight> KeyLight;
+  vtkSmartPointer<vtkActor> Ground;
+  vtkSmartPointer<vtkVolumeShadowReceiverPass> GroundShadows;
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
 };
 

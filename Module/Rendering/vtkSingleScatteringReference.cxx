@@ -54,6 +54,20 @@ public:
   const Scene* S;
   vtkTyndallGridMedium::Sampler<T> Field;
 
+  // The light transmittance from the world point x to `light`, per channel.
+  void PointTransmittance(const Scene::LightSource& light, const double x[3], double transmittance[3]) const
+  {
+    double l[3], dl[3], factor, tMax;
+    this->S->LightGeometry(light, x, l, dl, factor, tMax);
+    double p[3];
+    this->S->ToIndexPoint(x, p);
+    const double grey = this->LightTransmittance(p, dl, tMax);
+    for (int c = 0; c < 3; ++c)
+    {
+      transmittance[c] = this->S->Chromatic ? this->S->ChannelTransmittance(grey, c) : grey;
+    }
+  }
+
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     for (vtkIdType j = begin; j < end; ++j)
@@ -396,6 +410,36 @@ bool vtkSingleScatteringReference::RenderInternal(
   this->LastStepSize = scene.Step;
   this->LastLightStepSize = scene.LightStep;
   renderer->GetBackground(this->LastBackground);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSingleScatteringReference::ComputeLightTransmittance(vtkRenderer* renderer,
+  vtkVolume* volume, int light, const double point[3], double transmittance[3])
+{
+  transmittance[0] = transmittance[1] = transmittance[2] = 1.0;
+  vtkTyndallSceneReader& tyndall = this->Internals->Scene;
+  Scene scene;
+  if (!point || !scene.ReadScene(tyndall, renderer, volume, 1, 1, this) ||
+    !SetUpSteps(
+      tyndall, this->StepSize, this->LightStepSize, this->EarlyTerminationThreshold, scene, this) ||
+    !scene.SetUpView(tyndall, renderer, this))
+  {
+    return false;
+  }
+  if (light < 0 || light >= static_cast<int>(scene.Lights.size()))
+  {
+    vtkErrorMacro(<< "ComputeLightTransmittance: light " << light << " is not one of the scene's "
+                  << scene.Lights.size() << " lights.");
+    return false;
+  }
+  scene.LightIgnoresClipping = this->LightIgnoresClipping;
+  const vtkTyndallGridMedium& medium = tyndall.GetMedium();
+  switch (medium.GetScalars()->GetDataType())
+  {
+    vtkTemplateMacro(RowRenderer<VTK_TT>(scene, medium)
+                       .PointTransmittance(scene.Lights[light], point, transmittance));
+  }
   return true;
 }
 

@@ -141,6 +141,19 @@ public:
   vtkImageData* Render(vtkRenderer* renderer, vtkVolume* volume, int width, int height);
 
   /**
+   * The medium's light transmittance from the world point `point` (inside
+   * the volume or anywhere else: the ground under a cloud) to light `light`
+   * of the scene, the light-th one Tyndall reads (switched on, positive
+   * intensity, in the renderer's order, at most 8), with this object's
+   * LightStepSize and EarlyTerminationThreshold, clipping as in Render();
+   * per channel (equal without a coloured extinction). What a surface in
+   * the medium's shadow receives (vtkVolumeShadowReceiverPass). False (with
+   * an error) on bad input or a light index out of range.
+   */
+  bool ComputeLightTransmittance(vtkRenderer* renderer, vtkVolume* volume, int light,
+    const double point[3], double transmittance[3]);
+
+  /**
    * The image of the last successful Render(); empty before one and after a
    * failed or aborted one.
    */

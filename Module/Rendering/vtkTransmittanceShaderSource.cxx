@@ -16,6 +16,7 @@
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
+#include "vtkTransmittanceSurfaceFS.h"
 
 #include <iomanip>
 #include <sstream>
@@ -79,6 +80,12 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
 std::string vtkTransmittanceShaderSource::GetLightMapLookup(const Variant& variant)
 {
   return GetConstants(variant) + vtkTransmittanceLightMapFS;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetSurfaceLookup(const Variant& variant)
+{
+  return GetLightMapLookup(variant) + vtkTransmittanceSurfaceFS;
 }
 
 //------------------------------------------------------------------------------

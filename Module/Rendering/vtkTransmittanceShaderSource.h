@@ -108,6 +108,13 @@ public:
    * fragment shader, e.g. an opaque surface receiving the medium's shadow.
    */
   static std::string GetLightMapLookup(const Variant& variant);
+
+  /**
+   * GetLightMapLookup() and what an opaque surface's fragment shader needs
+   * to receive the medium's shadow (vtkTransmittanceSurfaceFS.glsl:
+   * tyndallSurfaceTransmittance()), for vtkVolumeShadowReceiverPass.
+   */
+  static std::string GetSurfaceLookup(const Variant& variant);
   static std::string GetFragmentShader(int pass) { return GetFragmentShader(pass, Variant()); }
 
   /// The #define lines that replace `//TYNDALL::Constants`.

@@ -24,6 +24,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperChromatic.cxx
+  TestVolumeShadowReceiver.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx

@@ -146,6 +146,27 @@ changed = sum(abs(colored.GetComponent(i, 0) - gpu.GetComponent(i, 0)) for i in 
 check(changed > 0, "the coloured extinction changes the GPU picture")
 volume.SetProperty(prop)
 
+# Surfaces in the medium's shadow from Python: a ground below the cloud.
+from tyndall import vtkVolumeShadowReceiverPass  # noqa: E402
+from vtkmodules.vtkFiltersSources import vtkPlaneSource  # noqa: E402
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper  # noqa: E402
+plane = vtkPlaneSource()
+plane.SetOrigin(-3, -1.5, -3)
+plane.SetPoint1(-3, -1.5, 3)
+plane.SetPoint2(3, -1.5, -3)
+ground_mapper = vtkPolyDataMapper()
+ground_mapper.SetInputConnection(plane.GetOutputPort())
+ground = vtkActor()
+ground.SetMapper(ground_mapper)
+renderer.AddActor(ground)
+mapper.SetTransmittanceMethodToAdaptiveETM()
+shadows = vtkVolumeShadowReceiverPass()
+check(shadows.Install(renderer), "the shadow pass installs")
+window.Render()
+check(shadows.GetLastCaster() is volume, "the cloud casts its shadow on the ground")
+renderer.SetPass(None)
+renderer.RemoveActor(ground)
+
 if failures:
     sys.exit(1)
 print("ok")
