@@ -205,8 +205,8 @@ void vtkTyndallSceneBuilder::AddGround(vtkRenderer* renderer)
   this->Ground = vtkSmartPointer<vtkActor>::New();
   this->Ground->SetMapper(mapper);
   this->Ground->GetProperty()->SetColor(0.8, 0.8, 0.8);
-  this->Ground->GetProperty()->SetAmbient(0.15);
-  this->Ground->GetProperty()->SetDiffuse(0.85);
+  this->Ground->GetProperty()->SetAmbient(0.35);
+  this->Ground->GetProperty()->SetDiffuse(0.65);
   this->Ground->GetProperty()->SetSpecular(0.0);
   renderer->AddActor(this->Ground);
   this->GroundShadows = vtkSmartPointer<vtkVolumeShadowReceiverPass>::New();

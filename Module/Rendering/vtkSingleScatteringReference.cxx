@@ -55,7 +55,8 @@ public:
   vtkTyndallGridMedium::Sampler<T> Field;
 
   // The light transmittance from the world point x to `light`, per channel.
-  void PointTransmittance(const Scene::LightSource& light, const double x[3], double transmittance[3]) const
+  void PointTransmittance(
+    const Scene::LightSource& light, const double x[3], double transmittance[3]) const
   {
     double l[3], dl[3], factor, tMax;
     this->S->LightGeometry(light, x, l, dl, factor, tMax);

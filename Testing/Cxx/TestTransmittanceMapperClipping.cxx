@@ -20,6 +20,7 @@
 #include "vtkVolumetricPathTracer.h"
 
 #include "TyndallTestCheck.h"
+#include "TyndallTestCloudScene.h"
 #include "TyndallTestImage.h"
 #include "TyndallTestScene.h"
 
@@ -47,51 +48,25 @@ double Mean(vtkImageData* image)
 }
 using M = vtkTransmittanceVolumeMapper;
 
-struct Scene
+struct Scene : tyndall_test::CloudScene
 {
-  vtkNew<vtkTransmittanceVolumeMapper> Mapper;
-  vtkSmartPointer<vtkParticipatingMediumProperty> Property = tyndall_test::MakeCloudProperty(0.6);
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-
-  Scene(int size)
+  explicit Scene(int size)
+    : CloudScene(size, 0.6)
   {
-    this->Mapper->SetInputData(tyndall_test::MakeCloud(48));
-    this->Mapper->JitterOff();
     this->Mapper->SetTransmittanceMapSize(256);
     this->Mapper->SetNumberOfCoefficients(12);
     this->Property->SetAmbientIntensity(0.05);
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Renderer->AddVolume(this->Volume);
     this->Renderer->SetBackground(0.2, 0.3, 0.45);
     // The sun comes from +x: the clipped half (x > 0) stood between it and
     // the half that remains.
     this->Renderer->AddLight(tyndall_test::MakeSun(1.0, 0.25, 0.15, 1.2));
-    tyndall_test::SetTestCamera(this->Renderer);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(size, size);
-    this->Window->AddRenderer(this->Renderer);
-  }
-
-  vtkSmartPointer<vtkImageData> Gpu()
-  {
-    this->Window->Render();
-    return tyndall_test::Grab(this->Window);
   }
 
   vtkSmartPointer<vtkImageData> Cpu(bool lightIgnoresClipping = false)
   {
     vtkNew<vtkSingleScatteringReference> reference;
     reference->SetLightIgnoresClipping(lightIgnoresClipping);
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    if (reference->Render(
-          this->Renderer, this->Volume, this->Window->GetSize()[0], this->Window->GetSize()[1]))
-    {
-      image->DeepCopy(reference->Composite());
-    }
-    return image;
+    return this->CloudScene::Cpu(reference);
   }
 };
 

@@ -154,16 +154,59 @@ uniform int mapSlices;
 // set k - 1's.
 uniform int mapSetStride;
 
-// Map set `set` of light l at its texel ab, at the position s in [0, 1]
-// along the texel's light ray across the volume's box.
-float tyndallMapSet(int l, int set, vec2 ab, float s)
+#if TYNDALL_ADAPTIVE_MAPS
+// One texel's series at s: texel `texel` of the layers from slice `first`,
+// reconstructed over its own range (its bounds layer).
+float tyndallMapTexel(int first, ivec2 texel, float s)
 {
   float c[TYNDALL_MAX_COEFFICIENTS];
   for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
   {
     c[j] = 0.0;
   }
+  for (int k = 0; k < TYNDALL_MAP_LAYERS; ++k)
+  {
+    vec4 v = texelFetch(mapTexture, ivec3(texel, first + k), 0);
+    c[4 * k] = v.x;
+    c[4 * k + 1] = v.y;
+    c[4 * k + 2] = v.z;
+    c[4 * k + 3] = v.w;
+  }
+  vec3 bounds = texelFetch(mapTexture, ivec3(texel, first + boundsLayer), 0).xyz;
+  return tyndallReconstruct(c, bounds, s);
+}
+#endif
+
+// Map set `set` of light l at its texel ab, at the position s in [0, 1]
+// along the texel's light ray across the volume's box. Plain maps: the
+// coefficients are interpolated bilinearly (the reconstruction is linear in
+// them). Adaptive maps: each texel's series covers its own range
+// [s_min, s_max], so interpolated coefficients and bounds would mix series
+// of different ranges (thin dark streaks along the light where neighbouring
+// ranges differ); the four nearest texels are reconstructed, each over its
+// own range, and their transmittances interpolated bilinearly.
+float tyndallMapSet(int l, int set, vec2 ab, float s)
+{
   int first = l * layersPerLight + set * mapSetStride;
+  s = clamp(s, 0.0, 1.0);
+#if TYNDALL_ADAPTIVE_MAPS
+  ivec2 size = textureSize(mapTexture, 0).xy;
+  ivec2 top = size - 1;
+  vec2 p = clamp(ab, 0.0, 1.0) * vec2(size) - 0.5;
+  vec2 corner = floor(p);
+  vec2 f = p - corner;
+  ivec2 i0 = ivec2(corner);
+  float T00 = tyndallMapTexel(first, clamp(i0, ivec2(0), top), s);
+  float T10 = tyndallMapTexel(first, clamp(i0 + ivec2(1, 0), ivec2(0), top), s);
+  float T01 = tyndallMapTexel(first, clamp(i0 + ivec2(0, 1), ivec2(0), top), s);
+  float T11 = tyndallMapTexel(first, clamp(i0 + ivec2(1, 1), ivec2(0), top), s);
+  return mix(mix(T00, T10, f.x), mix(T01, T11, f.x), f.y);
+#else
+  float c[TYNDALL_MAX_COEFFICIENTS];
+  for (int j = 0; j < TYNDALL_MAX_COEFFICIENTS; ++j)
+  {
+    c[j] = 0.0;
+  }
   for (int k = 0; k < TYNDALL_MAP_LAYERS; ++k)
   {
     vec4 v = texture(mapTexture, vec3(ab, (float(first + k) + 0.5) / float(mapSlices)));
@@ -172,12 +215,8 @@ float tyndallMapSet(int l, int set, vec2 ab, float s)
     c[4 * k + 2] = v.z;
     c[4 * k + 3] = v.w;
   }
-  vec3 bounds = vec3(0.0, 1.0, 1.0);
-#if TYNDALL_ADAPTIVE_MAPS
-  bounds =
-    texture(mapTexture, vec3(ab, (float(first + boundsLayer) + 0.5) / float(mapSlices))).xyz;
+  return tyndallReconstruct(c, vec3(0.0, 1.0, 1.0), s);
 #endif
-  return tyndallReconstruct(c, bounds, clamp(s, 0.0, 1.0));
 }
 
 // Light l's map transmittance from world point x to the light (per channel
