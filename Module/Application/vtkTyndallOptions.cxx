@@ -220,6 +220,9 @@ const Spec kOptions[] = {
   { "ground", "", Kind::Flag, 0, 0, false, "", "", "", "Image", Both,
     "a grey ground under the volume (perpendicular to the view-up) that receives its shadow "
     "(vtkVolumeShadowReceiverPass)" },
+  { "surface", "", Kind::Text, 0, 0, false, "", "FILE", "", "Image", Both,
+    "a surface (.vtp, legacy .vtk polydata, .stl, .obj, .ply) drawn in the volume's world "
+    "coordinates that receives its shadow" },
   { "background2", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
     "top colour: makes the background a vertical gradient" },
   { "output", "-o", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,

@@ -1,5 +1,6 @@
 #include "vtkTyndallSceneBuilder.h"
 
+#include "vtkAbstractPolyDataReader.h"
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -13,14 +14,19 @@
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkPolyDataReader.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSTLReader.h"
 #include "vtkStringArray.h"
 #include "vtkTransferFunctionFileReader.h"
 #include "vtkTransferFunctionPresets.h"
@@ -29,6 +35,9 @@
 #include "vtkVolume.h"
 #include "vtkVolumeFileReader.h"
 #include "vtkVolumeShadowReceiverPass.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -158,7 +167,12 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
     return false;
   }
   this->SetUpLights(renderer);
+  this->GroundShadows = nullptr;
   this->AddGround(renderer);
+  if (!this->AddSurface(renderer))
+  {
+    return false;
+  }
   renderer->ResetCameraClippingRange();
   return true;
 }
@@ -167,7 +181,6 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
 void vtkTyndallSceneBuilder::AddGround(vtkRenderer* renderer)
 {
   this->Ground = nullptr;
-  this->GroundShadows = nullptr;
   if (!this->Options->GetFlag("ground"))
   {
     return;
@@ -209,8 +222,96 @@ void vtkTyndallSceneBuilder::AddGround(vtkRenderer* renderer)
   this->Ground->GetProperty()->SetDiffuse(0.65);
   this->Ground->GetProperty()->SetSpecular(0.0);
   renderer->AddActor(this->Ground);
-  this->GroundShadows = vtkSmartPointer<vtkVolumeShadowReceiverPass>::New();
-  this->GroundShadows->Install(renderer);
+  this->ReceiveShadows(renderer);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ReceiveShadows(vtkRenderer* renderer)
+{
+  if (!this->GroundShadows)
+  {
+    this->GroundShadows = vtkSmartPointer<vtkVolumeShadowReceiverPass>::New();
+    this->GroundShadows->Install(renderer);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::AddSurface(vtkRenderer* renderer)
+{
+  this->Surface = nullptr;
+  if (!this->Options->IsSet("surface"))
+  {
+    return true;
+  }
+  const std::string path = this->Options->GetText("surface");
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    vtkErrorMacro(<< path << ": no such surface file.");
+    return false;
+  }
+  const std::string extension =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == ".vtp")
+  {
+    auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  }
+  else if (extension == ".vtk")
+  {
+    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacy->SetFileName(path.c_str());
+    reader = legacy;
+  }
+  else if (extension == ".stl" || extension == ".obj" || extension == ".ply")
+  {
+    vtkSmartPointer<vtkAbstractPolyDataReader> mesh;
+    if (extension == ".stl")
+    {
+      mesh = vtkSmartPointer<vtkSTLReader>::New();
+    }
+    else if (extension == ".obj")
+    {
+      mesh = vtkSmartPointer<vtkOBJReader>::New();
+    }
+    else
+    {
+      mesh = vtkSmartPointer<vtkPLYReader>::New();
+    }
+    mesh->SetFileName(path.c_str());
+    reader = mesh;
+  }
+  else
+  {
+    vtkErrorMacro(<< path << ": not a surface file this program reads (.vtp, .vtk, .stl, .obj, "
+                  << ".ply).");
+    return false;
+  }
+  // The reader's own errors are the builder's too; an unreadable file or
+  // one without polygons is an error naming it.
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback(Forward);
+  reader->AddObserver(vtkCommand::ErrorEvent, forward);
+  reader->Update();
+  auto* surface = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!surface || surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro(<< path << ": no polygons read (a damaged file, or not a polygonal surface).");
+    return false;
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(reader->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  this->Surface = vtkSmartPointer<vtkActor>::New();
+  this->Surface->SetMapper(mapper);
+  this->Surface->GetProperty()->SetColor(0.85, 0.85, 0.85);
+  this->Surface->GetProperty()->SetAmbient(0.2);
+  this->Surface->GetProperty()->SetDiffuse(0.8);
+  renderer->AddActor(this->Surface);
+  this->ReceiveShadows(renderer);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -150,6 +150,11 @@ private:
   void SetUpBackground(vtkRenderer* renderer);
   // --ground: a white ground under the volume that receives its shadow.
   void AddGround(vtkRenderer* renderer);
+  // --surface FILE: a surface that receives the volume's shadow; false (with
+  // an error naming the file) when it cannot be read or has no polygons.
+  bool AddSurface(vtkRenderer* renderer);
+  // The actors with shadows: the receiver pass installed once.
+  void ReceiveShadows(vtkRenderer* renderer);
   bool Run(vtkAlgorithm* source);
 
   vtkSmartPointer<vtkAlgorithm> Source;
@@ -160,6 +165,7 @@ private:
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkLight> KeyLight;
   vtkSmartPointer<vtkActor> Ground;
+  vtkSmartPointer<vtkActor> Surface;
   vtkSmartPointer<vtkVolumeShadowReceiverPass> GroundShadows;
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
 };
