@@ -9,17 +9,17 @@ and on a dense medium, with the PSNR of each against the reference.
 import math
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
-                                         vtkRenderWindow, vtkTextActor, vtkVolume,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkTextActor, vtkVolume
 import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
 
-from tyndall import (vtkCosineNoiseSource, vtkParticipatingMediumProperty,
-                     vtkSingleScatteringReference, vtkTransmittanceVolumeMapper)
+from doc_scene import cloud_medium, grab, window_around
+
+from tyndall import (vtkCosineNoiseSource, vtkSingleScatteringReference,
+                     vtkTransmittanceVolumeMapper)
 
 SIZE = 192
 METHODS = ["None", "BruteForce", "TFM", "AdaptiveTFM", "ETM", "AdaptiveETM"]
@@ -41,7 +41,6 @@ def medium(dense):
 
 def psnr(a, b):
     sa, sb = a.GetPointData().GetScalars(), b.GetPointData().GetScalars()
-    ca, cb = sa.GetNumberOfComponents(), sb.GetNumberOfComponents()
     total = 0.0
     for i in range(sa.GetNumberOfTuples()):
         for c in range(3):
@@ -71,53 +70,19 @@ def label(image, text):
     camera = renderer.GetActiveCamera()
     camera.ParallelProjectionOn()
     camera.SetParallelScale(SIZE / 2)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    out = vtkImageData()
-    out.DeepCopy(grab.GetOutput())
-    return out
+    return grab(window)
 
 
 def row(dense):
     data = medium(dense)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0, 0)
-    opacity.AddPoint(8, 0.9 if dense else 0.5)
-    albedo = vtkColorTransferFunction()
-    albedo.AddRGBPoint(0, 0.9, 0.9, 0.9)
-    prop = vtkParticipatingMediumProperty()
-    prop.SetAmbientIntensity(0.1)
-    prop.SetScalarOpacity(opacity)
-    prop.SetColor(albedo)
-    prop.SetScalarOpacityUnitDistance(0.05)
+    prop = cloud_medium(0.9 if dense else 0.5, 0.9, 0.1)
     mapper = vtkTransmittanceVolumeMapper()
     mapper.SetInputData(data)
     mapper.JitterOff()
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
-    renderer = vtkRenderer()
-    renderer.AddVolume(volume)
-    renderer.SetBackground(0.2, 0.3, 0.45)
-    sun = vtkLight()
-    sun.SetLightTypeToSceneLight()
-    sun.SetPositional(False)
-    sun.SetPosition(1, 0.5, 0.3)
-    sun.SetFocalPoint(0, 0, 0)
-    renderer.AddLight(sun)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(0, -0.6, 4.2)
-    camera.SetFocalPoint(0, 0, 0)
-    camera.SetViewAngle(30)
-    renderer.ResetCameraClippingRange()
-    window = vtkRenderWindow()
-    window.SetMultiSamples(0)
-    window.SetOffScreenRendering(1)
-    window.SetSize(SIZE, SIZE)
-    window.AddRenderer(renderer)
+    window, renderer = window_around(volume, SIZE, (0.2, 0.3, 0.45), (1, 0.5, 0.3), 1.0)
     window.Render()
     reference = vtkSingleScatteringReference()
     reference.Render(renderer, volume, SIZE, SIZE)
@@ -126,13 +91,7 @@ def row(dense):
     tiles = [label(cpu, "CPU reference")]
     for index, name in enumerate(METHODS):
         mapper.SetTransmittanceMethod(index)
-        window.Render()
-        grab = vtkWindowToImageFilter()
-        grab.SetInput(window)
-        grab.ReadFrontBufferOff()
-        grab.Update()
-        image = vtkImageData()
-        image.DeepCopy(grab.GetOutput())
+        image = grab(window)
         tiles.append(label(image, "%s %.1f dB" % (name, psnr(image, cpu))))
     append = vtkImageAppend()
     append.SetAppendAxis(0)
