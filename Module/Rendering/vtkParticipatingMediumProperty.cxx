@@ -72,6 +72,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetEmissionArrayName(medium->EmissionArrayName);
   this->SetBlackbody(medium->Blackbody);
   this->SetTemperatureScale(medium->TemperatureScale);
+  this->SetSceneShadows(medium->SceneShadows);
   this->SetDetailNoise(medium->DetailNoise);
 }
 
@@ -112,5 +113,6 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Blackbody: " << this->Blackbody << "\n";
   os << indent << "TemperatureScale: " << this->TemperatureScale << "\n";
+  os << indent << "SceneShadows: " << (this->SceneShadows ? "On" : "Off") << "\n";
   os << indent << "DetailNoise: " << this->DetailNoise << "\n";
 }

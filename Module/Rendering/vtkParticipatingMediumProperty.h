@@ -206,6 +206,21 @@ public:
   vtkGetObjectMacro(DetailNoise, vtkCosineNoise);
   ///@}
 
+  ///@{
+  /**
+   * Whether the medium is lit through the other media of its renderer (On,
+   * the default): every other visible vtkVolume drawn by a
+   * vtkTransmittanceVolumeMapper (at most three) absorbs the light on its way
+   * to this one, so a volume in another's shadow is darker by exactly that
+   * other volume's transmittance, and the light maps span them all
+   * (Documentation/rendering-model.md, "Several volumes"). Off: the medium is
+   * lit as if it were alone. Read by the GPU mapper and both CPU references.
+   */
+  vtkSetMacro(SceneShadows, bool);
+  vtkGetMacro(SceneShadows, bool);
+  vtkBooleanMacro(SceneShadows, bool);
+  ///@}
+
   /**
    * Copies vtkVolumeProperty's settings and, when `p` is a
    * vtkParticipatingMediumProperty, these (the emission colour is shared,
@@ -238,6 +253,7 @@ protected:
   char* EmissionArrayName = nullptr;
   bool Blackbody = false;
   double TemperatureScale = 1.0;
+  bool SceneShadows = true;
   vtkCosineNoise* DetailNoise = nullptr;
 
 private:

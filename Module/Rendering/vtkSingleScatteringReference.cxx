@@ -111,27 +111,40 @@ private:
   }
 
   // T_l from the index-space point p along the index-space image d of a unit
-  // world direction, up to the box's exit or the world distance tMax.
+  // world direction, up to the world distance tMax: through this medium and
+  // the guests (the other volumes the light crosses).
   double LightTransmittance(const double p[3], const double d[3], double tMax) const
+  {
+    const double guests = this->S->Guests.empty()
+      ? 0.0
+      : this->S->GuestOpticalDepth(p, d, tMax, this->S->LightStep, this->S->MaxOpticalDepth);
+    return std::exp(-guests) * this->OwnTransmittance(p, d, tMax);
+  }
+
+  // T_l through this medium alone, up to its box's exit or tMax.
+  double OwnTransmittance(const double p[3], const double d[3], double tMax) const
   {
     double t0 = 0.0, t1 = tMax;
     if (!Scene::ClipToBox(p, d, this->S->BoxLow, this->S->BoxHigh, t0, t1))
     {
       return 1.0;
     }
-    const double length = t1;
+    // [t0, t1]: the part of the ray in the box (t0 = 0 for a point inside
+    // it; a point outside, such as a surface receiving the shadow, samples
+    // no clamped voxels on its way in).
     const bool clip = this->S->Clip && !this->S->LightIgnoresClipping;
     if (this->S->Detail && !clip)
     {
-      return std::exp(-this->S->Detail->OpticalDepth(p, d, 0.0, length)); // closed form
+      return std::exp(-this->S->Detail->OpticalDepth(p, d, t0, t1)); // closed form
     }
+    const double length = t1 - t0;
     const double steps = std::max(1.0, std::ceil(length / this->S->LightStep));
     const int n = static_cast<int>(steps);
     const double dt = length / n;
     double tau = 0.0;
     for (int m = 0; m < n; ++m)
     {
-      const double t = (m + 0.5) * dt;
+      const double t = t0 + (m + 0.5) * dt;
       const double q[3] = { p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2] };
       double sigma;
       int k;

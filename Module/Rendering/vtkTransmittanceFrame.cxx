@@ -17,12 +17,33 @@
 namespace
 {
 constexpr int kMaxLights = vtkTyndallSceneReader::MaximumNumberOfLights;
+constexpr int kMaxGuests = vtkTyndallSceneReader::MaximumNumberOfGuests;
+
+// World -> field index -> the medium's box as [0, 1]^3 (column-major floats).
+void WorldToBoxMatrix(const vtkTyndallGridMedium& medium, float worldToBox[16])
+{
+  const double* toIndex = medium.GetWorldToIndex();
+  const double* low = medium.GetBoxLow();
+  const double* high = medium.GetBoxHigh();
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      double v = toIndex[4 * r + c];
+      if (r < 3)
+      {
+        v = (v - (c == 3 ? low[r] : 0.0)) / (high[r] - low[r]);
+      }
+      worldToBox[4 * c + r] = static_cast<float>(v);
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window,
   const vtkTyndallSceneReader& scene, const vtkTransmittanceMediumTextures& textures,
-  const Settings& settings)
+  const std::vector<const vtkTransmittanceMediumTextures*>& guestTextures, const Settings& settings)
 {
   using M = vtkTransmittanceMapMath;
   this->Renderer = renderer;
@@ -45,22 +66,7 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->Diagonal = this->Medium->GetWorldDiagonal();
   this->MinimumSpacing = this->Medium->GetMinimumWorldSpacing();
 
-  // World -> field index -> the box as [0, 1]^3 (column-major floats).
-  const double* toIndex = this->Medium->GetWorldToIndex();
-  const double* low = this->Medium->GetBoxLow();
-  const double* high = this->Medium->GetBoxHigh();
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      double v = toIndex[4 * r + c];
-      if (r < 3)
-      {
-        v = (v - (c == 3 ? low[r] : 0.0)) / (high[r] - low[r]);
-      }
-      this->WorldToBox[4 * c + r] = static_cast<float>(v);
-    }
-  }
+  WorldToBoxMatrix(*this->Medium, this->WorldToBox);
   // Box -> world: its columns are the box's world edges and origin.
   vtkNew<vtkMatrix4x4> toBox, toWorld;
   for (int r = 0; r < 4; ++r)
@@ -85,6 +91,18 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
     }
   }
 
+  const std::vector<const vtkTyndallGridMedium*>& guests = scene.GetGuests();
+  this->Guests.clear();
+  for (size_t g = 0; g < guests.size() && g < guestTextures.size(); ++g)
+  {
+    Guest guest;
+    guest.Medium = guests[g];
+    guest.Textures = guestTextures[g];
+    WorldToBoxMatrix(*guest.Medium, guest.WorldToBox);
+    this->Guests.push_back(guest);
+  }
+  this->PrepareMapBox();
+
   // The lights, each with its map's frustum.
   const std::vector<vtkTyndallLight>& lights = scene.GetLights();
   this->Lights.resize(lights.size());
@@ -97,12 +115,61 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
       light.Frustum = vtkSmartPointer<vtkTransmittanceLightFrustum>::New();
     }
     light.HasFrustum = light.Source.Positional
-      ? light.Frustum->FitPositional(light.Source.Position, this->Corners)
-      : light.Frustum->FitDirectional(light.Source.Direction, this->Corners);
+      ? light.Frustum->FitPositional(light.Source.Position, this->MapCorners)
+      : light.Frustum->FitDirectional(light.Source.Direction, this->MapCorners);
     light.Method = settings.Method;
     if (M::IsMapMethod(light.Method) && !light.HasFrustum)
     {
       light.Method = M::BRUTE_FORCE; // documented fallback: a light inside the box
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::PrepareMapBox()
+{
+  std::copy(this->Corners, this->Corners + 24, this->MapCorners);
+  std::copy(this->WorldToBox, this->WorldToBox + 16, this->WorldToMapBox);
+  if (this->Guests.empty())
+  {
+    return; // the medium's own box, exactly
+  }
+  double low[3], high[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    low[a] = high[a] = this->Corners[a];
+  }
+  auto extend = [&low, &high](const double corners[24])
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        low[a] = std::min(low[a], corners[3 * i + a]);
+        high[a] = std::max(high[a], corners[3 * i + a]);
+      }
+    }
+  };
+  extend(this->Corners);
+  for (const Guest& guest : this->Guests)
+  {
+    double corners[24];
+    guest.Medium->GetWorldCorners(corners);
+    extend(corners);
+  }
+  std::fill(this->WorldToMapBox, this->WorldToMapBox + 16, 0.0f);
+  for (int a = 0; a < 3; ++a)
+  {
+    const double size = std::max(high[a] - low[a], 1e-30);
+    this->WorldToMapBox[5 * a] = static_cast<float>(1.0 / size);
+    this->WorldToMapBox[12 + a] = static_cast<float>(-low[a] / size);
+  }
+  this->WorldToMapBox[15] = 1.0f;
+  for (int i = 0; i < 8; ++i)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      this->MapCorners[3 * i + a] = ((i >> a) & 1) ? high[a] : low[a];
     }
   }
 }
@@ -139,6 +206,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
     this->Integrator.SkipEmptySpace && !(this->Medium && this->Medium->GetEmissionFromArray());
   variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
   variant.Chromatic = this->Medium && this->Medium->GetChromatic();
+  variant.Guests = static_cast<int>(this->Guests.size());
   return variant;
 }
 
@@ -196,7 +264,9 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
     static_cast<float>(table.TextureShift()) };
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
+  program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
   this->SetClipUniforms(program);
+  this->SetGuestUniforms(program);
   if (vtkTextureObject* emission = this->Textures->GetEmissionTexture())
   {
     // Declared only by the ray cast's emission-array variant.
@@ -211,7 +281,7 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
 {
-  program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
+  program->SetUniformMatrix4x4("worldToMapBox", const_cast<float*>(this->WorldToMapBox));
   if (this->Medium->GetChromatic())
   {
     const double* e = this->Medium->GetExtinctionColor();
@@ -282,6 +352,39 @@ void vtkTransmittanceFrame::SetDetailUniforms(vtkShaderProgram* program) const
   program->SetUniformi("detailMaxCells", n[0] + n[1] + n[2] + 3);
   program->SetUniformf("detailOffset", static_cast<float>(detail.GetOffset()));
   program->SetUniformf("detailScale", static_cast<float>(detail.GetScale()));
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
+{
+  const int n = static_cast<int>(this->Guests.size());
+  if (n == 0)
+  {
+    return; // declared only by the variant with guests (GetShaderVariant())
+  }
+  int volumes[kMaxGuests] = {}, tables[kMaxGuests] = {};
+  float toBox[16 * kMaxGuests] = {}, scale[kMaxGuests][3] = {}, shift[kMaxGuests][3] = {},
+                   toTable[kMaxGuests][2] = {}, density[kMaxGuests] = {};
+  for (int g = 0; g < n; ++g)
+  {
+    const Guest& guest = this->Guests[g];
+    volumes[g] = guest.Textures->GetVolumeTexture()->GetTextureUnit();
+    tables[g] = guest.Textures->GetTransferTexture()->GetTextureUnit();
+    std::copy(guest.WorldToBox, guest.WorldToBox + 16, toBox + 16 * g);
+    std::copy(guest.Textures->GetTextureScale(), guest.Textures->GetTextureScale() + 3, scale[g]);
+    std::copy(guest.Textures->GetTextureShift(), guest.Textures->GetTextureShift() + 3, shift[g]);
+    const vtkTyndallTransferTable& table = guest.Medium->GetTable();
+    toTable[g][0] = static_cast<float>(table.TextureScale());
+    toTable[g][1] = static_cast<float>(table.TextureShift());
+    density[g] = static_cast<float>(guest.Medium->GetDensityScale());
+  }
+  program->SetUniform1iv("guestVolume", n, volumes);
+  program->SetUniform1iv("guestTransfer", n, tables);
+  program->SetUniformMatrix4x4v("guestWorldToBox", n, toBox);
+  program->SetUniform3fv("guestTexScale", n, scale);
+  program->SetUniform3fv("guestTexShift", n, shift);
+  program->SetUniform2fv("guestScalarToTable", n, toTable);
+  program->SetUniform1fv("guestDensity", n, density);
 }
 
 //------------------------------------------------------------------------------

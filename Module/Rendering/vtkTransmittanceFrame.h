@@ -62,11 +62,23 @@ public:
     int CacheSize = 0;
   };
 
+  /// A guest (vtkTyndallSceneReader::GetGuests()): another medium the light crosses.
+  struct Guest
+  {
+    const vtkTyndallGridMedium* Medium = nullptr;
+    /// Its scalars and table (its own mapper's).
+    const vtkTransmittanceMediumTextures* Textures = nullptr;
+    /// World -> its box as [0, 1]^3, column-major.
+    float WorldToBox[16];
+  };
+
   /**
    * Fills the frame. `lights` are reused between frames (their frusta).
+   * `guestTextures` are the textures of the scene's guests, in their order.
    */
   void Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow* window,
     const vtkTyndallSceneReader& scene, const vtkTransmittanceMediumTextures& textures,
+    const std::vector<const vtkTransmittanceMediumTextures*>& guestTextures,
     const Settings& settings);
 
   /**
@@ -132,12 +144,23 @@ public:
   /// Its inverse (column-major) and the box's world edge lengths.
   float BoxToWorld[16];
   double BoxExtents[3] = { 1.0, 1.0, 1.0 };
+  /// The guests, whose extinction the map build and brute-force lights add to the medium's.
+  std::vector<Guest> Guests;
+  /**
+   * The light maps' box, whose corners the lights' frusta are fitted to:
+   * the medium's box, or with guests the world-axis box around every
+   * medium's box. Its corners and world -> [0, 1]^3 (column-major).
+   */
+  double MapCorners[24];
+  float WorldToMapBox[16];
   /// The procedural detail's shortest wavelength in world units (1e30: no detail).
   double DetailWavelength = 1e30;
 
 private:
   void SetDetailUniforms(vtkShaderProgram* program) const;
   void SetClipUniforms(vtkShaderProgram* program) const;
+  void SetGuestUniforms(vtkShaderProgram* program) const;
+  void PrepareMapBox();
 };
 
 #endif

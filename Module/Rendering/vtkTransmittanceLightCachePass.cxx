@@ -36,7 +36,7 @@ void vtkTransmittanceLightCachePass::LatticeSize(const double extents[3], int si
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
-  vtkTextureObject* maps, int mapSlices, int mapBuild, vtkObject* reporter)
+  vtkTextureObject* maps, int mapSlices, vtkMTimeType mapBuild, vtkObject* reporter)
 {
   if (frame.Integrator.CacheSize < 2 || !maps || !frame.NeedsMaps())
   {
@@ -51,7 +51,7 @@ bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
   {
     return true;
   }
-  this->BuiltFromMaps = -1;
+  this->BuiltFromMaps = 0;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   if (!this->Allocate(frame, size, reporter) || !this->Build(frame, maps, mapSlices, reporter))
@@ -183,7 +183,7 @@ void vtkTransmittanceLightCachePass::ReleaseGraphicsResources(vtkWindow* window)
   this->CacheTexture = nullptr;
   this->Lights = 0;
   std::fill(this->Size, this->Size + 3, 0);
-  this->BuiltFromMaps = -1;
+  this->BuiltFromMaps = 0;
 }
 
 //------------------------------------------------------------------------------

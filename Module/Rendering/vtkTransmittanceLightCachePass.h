@@ -55,13 +55,13 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Fills the cache from `maps` (the map pass's texture, `mapSlices`
-   * slices, built `mapBuild` times) when the frame asks for a cache and
-   * the maps or the size changed. Errors go through `reporter`; false on
-   * error (the camera rays then read the maps).
+   * Fills the cache from `maps` (a map pass's texture, `mapSlices`
+   * slices, its build `mapBuild`: vtkTransmittanceMapPass::GetBuildSerial())
+   * when the frame asks for a cache and the maps or the size changed. Errors go through `reporter`;
+   * false on error (the camera rays then read the maps).
    */
   bool Render(const vtkTransmittanceFrame& frame, vtkTextureObject* maps, int mapSlices,
-    int mapBuild, vtkObject* reporter);
+    vtkMTimeType mapBuild, vtkObject* reporter);
 
   /// The cache (null before the first build or when the frame has none).
   vtkTextureObject* GetTexture() const { return this->CacheTexture; }
@@ -101,7 +101,7 @@ private:
   vtkTransmittanceShaderQuad Quad;
   int Size[3] = { 0, 0, 0 };
   int Lights = 0;
-  int BuiltFromMaps = -1;              // the map build the cache holds; -1: none
+  vtkMTimeType BuiltFromMaps = 0;      // the map build the cache holds; 0: none
   bool Chromatic = false;              // per-channel texels (RGBA)
   double Color[3] = { 1.0, 1.0, 1.0 }; // the extinction colour they were built for
   int BuildCount = 0;

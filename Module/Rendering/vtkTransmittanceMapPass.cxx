@@ -17,12 +17,15 @@
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <sstream>
 
 vtkStandardNewMacro(vtkTransmittanceMapPass);
@@ -61,15 +64,36 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
   // The threshold only where the maps use it (the adaptive methods).
   const double threshold = frame.BoundsLayer >= 0 ? s.AdaptiveThreshold : -1.0;
   std::vector<double> key = { double(s.Method), double(s.Coefficients), double(s.MapSize),
-    double(s.LightSampleCount), threshold, frame.Medium->GetDensityScale(),
-    double(frame.Medium->GetScalarsTime()), double(frame.Medium->GetExtinctionTime()),
-    double(s.SkipEmptySpace), double(frame.MapSets) };
+    double(s.LightSampleCount), threshold, double(s.SkipEmptySpace), double(frame.MapSets) };
   if (frame.MapSets > 1)
   {
     const double* e = frame.Medium->GetExtinctionColor();
     key.insert(key.end(), e, e + 3);
   }
-  key.insert(key.end(), frame.Corners, frame.Corners + 24);
+  // Every medium the light crosses, as a set (sorted): the textures the
+  // build samples (which mapper's, and their upload), its density scale and
+  // placement (the maps' box is in the frusta below). Textures, not the
+  // medium's own times: a guest is another reader's copy of the medium.
+  std::vector<std::vector<double>> media;
+  auto add = [&media](const vtkTyndallGridMedium& m, const vtkTransmittanceMediumTextures* t,
+               const float worldToBox[16])
+  {
+    std::vector<double> k = { double(reinterpret_cast<std::uintptr_t>(t)),
+      double(t->GetExtinctionContentTime()), m.GetDensityScale() };
+    k.insert(k.end(), worldToBox, worldToBox + 16);
+    media.push_back(k);
+  };
+  add(*frame.Medium, frame.Textures, frame.WorldToBox);
+  for (const vtkTransmittanceFrame::Guest& g : frame.Guests)
+  {
+    add(*g.Medium, g.Textures, g.WorldToBox);
+  }
+  std::sort(media.begin(), media.end());
+  for (const std::vector<double>& k : media)
+  {
+    key.insert(key.end(), k.begin(), k.end());
+  }
+  key.push_back(double(media.size()));
   // Per light, its method and, when it has a map, the frustum the map is
   // built along (which also covers the frustum's padding and field of view).
   for (const vtkTransmittanceFrame::Light& l : frame.Lights)
@@ -86,6 +110,12 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
     }
   }
   return key;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::IsBuiltFor(const vtkTransmittanceFrame& frame) const
+{
+  return this->MapTexture && !this->BuiltKey.empty() && this->Key(frame) == this->BuiltKey;
 }
 
 //------------------------------------------------------------------------------
@@ -112,6 +142,7 @@ bool vtkTransmittanceMapPass::Render(const vtkTransmittanceFrame& frame, vtkObje
   this->BuiltKey = key;
   this->LastBuildTime = timer->GetElapsedTime();
   ++this->BuildCount;
+  this->BuildTime.Modified();
   return true;
 }
 
@@ -146,8 +177,12 @@ bool vtkTransmittanceMapPass::Allocate(const vtkTransmittanceFrame& frame, vtkOb
 //------------------------------------------------------------------------------
 vtkShaderProgram* vtkTransmittanceMapPass::ReadyProgram(const vtkTransmittanceFrame& frame)
 {
+  vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
+  // The empty blocks are the medium's: with guests the light ray crosses
+  // other media there, so every sample is taken.
+  variant.SkipEmpty = variant.SkipEmpty && variant.Guests == 0;
   std::string fs = vtkTransmittanceShaderSource::GetFragmentShader(
-    vtkTransmittanceShaderSource::MAP_BUILD, frame.GetShaderVariant());
+    vtkTransmittanceShaderSource::MAP_BUILD, variant);
   vtkShaderProgram::Substitute(
     fs, "//TYNDALL::MapOutputs", MapOutputs(frame.Layers, frame.BoundsLayer));
   return this->Quad.Ready(frame.Window, fs);

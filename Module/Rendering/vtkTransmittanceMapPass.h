@@ -14,7 +14,8 @@
  * or table, its density scale or placement, the lights (position,
  * direction, type, method), the integrator's method, coefficient count, map
  * size, light samples or adaptive threshold (adaptive methods), or (for per-channel sets) the
- * extinction colour. GetBuildCount() counts the builds.
+ * extinction colour, or (with guests, other media the light crosses) any
+ * of the guests' extinction or placement. GetBuildCount() counts the builds.
  *
  * GetMap() reads a light's map (the first set) back to the CPU (for tests and inspection).
  *
@@ -27,6 +28,7 @@
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"            // For vtkSmartPointer
+#include "vtkTimeStamp.h"               // For vtkTimeStamp
 #include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
 
 #include <string> // For std::string
@@ -62,6 +64,22 @@ public:
   ///@}
 
   /**
+   * The last build, unique among every map pass's builds (0: none): what
+   * was built from these maps (the transmittance cache) is current while
+   * it is unchanged.
+   */
+  vtkMTimeType GetBuildSerial() const { return this->BuildCount ? this->BuildTime.GetMTime() : 0; }
+
+  /**
+   * Whether the maps hold what `frame` needs (built, for the same key). The
+   * key sees the media as a set: a frame whose medium is one of another
+   * frame's guests and whose guests are the rest (another Tyndall volume's
+   * mapper in the same renderer, with the same settings and lights) reads
+   * the same maps, so mappers share them instead of building copies.
+   */
+  bool IsBuiltFor(const vtkTransmittanceFrame& frame) const;
+
+  /**
    * Copies light `light`'s map, as last built with `layers` layers per light
    * (`boundsLayer` the adaptive bounds' layer or -1) and `coefficients`
    * coefficients, into `map` (see vtkTransmittanceVolumeMapper::GetTransmittanceMap()).
@@ -91,6 +109,7 @@ private:
   int Slices = 0;
   int Size = 0;
   int BuildCount = 0;
+  vtkTimeStamp BuildTime;
   double LastBuildTime = 0.0;
 };
 

@@ -92,6 +92,13 @@ bool vtkTransmittanceMediumTextures::Update(
     }
     this->TableTime = medium.GetTableTime();
   }
+  // What a map build sees of this medium: its scalars, its extinction (the
+  // table's, not its colours) and its clipping (the medium's extinction time).
+  if (newScalars || medium.GetExtinctionTime() != this->SeenExtinctionTime)
+  {
+    this->SeenExtinctionTime = medium.GetExtinctionTime();
+    this->ExtinctionContentTime.Modified();
+  }
   this->UploadedMedium = &medium;
 
   // The box as [0, 1]^3 -> texture coordinates: field index p = low + q (high

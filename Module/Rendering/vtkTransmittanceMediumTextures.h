@@ -30,6 +30,7 @@
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"        // For vtkSmartPointer
+#include "vtkTimeStamp.h"           // For vtkTimeStamp
 #include "vtkTyndallMajorantGrid.h" // For vtkTyndallMajorantGrid
 
 class vtkOpenGLRenderWindow;
@@ -68,6 +69,11 @@ public:
   /// Null when the scalars hold no NaN.
   vtkTextureObject* GetValidityTexture() const { return this->ValidityTexture; }
   vtkTextureObject* GetTransferTexture() const { return this->TransferTexture; }
+  /**
+   * When what a map build sees of the uploaded medium last changed: its
+   * scalars, its extinction (not its colours) or its clipping.
+   */
+  vtkMTimeType GetExtinctionContentTime() const { return this->ExtinctionContentTime.GetMTime(); }
   const float* GetTextureScale() const { return this->TextureScale; }
   const float* GetTextureShift() const { return this->TextureShift; }
   vtkTextureObject* GetBlockTexture() const { return this->BlockTexture; }
@@ -116,6 +122,8 @@ private:
   const vtkTyndallGridMedium* UploadedMedium = nullptr;
   int Dimensions[3] = { 0, 0, 0 };
   int Factor = 1;
+  vtkTimeStamp ExtinctionContentTime;
+  vtkMTimeType SeenExtinctionTime = 0;
   float TextureScale[3] = { 1.0f, 1.0f, 1.0f };
   float TextureShift[3] = { 0.0f, 0.0f, 0.0f };
   float BlockScale[3] = { 1.0f, 1.0f, 1.0f };

@@ -26,6 +26,13 @@ public:
       this->Add(texture);
     }
   }
+  explicit vtkTransmittanceScopedTextures(const std::vector<vtkTextureObject*>& textures)
+  {
+    for (vtkTextureObject* texture : textures)
+    {
+      this->Add(texture);
+    }
+  }
   ~vtkTransmittanceScopedTextures()
   {
     for (auto it = this->Active.rbegin(); it != this->Active.rend(); ++it)

@@ -73,6 +73,14 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
     os << " X(" << g << ")";
   }
   os << "\n";
+  // Guests: the other media the light crosses, and the loop over them.
+  define("GUESTS", variant.Guests);
+  os << "#define TYNDALL_FOR_GUESTS(X)";
+  for (int g = 0; g < variant.Guests; ++g)
+  {
+    os << " X(" << g << ")";
+  }
+  os << "\n";
   return os.str();
 }
 

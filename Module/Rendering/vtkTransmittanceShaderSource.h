@@ -42,6 +42,9 @@
  *   TYNDALL_MAP_EXTINCTION (the reconstruction of the ETM or the TFM
  *   family), TYNDALL_LIGHT_CACHE (map lights read the transmittance cache
  *   of vtkTransmittanceLightCachePass instead), TYNDALL_ADAPTIVE_MAPS (the bounds layer),
+ * TYNDALL_GUESTS (other media the light crosses, with TYNDALL_FOR_GUESTS(X)
+ * expanding to X(0) .. X(guests - 1): their extinction joins the medium's in
+ * the map build and the brute-force light march),
  * TYNDALL_OCCLUSION (opaque occluders), TYNDALL_EMISSION, TYNDALL_BRUTE_FORCE_LIGHTS (a light
  * marches to the light), TYNDALL_EMISSION_ARRAY (emission from a separate array,
  * vtkTyndallGridMedium::GetEmissionValues()) and TYNDALL_OCTAVES (multiple-scattering octaves, 1:
@@ -93,6 +96,11 @@ public:
     bool LightCache = false;       // map lights read the transmittance cache
     int Octaves = 1;               // multiple-scattering octaves (1: single scattering)
     ///@}
+    /**
+     * Guests: other media the light crosses (vtkTyndallSceneReader::GetGuests()),
+     * at most vtkTyndallSceneReader::MaximumNumberOfGuests; 0: none.
+     */
+    int Guests = 0;
     /// Extinction per channel: light and view transmittances per channel.
     bool Chromatic = false;
     /// Transmittance-function maps of a coloured extinction: one set per channel.

@@ -1,6 +1,8 @@
 #include "vtkTransmittanceVolumeMapper.h"
 
 #include "vtkCamera.h"
+#include "vtkCullerCollection.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -25,6 +27,7 @@
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
@@ -80,6 +83,39 @@ public:
     }
     this->WarnedClippedDetail = affected;
   }
+  // Several Tyndall volumes are composited in the order VTK draws them:
+  // said once while the renderer does not sort its volumes back to front.
+  bool WarnedDrawOrder = false;
+  void WarnDrawOrder(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume)
+  {
+    bool others = false;
+    vtkVolumeCollection* volumes = renderer->GetVolumes();
+    vtkCollectionSimpleIterator it;
+    volumes->InitTraversal(it);
+    while (vtkVolume* other = volumes->GetNextVolume(it))
+    {
+      others = others ||
+        (other != volume && other->GetVisibility() && other->GetMapper() &&
+          other->GetMapper()->IsA("vtkTransmittanceVolumeMapper"));
+    }
+    bool sorted = false;
+    vtkCullerCollection* cullers = renderer->GetCullers();
+    cullers->InitTraversal(it);
+    while (vtkCuller* culler = cullers->GetNextCuller(it))
+    {
+      auto* coverage = vtkFrustumCoverageCuller::SafeDownCast(culler);
+      sorted = sorted || (coverage && coverage->GetSortingStyle() == VTK_CULLER_SORT_BACK_TO_FRONT);
+    }
+    const bool warn = others && !sorted;
+    if (warn && !this->WarnedDrawOrder)
+    {
+      vtkWarningWithObjectMacro(self,
+        << "Several Tyndall volumes are composited in the order the renderer draws them: where "
+           "their pictures overlap, set the renderer's vtkFrustumCoverageCuller to sort back to "
+           "front (SetSortingStyleToBackToFront()).");
+    }
+    this->WarnedDrawOrder = warn;
+  }
   vtkTransmittanceFrame Frame;
   vtkNew<vtkTransmittanceMediumTextures> Textures;
   vtkNew<vtkTransmittanceOcclusionPass> Occlusion;
@@ -122,13 +158,48 @@ public:
   bool PrepareFrame(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume,
     vtkOpenGLRenderWindow* window);
 
-  /// The medium's textures, bound for the scope of the returned object.
+  /**
+   * Reads the scene and uploads the medium's textures when they changed
+   * (PrepareFrame()'s first steps; also called by a mapper whose light
+   * crosses this one's medium, for its textures); false (reported) on error.
+   */
+  bool UpdateMedium(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume,
+    vtkOpenGLRenderWindow* window);
+
+  /**
+   * The textures of the scene's guests (the other volumes the light
+   * crosses), brought up to date by their own mappers; false (reported) on error.
+   */
+  bool UpdateGuests(
+    vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkOpenGLRenderWindow* window);
+  std::vector<const vtkTransmittanceMediumTextures*> GuestTextures;
+
+  /**
+   * The maps of the frame: a guest's mapper's when they hold what the frame
+   * needs (the same media, settings and lights: one set shared by the
+   * renderer's volumes), else this mapper's own, built when something
+   * changed; null (reported) on error. UsedMaps keeps it for the queries.
+   */
+  vtkTransmittanceMapPass* UpdateMaps(vtkTransmittanceVolumeMapper* self);
+  vtkWeakPointer<vtkTransmittanceMapPass> UsedMaps;
+  vtkTransmittanceMapPass* GetUsedMaps() const
+  {
+    return this->UsedMaps ? this->UsedMaps.GetPointer() : this->Maps.GetPointer();
+  }
+
+  /// The medium's textures and the guests', bound for the scope of the returned object.
   vtkTransmittanceScopedTextures BindMedium() const
   {
-    return vtkTransmittanceScopedTextures(
-      { this->Textures->GetVolumeTexture(), this->Textures->GetValidityTexture(),
-        this->Textures->GetTransferTexture(), this->Textures->GetBlockTexture(),
-        this->Textures->GetDetailTexture(), this->Textures->GetEmissionTexture() });
+    std::vector<vtkTextureObject*> textures = { this->Textures->GetVolumeTexture(),
+      this->Textures->GetValidityTexture(), this->Textures->GetTransferTexture(),
+      this->Textures->GetBlockTexture(), this->Textures->GetDetailTexture(),
+      this->Textures->GetEmissionTexture() };
+    for (const vtkTransmittanceMediumTextures* guest : this->GuestTextures)
+    {
+      textures.push_back(guest->GetVolumeTexture());
+      textures.push_back(guest->GetTransferTexture());
+    }
+    return vtkTransmittanceScopedTextures(textures);
   }
 };
 
@@ -176,7 +247,7 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   key.insert(key.end(),
     { double(self->GetMTime()), double(volume->GetMTime()),
       double(volume->GetProperty()->GetMTime()), double(input ? input->GetMTime() : 0),
-      double(this->Maps->GetBuildCount()), double(this->Cache->GetBuildCount()) });
+      double(this->GetUsedMaps()->GetBuildSerial()), double(this->Cache->GetBuildCount()) });
   const std::vector<double>& clip = this->Scene.GetMedium().GetClip().GetKey();
   key.insert(key.end(), clip.begin(), clip.end());
   vtkLightCollection* lights = renderer->GetLights();
@@ -328,7 +399,7 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVolumeMapper* self,
+bool vtkTransmittanceVolumeMapper::vtkInternals::UpdateMedium(vtkTransmittanceVolumeMapper* self,
   vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window)
 {
   if (this->Window && this->Window != window)
@@ -339,14 +410,63 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVo
     window->MakeCurrent();
   }
   this->Window = window;
-  if (!this->Scene.Update(renderer, volume, self) ||
-    !this->Textures->Update(window, this->Scene.GetMedium(), self) ||
-    !this->Textures->UpdateDetail(window, this->Scene.GetDetail(), self))
+  return this->Scene.Update(renderer, volume, self) &&
+    this->Textures->Update(window, this->Scene.GetMedium(), self) &&
+    this->Textures->UpdateDetail(window, this->Scene.GetDetail(), self);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::UpdateGuests(
+  vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkOpenGLRenderWindow* window)
+{
+  this->GuestTextures.clear();
+  for (vtkVolume* guest : this->Scene.GetGuestVolumes())
+  {
+    // The scene reader took only volumes drawn by this class.
+    auto* mapper = static_cast<vtkTransmittanceVolumeMapper*>(guest->GetMapper());
+    if (!mapper->Internals->UpdateMedium(mapper, renderer, guest, window))
+    {
+      return false;
+    }
+    this->GuestTextures.push_back(mapper->Internals->Textures.Get());
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceMapPass* vtkTransmittanceVolumeMapper::vtkInternals::UpdateMaps(
+  vtkTransmittanceVolumeMapper* self)
+{
+  this->UsedMaps = this->Maps.GetPointer();
+  if (!this->Frame.NeedsMaps())
+  {
+    return this->Maps;
+  }
+  for (vtkVolume* guest : this->Scene.GetGuestVolumes())
+  {
+    auto* mapper = static_cast<vtkTransmittanceVolumeMapper*>(guest->GetMapper());
+    vtkTransmittanceMapPass* maps = mapper->Internals->Maps;
+    if (mapper->Internals->Window == this->Window && maps->IsBuiltFor(this->Frame))
+    {
+      this->UsedMaps = maps;
+      return maps;
+    }
+  }
+  return this->Maps->Render(this->Frame, self) ? this->Maps.GetPointer() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVolumeMapper* self,
+  vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window)
+{
+  if (!this->UpdateMedium(self, renderer, volume, window) ||
+    !this->UpdateGuests(self, renderer, window))
   {
     return false;
   }
   this->WarnClippedDetail(
     self, self->TransmittanceMethod == BRUTE_FORCE || self->DetailSamplesPerPixel > 0);
+  this->WarnDrawOrder(self, renderer, volume);
   vtkTransmittanceFrame::Settings settings;
   settings.Method = self->TransmittanceMethod;
   settings.Coefficients = self->NumberOfCoefficients;
@@ -360,7 +480,8 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVo
   settings.Jitter = self->Jitter;
   settings.SkipEmptySpace = self->EmptySpaceSkipping;
   settings.CacheSize = self->TransmittanceCache ? self->TransmittanceCacheSize : 0;
-  this->Frame.Prepare(renderer, window, this->Scene, *this->Textures, settings);
+  this->Frame.Prepare(
+    renderer, window, this->Scene, *this->Textures, this->GuestTextures, settings);
   return true;
 }
 
@@ -374,15 +495,15 @@ bool vtkTransmittanceVolumeMapper::UpdateShadowMaps(vtkRenderer* renderer, vtkVo
     return false;
   }
   vtkTransmittanceScopedTextures medium = in.BindMedium();
-  return in.Maps->Render(in.Frame, this);
+  return in.UpdateMaps(this) != nullptr;
 }
 
 //------------------------------------------------------------------------------
 const vtkTransmittanceFrame& vtkTransmittanceVolumeMapper::GetShadowFrame(
   vtkTextureObject*& maps, int& slices)
 {
-  maps = this->Internals->Maps->GetTexture();
-  slices = this->Internals->Maps->GetSlices();
+  maps = this->Internals->GetUsedMaps()->GetTexture();
+  slices = this->Internals->GetUsedMaps()->GetSlices();
   return this->Internals->Frame;
 }
 
@@ -408,16 +529,17 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     inputs.Occlusion = in.Occlusion->GetTexture();
     inputs.OcclusionSlices = in.Occlusion->GetSlices();
   }
-  if (!in.Maps->Render(in.Frame, this) || !in.Depth->Render(in.Frame, this))
+  vtkTransmittanceMapPass* maps = in.UpdateMaps(this);
+  if (!maps || !in.Depth->Render(in.Frame, this))
   {
     return;
   }
   inputs.Depth = in.Depth->GetTexture();
   if (in.Frame.NeedsMaps())
   {
-    inputs.Maps = in.Maps->GetTexture();
-    inputs.MapSlices = in.Maps->GetSlices();
-    if (in.Cache->Render(in.Frame, inputs.Maps, inputs.MapSlices, in.Maps->GetBuildCount(), this))
+    inputs.Maps = maps->GetTexture();
+    inputs.MapSlices = maps->GetSlices();
+    if (in.Cache->Render(in.Frame, inputs.Maps, inputs.MapSlices, maps->GetBuildSerial(), this))
     {
       inputs.Cache = in.Cache->GetTexture();
       std::copy(in.Cache->GetSize(), in.Cache->GetSize() + 3, inputs.CacheSize);
@@ -517,7 +639,7 @@ bool vtkTransmittanceVolumeMapper::GetTransmittanceMap(int light, vtkImageData* 
     return false;
   }
   in.Window->MakeCurrent();
-  if (!in.Maps->GetMap(
+  if (!in.GetUsedMaps()->GetMap(
         light, in.Frame.Layers, in.Frame.BoundsLayer, in.Frame.Integrator.Coefficients, map))
   {
     vtkErrorMacro(<< "GetTransmittanceMap: the maps could not be read back.");

@@ -38,6 +38,16 @@
  * with the camera, and so rebuilds its map). GetMapBuildCount() counts
  * the rebuilds.
  *
+ * Several Tyndall volumes in one renderer shadow each other
+ * (vtkParticipatingMediumProperty::SceneShadows, on by default): the light
+ * crosses every one of them, the maps are fitted to the box around them all
+ * and built once for all of them (by the first volume drawn; the others read
+ * its maps when their settings match), and rebuilt when any of them changes.
+ * Draw such volumes back to front (the renderer's vtkFrustumCoverageCuller,
+ * SetSortingStyleToBackToFront()); volumes that interpenetrate along a camera
+ * ray are composited as whole layers (Documentation/rendering-model.md,
+ * "Several volumes").
+ *
  * Directional lights get an orthographic map fitted to the volume's bounds,
  * positional (point and spot) lights a perspective one. A positional light
  * inside the bounds, or one needing a field of view over 150 degrees, has
@@ -346,7 +356,8 @@ public:
   double GetLastRayCastTime();
 
   /**
-   * How many times the transmittance maps were built.
+   * How many times this mapper built transmittance maps (a mapper that reads
+   * another Tyndall volume's maps, see the class description, builds none).
    */
   int GetMapBuildCount();
 

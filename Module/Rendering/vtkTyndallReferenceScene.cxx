@@ -44,6 +44,26 @@ double PositionalFactor(
   }
   return factor;
 }
+
+// A guest's extinction at its own field index point q: its sampler through its table.
+template <typename T>
+std::function<double(const double q[3])> GuestExtinction(const vtkTyndallGridMedium& medium)
+{
+  const vtkTyndallGridMedium::Sampler<T> sampler(medium);
+  const vtkTyndallGridMedium* m = &medium;
+  return [sampler, m](const double q[3])
+  {
+    const double s = sampler.Scalar(q);
+    if (std::isnan(s))
+    {
+      return 0.0;
+    }
+    int k;
+    double f;
+    m->GetTable().Locate(s, k, f);
+    return m->GetDensityScale() * m->GetTable().ExtinctionAt(k, f);
+  };
+}
 }
 
 //------------------------------------------------------------------------------
@@ -63,9 +83,77 @@ bool vtkTyndallReferenceScene::ReadScene(vtkTyndallSceneReader& reader, vtkRende
   this->Width = width;
   this->Height = height;
   this->SetUpMedium(reader.GetMedium());
+  this->SetUpGuests(reader);
   const vtkTyndallDetailMedium& detail = reader.GetDetail();
   this->Detail = detail.Enabled() ? &detail : nullptr;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallReferenceScene::SetUpGuests(const vtkTyndallSceneReader& reader)
+{
+  this->Guests.clear();
+  const double* toWorld = reader.GetMedium().GetIndexToWorld();
+  for (const vtkTyndallGridMedium* medium : reader.GetGuests())
+  {
+    Guest g;
+    // This medium's index -> world -> the guest's index.
+    double m[16];
+    vtkMatrix4x4::Multiply4x4(medium->GetWorldToIndex(), toWorld, m);
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        g.M[r][c] = m[4 * r + c];
+      }
+      g.C[r] = m[4 * r + 3];
+      g.BoxLow[r] = medium->GetBoxLow()[r];
+      g.BoxHigh[r] = medium->GetBoxHigh()[r];
+    }
+    switch (medium->GetScalars()->GetDataType())
+    {
+      vtkTemplateMacro(g.Extinction = GuestExtinction<VTK_TT>(*medium));
+    }
+    if (g.Extinction)
+    {
+      this->Guests.push_back(std::move(g));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallReferenceScene::GuestOpticalDepth(
+  const double p[3], const double d[3], double tMax, double step, double maxDepth) const
+{
+  double tau = 0.0;
+  for (const Guest& g : this->Guests)
+  {
+    double o[3], dg[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      o[r] = g.C[r];
+      dg[r] = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        o[r] += g.M[r][c] * p[c];
+        dg[r] += g.M[r][c] * d[c];
+      }
+    }
+    double t0 = 0.0, t1 = tMax;
+    if (!ClipToBox(o, dg, g.BoxLow, g.BoxHigh, t0, t1))
+    {
+      continue;
+    }
+    const int n = static_cast<int>(std::max(1.0, std::ceil((t1 - t0) / step)));
+    const double dt = (t1 - t0) / n;
+    for (int i = 0; i < n && tau <= maxDepth; ++i)
+    {
+      const double t = t0 + (i + 0.5) * dt;
+      const double q[3] = { o[0] + t * dg[0], o[1] + t * dg[1], o[2] + t * dg[2] };
+      tau += g.Extinction(q) * dt;
+    }
+  }
+  return tau;
 }
 
 //------------------------------------------------------------------------------

@@ -98,6 +98,30 @@ public:
   const vtkTyndallGridMedium* Medium = nullptr;   // the grid medium read
   bool EmissionArray = false;                     // emission per unit length from a separate array
 
+  /**
+   * A guest (vtkTyndallSceneReader::GetGuests()): another medium the light
+   * crosses. This medium's field index point p is the guest's index point M p
+   * + C; Extinction() samples the guest at its own index point (0 outside
+   * its box and at missing data), by the rules of the guest's medium.
+   */
+  struct Guest
+  {
+    double M[3][3];
+    double C[3];
+    double BoxLow[3];
+    double BoxHigh[3];
+    std::function<double(const double q[3])> Extinction;
+  };
+  std::vector<Guest> Guests;
+
+  /**
+   * The guests' optical depth along the ray p + t d (this medium's index
+   * space, t a world distance) for t in [0, tMax]: each guest's part of the
+   * ray in midpoint steps of at most `step`, stopping past `maxDepth`.
+   */
+  double GuestOpticalDepth(
+    const double p[3], const double d[3], double tMax, double step, double maxDepth) const;
+
   /// Whether the field index point p is kept by the clipping and cropping.
   bool Inside(const double p[3]) const { return !this->Clip || this->Clip->InsideIndex(p); }
   double* Radiance = nullptr;
@@ -290,6 +314,7 @@ public:
 
 private:
   void SetUpMedium(const vtkTyndallGridMedium& medium);
+  void SetUpGuests(const vtkTyndallSceneReader& reader);
   void SetUpLights(const vtkTyndallSceneReader& reader);
 };
 

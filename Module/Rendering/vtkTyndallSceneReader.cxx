@@ -1,5 +1,6 @@
 #include "vtkTyndallSceneReader.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkCamera.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -9,6 +10,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +64,7 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
     return false;
   }
   this->UpdateLights(renderer, reporter);
+  this->UpdateGuests(renderer, volume, reporter);
   if (!this->Medium.GetSingleScattering())
   {
     this->Lights.clear();
@@ -149,4 +152,85 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
     vtkWarningWithObjectMacro(reporter, << warning.str());
   }
   this->LastLightWarning = warning.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::UpdateGuests(
+  vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+{
+  this->Guests.clear();
+  this->GuestVolumes.clear();
+  auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
+  std::ostringstream warning;
+  int ignored = 0;
+  vtkVolumeCollection* volumes = renderer->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  int index = -1;
+  while (vtkVolume* other =
+           (!property || property->GetSceneShadows()) ? volumes->GetNextVolume(it) : nullptr)
+  {
+    ++index;
+    if (other == volume || !other->GetVisibility() || !other->GetMapper() ||
+      !other->GetMapper()->IsA("vtkTransmittanceVolumeMapper"))
+    {
+      continue;
+    }
+    if (static_cast<int>(this->Guests.size()) == MaximumNumberOfGuests)
+    {
+      ++ignored;
+      continue;
+    }
+    const size_t slot = this->Guests.size();
+    if (this->GuestSlots.size() <= slot)
+    {
+      this->GuestSlots.resize(slot + 1);
+    }
+    GuestSlot& g = this->GuestSlots[slot];
+    if (g.Volume != other || !g.Medium)
+    {
+      g.Volume = other;
+      g.Medium.reset(new vtkTyndallGridMedium);
+    }
+    const char* reason = nullptr;
+    auto* otherProperty = vtkParticipatingMediumProperty::SafeDownCast(other->GetProperty());
+    if (!g.Medium->Update(other, reporter))
+    {
+      reason = "cannot be read";
+    }
+    else if (g.Medium->GetNumberOfNaNScalars() > 0)
+    {
+      reason = "has missing data (NaN)";
+    }
+    else if (g.Medium->GetClip().Enabled())
+    {
+      reason = "is clipped or cropped";
+    }
+    else if (otherProperty && otherProperty->GetDetailNoise())
+    {
+      reason = "has procedural detail";
+    }
+    else if (g.Medium->GetChromatic() || this->Medium.GetChromatic())
+    {
+      reason = "is in a scene with a coloured extinction";
+    }
+    if (reason)
+    {
+      warning << "Volume " << index << " of the renderer " << reason
+              << ": it casts no shadow into the other volumes. ";
+      continue;
+    }
+    this->Guests.push_back(g.Medium.get());
+    this->GuestVolumes.push_back(other);
+  }
+  if (ignored)
+  {
+    warning << ignored << " volume(s) beyond the first " << MaximumNumberOfGuests
+            << " others cast no shadow into this one.";
+  }
+  if (!warning.str().empty() && warning.str() != this->LastGuestWarning)
+  {
+    vtkWarningWithObjectMacro(reporter, << warning.str());
+  }
+  this->LastGuestWarning = warning.str();
 }

@@ -23,7 +23,15 @@
  * - in the emission-absorption model no light is used (nothing is shaded);
  *   in single scattering each light's irradiance is the medium's LightScale
  *   times the light's colour;
- * - the medium is read by vtkTyndallGridMedium's rules.
+ * - the medium is read by vtkTyndallGridMedium's rules;
+ * - the guests, the other media the light crosses (unless the property's
+ *   SceneShadows is off): every other visible vtkVolume of the renderer
+ *   drawn by a vtkTransmittanceVolumeMapper, in the renderer's order, at most
+ *   MaximumNumberOfGuests, each read by vtkTyndallGridMedium's rules. A
+ *   guest with missing data (NaN), clipping or cropping, or procedural
+ *   detail, and every guest of a scene with a coloured extinction, is left
+ *   out with a warning naming the reason (the shaders' guest lookup has
+ *   none of these).
  *
  * A warning is given once per change, not once per frame. Internal to
  * Tyndall::Rendering; not wrapped.
@@ -37,6 +45,7 @@
 #include "vtkTyndallGridMedium.h"   // For the medium
 #include "vtkTyndallLight.h"        // For the lights
 
+#include <memory> // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
 
@@ -61,8 +70,29 @@ public:
   const vtkTyndallDetailMedium& GetDetail() const { return this->Detail; }
   const std::vector<vtkTyndallLight>& GetLights() const { return this->Lights; }
 
+  /// The most guests a medium is lit through (the shaders' guest arrays).
+  static constexpr int MaximumNumberOfGuests = 3;
+
+  ///@{
+  /// The guests (see the class description) and their volumes, in the same order.
+  const std::vector<const vtkTyndallGridMedium*>& GetGuests() const { return this->Guests; }
+  const std::vector<vtkVolume*>& GetGuestVolumes() const { return this->GuestVolumes; }
+  ///@}
+
 private:
   void UpdateLights(vtkRenderer* renderer, vtkObject* reporter);
+  void UpdateGuests(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+
+  /// One slot per guest, kept between frames (its medium's caches) while the slot's volume stays.
+  struct GuestSlot
+  {
+    vtkVolume* Volume = nullptr;
+    std::unique_ptr<vtkTyndallGridMedium> Medium;
+  };
+  std::vector<GuestSlot> GuestSlots;
+  std::vector<const vtkTyndallGridMedium*> Guests;
+  std::vector<vtkVolume*> GuestVolumes;
+  std::string LastGuestWarning;
 
   vtkTyndallGridMedium Medium;
   vtkTyndallDetailMedium Detail;

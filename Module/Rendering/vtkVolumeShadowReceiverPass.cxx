@@ -52,11 +52,11 @@ public:
   vtkTimeStamp CodeTime;
   bool WarnedCasters = false;
 
-  /// The renderer's first visible Tyndall volume (a warning, once, when there are several).
-  vtkVolume* FindCaster(vtkRenderer* renderer, vtkObject* self)
+  /// The renderer's first visible Tyndall volume; `count` of them in all.
+  vtkVolume* FindCaster(vtkRenderer* renderer, int& count)
   {
     vtkVolume* first = nullptr;
-    int count = 0;
+    count = 0;
     vtkVolumeCollection* volumes = renderer->GetVolumes();
     vtkCollectionSimpleIterator it;
     volumes->InitTraversal(it);
@@ -69,15 +69,25 @@ public:
         ++count;
       }
     }
-    if (count > 1 && !this->WarnedCasters)
-    {
-      vtkWarningWithObjectMacro(
-        self, << count
-              << " volumes are drawn by vtkTransmittanceVolumeMapper; only the first casts its "
-                 "shadow on the surfaces.");
-    }
-    this->WarnedCasters = count > 1;
     return first;
+  }
+
+  /**
+   * The caster's maps hold its medium and its guests (the other volumes its
+   * light crosses: vtkParticipatingMediumProperty::SceneShadows): a warning,
+   * once, when some of the `count` Tyndall volumes are in neither.
+   */
+  void WarnCasters(int count, const vtkTransmittanceFrame& frame, vtkObject* self)
+  {
+    const int missing = count - 1 - static_cast<int>(frame.Guests.size());
+    if (missing > 0 && !this->WarnedCasters)
+    {
+      vtkWarningWithObjectMacro(self, << missing << " of the " << count
+                                      << " volumes drawn by vtkTransmittanceVolumeMapper cast no "
+                                         "shadow on the surfaces: the first one's maps hold it "
+                                         "and the volumes its light crosses (SceneShadows).");
+    }
+    this->WarnedCasters = missing > 0;
   }
 
   /// The declarations and the light table for this frame; CodeTime moves when they change.
@@ -211,11 +221,13 @@ void vtkVolumeShadowReceiverPass::Render(const vtkRenderState* s)
     return;
   }
   vtkRenderer* renderer = s->GetRenderer();
-  vtkVolume* caster = in.FindCaster(renderer, this);
+  int casters = 0;
+  vtkVolume* caster = in.FindCaster(renderer, casters);
   auto* mapper = caster ? vtkTransmittanceVolumeMapper::SafeDownCast(caster->GetMapper()) : nullptr;
   if (mapper && mapper->UpdateShadowMaps(renderer, caster))
   {
     in.Frame = &mapper->GetShadowFrame(in.Maps, in.Slices);
+    in.WarnCasters(casters, *in.Frame, this);
   }
   if (!in.Frame || !in.Maps)
   {

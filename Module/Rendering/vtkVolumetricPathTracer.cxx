@@ -555,6 +555,14 @@ bool SetUpSampling(
                                          "tracer; vtkSingleScatteringReference renders it.");
     return false;
   }
+  if (!scene.Guests.empty())
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: other Tyndall volumes in the renderer cast "
+                                         "shadows into this one, which the path tracer does not "
+                                         "trace; hide them or switch the property's SceneShadows "
+                                         "off; vtkSingleScatteringReference renders them.");
+    return false;
+  }
   scene.Majorant =
     scene.ClosedForm ? 0.0 : (scene.Detail ? scene.Detail->GetMajorant() : GridMajorant(medium));
   if (!std::isfinite(scene.Majorant) ||

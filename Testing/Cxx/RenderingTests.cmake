@@ -25,6 +25,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperChromatic.cxx
   TestVolumeShadowReceiver.cxx
+  TestTransmittanceMapperSceneShadows.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx

@@ -167,6 +167,29 @@ check(shadows.GetLastCaster() is volume, "the cloud casts its shadow on the grou
 renderer.SetPass(None)
 renderer.RemoveActor(ground)
 
+# Several volumes from Python: a second cloud beside the first shadows it,
+# and the second reads the first's maps (one set for both).
+check(medium.GetSceneShadows(), "scene shadows are on by default")
+second_mapper = vtkTransmittanceVolumeMapper()
+second_mapper.SetInputConnection(mapper.GetInputConnection(0, 0))
+second = vtkVolume()
+second.SetMapper(second_mapper)
+scene_prop = vtkParticipatingMediumProperty()
+scene_prop.DeepCopy(prop)
+volume.SetProperty(scene_prop)
+second.SetProperty(scene_prop)
+second.SetPosition(-2.2, 0, 0)
+renderer.AddVolume(second)
+renderer.GetCullers().GetItemAsObject(0).SetSortingStyleToBackToFront()
+window.Render()
+builds = mapper.GetMapBuildCount() + second_mapper.GetMapBuildCount()
+scene_prop.SetSceneShadows(False)
+window.Render()
+check(mapper.GetMapBuildCount() + second_mapper.GetMapBuildCount() == builds + 2,
+      "switching scene shadows off: each volume builds its own maps")
+renderer.RemoveVolume(second)
+volume.SetProperty(prop)
+
 if failures:
     sys.exit(1)
 print("ok")

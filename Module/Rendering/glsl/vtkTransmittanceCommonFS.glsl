@@ -26,8 +26,15 @@ uniform vec3 volumeTexScale; // box [0,1]^3 -> texture coordinates
 uniform vec3 volumeTexShift;
 uniform vec2 scalarToTable; // table coordinate = value * x + y
 uniform float densityScale;
+uniform mat4 worldToVolume; // world -> the medium's box as [0,1]^3
 
 //TYNDALL::LightMaps
+
+// Ray (world) against the medium's box (see tyndallIntersectBox()).
+vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
+{
+  return tyndallIntersectBox(worldToVolume, origin, dir);
+}
 
 #if TYNDALL_SKIP_EMPTY
 // Empty-space skipping: vtkTyndallMajorantGrid's blocks, one texel each
@@ -157,6 +164,50 @@ float tyndallExtinction(vec3 x)
   vec3 color;
   float tableCoord;
   return tyndallMedium(x, color, tableCoord);
+}
+
+#if TYNDALL_GUESTS > 0
+// Guests (vtkTyndallSceneReader::GetGuests()): the other media the light
+// crosses. Each has its scalars and table (its own mapper's textures), its
+// world -> box matrix, box -> texture coordinates, scalar -> table
+// coordinate and density scale; it is empty outside its box.
+uniform sampler3D guestVolume[TYNDALL_GUESTS];
+uniform sampler2D guestTransfer[TYNDALL_GUESTS];
+uniform mat4 guestWorldToBox[TYNDALL_GUESTS];
+uniform vec3 guestTexScale[TYNDALL_GUESTS];
+uniform vec3 guestTexShift[TYNDALL_GUESTS];
+uniform vec2 guestScalarToTable[TYNDALL_GUESTS];
+uniform float guestDensity[TYNDALL_GUESTS];
+
+float tyndallGuestExtinction(sampler3D volume, sampler2D table, int g, vec3 x)
+{
+  vec3 q = (guestWorldToBox[g] * vec4(x, 1.0)).xyz;
+  if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0))))
+  {
+    return 0.0;
+  }
+  float value = texture(volume, q * guestTexScale[g] + guestTexShift[g]).r;
+  vec2 toTable = guestScalarToTable[g];
+  return guestDensity[g] *
+    texture(table, vec2(value * toTable.x + toTable.y, TYNDALL_TABLE_ALBEDO_ROW)).a;
+}
+
+// Samplers are indexed by constants only (GLSL 1.50): one term per guest.
+#define TYNDALL_GUEST_EXTINCTION(g) +tyndallGuestExtinction(guestVolume[g], guestTransfer[g], g, x)
+#endif
+
+// The extinction the light sees at the world point x: the medium's (empty
+// outside its box) and, with guests, theirs. The map build and the
+// brute-force light march integrate it.
+float tyndallSceneExtinction(vec3 x)
+{
+#if TYNDALL_GUESTS > 0
+  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
+  bool inside = all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(1.0)));
+  return (inside ? tyndallExtinction(x) : 0.0)TYNDALL_FOR_GUESTS(TYNDALL_GUEST_EXTINCTION);
+#else
+  return tyndallExtinction(x);
+#endif
 }
 
 vec3 tyndallEmissionColor(float tableCoord)

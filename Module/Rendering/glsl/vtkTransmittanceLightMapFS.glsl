@@ -5,7 +5,9 @@
 // tyndallMapTransmittance(). It declares no sampler but mapTexture (with
 // TYNDALL_MAP_COEFFICIENTS > 0), so a shader that is not Tyndall's can take it.
 // Constants: vtkTransmittanceShaderSource.
-uniform mat4 worldToVolume; // world -> the medium's box as [0,1]^3
+// The light maps' box as [0,1]^3: the medium's box, or with guests (other
+// media the light crosses) the world-axis box around them all.
+uniform mat4 worldToMapBox;
 
 // Coloured extinction (Documentation/rendering-model.md, "Coloured
 // extinction"): channel k's extinction is extinctionColor[k] times the
@@ -44,18 +46,25 @@ uniform vec3 lightAxisX[TYNDALL_MAX_LIGHTS];
 uniform vec3 lightAxisY[TYNDALL_MAX_LIGHTS];
 uniform vec3 lightAxisZ[TYNDALL_MAX_LIGHTS];
 
-// Ray (world) against the volume's box: returns (t_in, t_out); t_in > t_out
-// when the ray misses. worldToVolume is affine, so t stays a world distance.
-vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
+// Ray (world) against the box `worldToBox` maps to [0,1]^3: returns (t_in,
+// t_out); t_in > t_out when the ray misses. The map is affine, so t stays a
+// world distance.
+vec2 tyndallIntersectBox(mat4 worldToBox, vec3 origin, vec3 dir)
 {
-  vec3 o = (worldToVolume * vec4(origin, 1.0)).xyz;
-  vec3 d = (worldToVolume * vec4(dir, 0.0)).xyz;
+  vec3 o = (worldToBox * vec4(origin, 1.0)).xyz;
+  vec3 d = (worldToBox * vec4(dir, 0.0)).xyz;
   vec3 invD = 1.0 / d; // IEEE: +-inf for zero components
   vec3 t0 = (vec3(0.0) - o) * invD;
   vec3 t1 = (vec3(1.0) - o) * invD;
   vec3 tMin = min(t0, t1);
   vec3 tMax = max(t0, t1);
   return vec2(max(max(tMin.x, tMin.y), tMin.z), min(min(tMax.x, tMax.y), tMax.z));
+}
+
+// Ray (world) against the light maps' box.
+vec2 tyndallIntersectMapBox(vec3 origin, vec3 dir)
+{
+  return tyndallIntersectBox(worldToMapBox, origin, dir);
 }
 
 // The light ray of texel (a, b) of light l.
@@ -221,13 +230,13 @@ float tyndallMapSet(int l, int set, vec2 ab, float s)
 
 // Light l's map transmittance from world point x to the light (per channel
 // with a coloured extinction): the map texel of x, the position of x along
-// the texel's light ray across the volume's box, the reconstruction there.
+// the texel's light ray across the maps' box, the reconstruction there.
 TyndallTransmittance tyndallMapTransmittance(int l, vec3 x)
 {
   vec2 ab = tyndallLightTexel(l, x);
   vec3 origin, dir;
   tyndallLightRay(l, ab, origin, dir);
-  vec2 range = tyndallIntersectVolume(origin, dir);
+  vec2 range = tyndallIntersectMapBox(origin, dir);
   if (range.x >= range.y)
   {
     return TyndallTransmittance(1.0);

@@ -1,6 +1,7 @@
 // Tyndall: builds one light's transmittance map (appended to
 // vtkTransmittanceCommonFS.glsl). One fragment per texel: the texel's light
-// ray is marched through the volume and projected onto the TFM or ETM basis
+// ray is marched through the medium (and the guests, other media the light
+// crosses) across the maps' box and projected onto the TFM or ETM basis
 // (Documentation/rendering-model.md). Layer k of the output holds
 // coefficients 4k .. 4k+3; adaptive methods add a layer (s_min, s_max,
 // T_beyond, 0).
@@ -48,7 +49,7 @@ float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool e
     }
 #endif
     ++n;
-    float sigma = channelExtinction * tyndallExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
+    float sigma = channelExtinction * tyndallSceneExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
     float opticalStep = sigma * rangeLength * du;
     float value = etm ? sigma * rangeLength : exp(-(tau + 0.5 * opticalStep));
     // cos(j pi u) by the angle-addition recurrence.
@@ -72,7 +73,7 @@ void main()
 {
   vec3 origin, dir;
   tyndallLightRay(lightIndex, texCoord, origin, dir);
-  vec2 range = tyndallIntersectVolume(origin, dir);
+  vec2 range = tyndallIntersectMapBox(origin, dir);
   bool etm = method == TYNDALL_ETM || method == TYNDALL_ADAPTIVE_ETM;
   bool adaptive = method == TYNDALL_ADAPTIVE_TFM || method == TYNDALL_ADAPTIVE_ETM;
   vec3 bounds = vec3(0.0, 1.0, 1.0);
@@ -104,7 +105,7 @@ void main()
           continue;
         }
 #endif
-        float sigma = channelExtinction * tyndallExtinction(kIn + (float(n) + 0.5) * du * D * dir);
+        float sigma = channelExtinction * tyndallSceneExtinction(kIn + (float(n) + 0.5) * du * D * dir);
         if (sMin < 0.0 && sigma > 0.0)
         {
           sMin = float(n) * du;

@@ -142,14 +142,15 @@ TyndallTransmittance lightTransmittance(int l, vec3 x, vec3 toLight, float light
 #if TYNDALL_BRUTE_FORCE_LIGHTS
   if (m == TYNDALL_BRUTE_FORCE)
   {
-    vec2 range = tyndallIntersectVolume(x, toLight);
+    vec2 range = tyndallIntersectMapBox(x, toLight); // the medium's box and its guests'
     float tEnd = min(range.y, lightDistance);
     if (tEnd <= 0.0)
     {
       return TyndallTransmittance(1.0);
     }
-#if TYNDALL_DETAIL_GROUPS > 0
-    // Procedural detail: the closed form, exact at any distance.
+#if TYNDALL_DETAIL_GROUPS > 0 && TYNDALL_GUESTS == 0
+    // Procedural detail: the closed form, exact at any distance (with
+    // guests, the march below: the closed form knows the medium alone).
     return exp(-tyndallDetailDepth(x, toLight, tEnd) * extinctionColor);
 #else
     float dt = tEnd / float(lightSampleCount);
@@ -164,7 +165,7 @@ TyndallTransmittance lightTransmittance(int l, vec3 x, vec3 toLight, float light
       {
         if (n + k < lightSampleCount)
         {
-          tau += tyndallExtinction(x + (float(n + k) + 0.5) * dt * toLight);
+          tau += tyndallSceneExtinction(x + (float(n + k) + 0.5) * dt * toLight);
         }
       }
     }
