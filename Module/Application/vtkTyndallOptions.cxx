@@ -26,17 +26,20 @@ constexpr double Coordinate = 1.0e30;
 
 enum class Kind
 {
-  Flag,     // no argument
-  Integer,  // one integer in [Min, Max]
-  Number,   // one number in [Min, Max] (Open: exclusive)
-  Triple,   // three numbers in [Min, Max]
-  Pair,     // two integers in [Min, Max]
-  Text,     // one word
-  Choice,   // one of Choices ('|'-separated)
-  Light,    // a new light: three numbers
-  LightSet, // the most recent light's colour (3 numbers) or intensity (1)
-  Help,     // -h, --help
-  Action    // a viewer key without an option
+  Flag,      // no argument
+  Integer,   // one integer in [Min, Max]
+  Number,    // one number in [Min, Max] (Open: exclusive)
+  Triple,    // three numbers in [Min, Max]
+  Pair,      // two integers in [Min, Max]
+  Text,      // one word
+  Choice,    // one of Choices ('|'-separated)
+  Light,     // a new light: three numbers
+  LightSet,  // the most recent light's colour (3 numbers) or intensity (1)
+  Volume,    // another volume: a file name
+  VolumeSet, // the most recent volume's position (3 numbers), scale or density (1), preset or
+             // transfer function (a word: Metavar NAME or FILE)
+  Help,      // -h, --help
+  Action     // a viewer key without an option
 };
 
 // How a viewer key changes its option.
@@ -88,6 +91,33 @@ const Spec kOptions[] = {
     "is allocated" },
   { "resolution", "-r", Kind::Integer, 8, 512, false, "", "N", "128", "Input", Both,
     "voxels per axis of the built-in cloud (default scene only)" },
+  { "position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 0", "Input",
+    Both, "translation of the volume (the input or the built-in cloud) in world units" },
+  { "scale", "", Kind::Number, 0, Huge, true, "", "S", "1", "Input", Both,
+    "scale of the volume about the world origin, > 0" },
+  { "add-volume", "", Kind::Volume, 0, 0, false, "", "FILE", "",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "another volume, read like the input and drawn with the same method, lights and medium "
+    "settings; the --volume-* options after it set it up (clipping, detail and emission apply "
+    "to the first volume only)" },
+  { "no-scene-shadows", "", Kind::Flag, 0, 0, false, "", "", "",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "light each volume as if it were alone (vtkParticipatingMediumProperty::SceneShadows off)" },
+  { "volume-position", "", Kind::VolumeSet, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 0",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "translation of the most recent --add-volume" },
+  { "volume-scale", "", Kind::VolumeSet, 0, Huge, true, "", "S", "1",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "scale of the most recent --add-volume about the world origin, > 0" },
+  { "volume-density-scale", "", Kind::VolumeSet, 0, Huge, false, "", "S", "1",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "density scale of the most recent --add-volume" },
+  { "volume-preset", "", Kind::VolumeSet, 0, 0, false, "", "NAME", "",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "transfer-function preset of the most recent --add-volume (default: guessed from its data)" },
+  { "volume-transfer-function", "", Kind::VolumeSet, 0, 0, false, "", "FILE", "",
+    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    "transfer-function file of the most recent --add-volume" },
   { "method", "", Kind::Choice, 0, 0, false, "none|brute-force|tfm|adaptive-tfm|etm|adaptive-etm",
     "M", "adaptive-etm", "Scattering", Both, "light transmittance", KeyMode::Choose, "123456" },
   { "model", "", Kind::Choice, 0, 0, false, "emission-absorption|single-scattering", "M",
@@ -276,6 +306,40 @@ struct Light
   double Intensity = 1.0;
 };
 
+// A volume added with --add-volume and its --volume-* settings.
+struct AddedVolume
+{
+  std::string File;
+  double Position[3] = { 0, 0, 0 };
+  double Scale = 1.0;
+  double DensityScale = 1.0;
+  std::string Preset;
+  std::string TransferFunction;
+};
+
+// The error for a preset name that is not one ("" for a known one).
+std::string UnknownPreset(const std::string& name)
+{
+  if (vtkTransferFunctionPresets::GetPresetIndex(name.c_str()) >= 0)
+  {
+    return "";
+  }
+  std::string known;
+  for (int p = 0; p < vtkTransferFunctionPresets::GetNumberOfPresets(); ++p)
+  {
+    known += std::string(" ") + vtkTransferFunctionPresets::GetPresetName(p);
+  }
+  return "unknown preset '" + name + "' (known:" + known + ")";
+}
+
+// Whether the option's argument is a word (a name or a file), not numbers.
+bool TakesWord(const Spec& spec)
+{
+  return spec.Type == Kind::Text || spec.Type == Kind::Volume ||
+    (spec.Type == Kind::VolumeSet &&
+      (std::string(spec.Metavar) == "NAME" || std::string(spec.Metavar) == "FILE"));
+}
+
 std::vector<std::string> Split(const char* text, char separator)
 {
   std::vector<std::string> parts;
@@ -343,6 +407,14 @@ std::string Wanted(const Spec& s)
     case Kind::Triple:
     case Kind::Light:
       return "three numbers in " + RangeText(s);
+    case Kind::VolumeSet:
+      if (TakesWord(s))
+      {
+        break;
+      }
+      return std::string(s.Name) == "volume-position"
+        ? "three numbers in " + RangeText(s)
+        : (s.Open ? "a number, " + RangeText(s) : "a number in " + RangeText(s));
     case Kind::Choice:
     {
       std::string list = s.Choices;
@@ -350,13 +422,12 @@ std::string Wanted(const Spec& s)
       return "one of " + list;
     }
     default:
-    {
-      std::string what = s.Metavar;
-      std::transform(what.begin(), what.end(), what.begin(),
-        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      return "a " + (what == "file" ? std::string("file name") : what);
-    }
+      break;
   }
+  std::string what = s.Metavar;
+  std::transform(what.begin(), what.end(), what.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return "a " + (what == "file" ? std::string("file name") : what);
 }
 
 // How many arguments an option takes after its name.
@@ -374,6 +445,8 @@ int ArgumentCount(const Spec& spec)
       return 3;
     case Kind::LightSet:
       return std::string(spec.Name) == "light-color" ? 3 : 1;
+    case Kind::VolumeSet:
+      return std::string(spec.Name) == "volume-position" ? 3 : 1;
     default:
       return 1;
   }
@@ -385,7 +458,7 @@ bool ReadValue(const Spec& spec, const std::string& arg, const std::vector<std::
   Value& value, std::string& error)
 {
   value.Set = true;
-  if (spec.Type == Kind::Text)
+  if (TakesWord(spec))
   {
     value.Text = args[0];
     if (value.Text.empty())
@@ -456,6 +529,7 @@ class vtkTyndallOptions::vtkInternals
 public:
   std::map<std::string, Value> Values;
   std::vector<Light> Lights;
+  std::vector<AddedVolume> Volumes;
 
   // The row of `name` for `program` (nullptr if none).
   static const Spec* Find(const std::string& name, int program)
@@ -517,18 +591,17 @@ public:
         this->Lights.back().Intensity = n[0];
       }
     }
+    else if (spec.Type == Kind::Volume || spec.Type == Kind::VolumeSet)
+    {
+      this->StoreVolume(spec, arg, value, error);
+    }
     else if (name == "view-up" && n[0] == 0 && n[1] == 0 && n[2] == 0)
     {
       error = "--view-up needs a non-zero vector";
     }
-    else if (name == "preset" && vtkTransferFunctionPresets::GetPresetIndex(value.Text.c_str()) < 0)
+    else if (name == "preset" && !UnknownPreset(value.Text).empty())
     {
-      std::string known;
-      for (int p = 0; p < vtkTransferFunctionPresets::GetNumberOfPresets(); ++p)
-      {
-        known += std::string(" ") + vtkTransferFunctionPresets::GetPresetName(p);
-      }
-      error = "unknown preset '" + value.Text + "' (known:" + known + ")";
+      error = UnknownPreset(value.Text);
     }
     else if (name == "input")
     {
@@ -537,6 +610,51 @@ public:
     else
     {
       this->Values[name] = value;
+    }
+  }
+
+  // A new volume (--add-volume), or a setting of the most recent one.
+  void StoreVolume(const Spec& spec, const std::string& arg, const Value& value, std::string& error)
+  {
+    const std::string name = spec.Name;
+    if (spec.Type == Kind::Volume)
+    {
+      if (static_cast<int>(this->Volumes.size()) == MaximumAddedVolumes)
+      {
+        error = "at most " + std::to_string(MaximumAddedVolumes) + " --add-volume";
+        return;
+      }
+      this->Volumes.emplace_back();
+      this->Volumes.back().File = value.Text;
+      return;
+    }
+    if (this->Volumes.empty())
+    {
+      error = arg + " applies to the most recent volume: give --add-volume before it";
+      return;
+    }
+    AddedVolume& v = this->Volumes.back();
+    const std::vector<double>& n = value.Numbers;
+    if (name == "volume-position")
+    {
+      std::copy(n.begin(), n.end(), v.Position);
+    }
+    else if (name == "volume-scale")
+    {
+      v.Scale = n[0];
+    }
+    else if (name == "volume-density-scale")
+    {
+      v.DensityScale = n[0];
+    }
+    else if (name == "volume-preset")
+    {
+      error = UnknownPreset(value.Text);
+      v.Preset = value.Text;
+    }
+    else
+    {
+      v.TransferFunction = value.Text;
     }
   }
 
@@ -612,6 +730,7 @@ bool vtkTyndallOptions::Parse(int argc, char* argv[])
   vtkInternals& in = *this->Internals;
   in.Values.clear();
   in.Lights.clear();
+  in.Volumes.clear();
   this->Input.clear();
   this->HelpRequested = false;
   this->ErrorMessage.clear();
@@ -783,6 +902,57 @@ void vtkTyndallOptions::SetFlag(const char* name, bool on)
     this->Internals->Values.erase(name ? name : "");
   }
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallOptions::GetNumberOfAddedVolumes()
+{
+  return static_cast<int>(this->Internals->Volumes.size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallOptions::GetAddedVolumeFile(int volume)
+{
+  const bool ok = volume >= 0 && volume < this->GetNumberOfAddedVolumes();
+  return ok ? this->Internals->Volumes[volume].File.c_str() : "";
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallOptions::GetAddedVolumePosition(int volume, double v[3])
+{
+  const bool ok = volume >= 0 && volume < this->GetNumberOfAddedVolumes();
+  for (int k = 0; k < 3; ++k)
+  {
+    v[k] = ok ? this->Internals->Volumes[volume].Position[k] : 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallOptions::GetAddedVolumeScale(int volume)
+{
+  const bool ok = volume >= 0 && volume < this->GetNumberOfAddedVolumes();
+  return ok ? this->Internals->Volumes[volume].Scale : 1.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallOptions::GetAddedVolumeDensityScale(int volume)
+{
+  const bool ok = volume >= 0 && volume < this->GetNumberOfAddedVolumes();
+  return ok ? this->Internals->Volumes[volume].DensityScale : 1.0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallOptions::GetAddedVolumePreset(int volume)
+{
+  const bool ok = volume >= 0 && volume < this->GetNumberOfAddedVolumes();
+  return ok ? this->Internals->Volumes[volume].Preset.c_str() : "";
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallOptions::GetAddedVolumeTransferFunction(int volume)
+{
+  const bool ok = volume >= 0 && volume < this->GetNumberOfAddedVolumes();
+  return ok ? this->Internals->Volumes[volume].TransferFunction.c_str() : "";
 }
 
 //------------------------------------------------------------------------------
@@ -1007,4 +1177,5 @@ void vtkTyndallOptions::PrintSelf(ostream& os, vtkIndent indent)
     os << (value.second.Text.empty() ? "" : " ") << value.second.Text << "\n";
   }
   os << indent << "Lights: " << this->Internals->Lights.size() << "\n";
+  os << indent << "AddedVolumes: " << this->Internals->Volumes.size() << "\n";
 }

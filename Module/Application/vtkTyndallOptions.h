@@ -14,7 +14,8 @@
  * keep their table default (GetNumber() returns it; vtkTyndallSceneBuilder
  * chooses the defaults that depend on the scene). Lights are repeatable:
  * each --light-direction or --light-position adds one, --light-color and
- * --light-intensity change the most recent one.
+ * --light-intensity change the most recent one. Volumes too: each
+ * --add-volume adds one, the --volume-* options change the most recent one.
  *
  * Numbers are parsed strictly: the whole argument, finite, inside the
  * option's documented range. Parse() stops at the first problem and keeps
@@ -124,6 +125,23 @@ public:
    */
   void SetNumber(const char* name, double value, int i = 0);
   void SetFlag(const char* name, bool on);
+  ///@}
+
+  ///@{
+  /**
+   * The volumes added with --add-volume, in order (at most
+   * MaximumAddedVolumes): the file, and the --volume-* settings given
+   * after it (position, scale about the origin, density scale; the preset
+   * and transfer-function file, "" when not given).
+   */
+  static constexpr int MaximumAddedVolumes = 3;
+  int GetNumberOfAddedVolumes();
+  const char* GetAddedVolumeFile(int volume);
+  void GetAddedVolumePosition(int volume, double v[3]);
+  double GetAddedVolumeScale(int volume);
+  double GetAddedVolumeDensityScale(int volume);
+  const char* GetAddedVolumePreset(int volume);
+  const char* GetAddedVolumeTransferFunction(int volume);
   ///@}
 
   ///@{

@@ -8,8 +8,10 @@
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
+#include "vtkCullerCollection.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -157,9 +159,35 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   this->Mapper->SetInputConnection(this->Source->GetOutputPort());
   this->Volume->SetMapper(this->Mapper);
   this->Volume->SetProperty(this->Property);
+  double position[3];
+  this->Options->GetVector("position", position);
+  this->Volume->SetPosition(position);
+  this->Volume->SetScale(this->Options->GetNumber("scale"));
+  this->AddedVolumes.clear();
+  if (!this->LoadAddedVolumes())
+  {
+    return false;
+  }
   this->ApplyOptions();
 
   renderer->AddVolume(this->Volume);
+  for (const AddedVolume& added : this->AddedVolumes)
+  {
+    renderer->AddVolume(added.Volume);
+  }
+  if (!this->AddedVolumes.empty())
+  {
+    // Several volumes are composited in the order they are drawn: farthest first.
+    vtkCullerCollection* cullers = renderer->GetCullers();
+    cullers->InitTraversal();
+    while (vtkCuller* culler = cullers->GetNextItem())
+    {
+      if (auto* coverage = vtkFrustumCoverageCuller::SafeDownCast(culler))
+      {
+        coverage->SetSortingStyleToBackToFront();
+      }
+    }
+  }
   renderer->AutomaticLightCreationOff();
   this->SetUpBackground(renderer);
   if (!this->SetUpCamera(renderer))
@@ -188,7 +216,7 @@ void vtkTyndallSceneBuilder::AddGround(vtkRenderer* renderer)
   // Perpendicular to the camera's view-up, a tenth of the volume's diagonal
   // below its lowest corner, four diagonals wide.
   double bounds[6], up[3], center[3];
-  this->Volume->GetBounds(bounds);
+  this->GetSceneBounds(bounds);
   renderer->GetActiveCamera()->GetViewUp(up);
   vtkMath::Normalize(up);
   double lowest = 0.0, diagonal = 0.0;
@@ -315,7 +343,7 @@ bool vtkTyndallSceneBuilder::AddSurface(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallSceneBuilder::Run(vtkAlgorithm* source)
+bool vtkTyndallSceneBuilder::Update(vtkAlgorithm* source)
 {
   // The source's progress and errors are the builder's; its executive's
   // errors ("returned failure for request") only repeat them.
@@ -331,9 +359,115 @@ bool vtkTyndallSceneBuilder::Run(vtkAlgorithm* source)
   source->RemoveObserver(progressTag);
   source->RemoveObserver(errorTag);
   source->GetExecutive()->RemoveObserver(executiveTag);
+  auto* image = vtkImageData::SafeDownCast(source->GetOutputDataObject(0));
+  return image && image->GetNumberOfPoints() > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::Run(vtkAlgorithm* source)
+{
+  const bool ok = this->Update(source);
   this->Source = source;
   this->Image = vtkImageData::SafeDownCast(source->GetOutputDataObject(0));
-  return this->Image && this->Image->GetNumberOfPoints() > 0;
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkVolumeFileReader> vtkTyndallSceneBuilder::MakeReader(const char* path)
+{
+  vtkTyndallOptions* o = this->Options;
+  auto reader = vtkSmartPointer<vtkVolumeFileReader>::New();
+  reader->SetFileName(path);
+  reader->SetMemoryLimit(o->GetNumber("memory-limit"));
+  reader->SetRescale(!o->IsSet("no-rescale"));
+  reader->SetConvertLevelSetToFog(o->IsSet("level-set-to-fog"));
+  return reader;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::LoadAddedVolumes()
+{
+  vtkTyndallOptions* o = this->Options;
+  for (int i = 0; i < o->GetNumberOfAddedVolumes(); ++i)
+  {
+    const std::string path = o->GetAddedVolumeFile(i);
+    vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(path.c_str());
+    this->ProgressLabel = "loading " + path;
+    if (!this->Update(reader))
+    {
+      return false; // the reader's error names the file
+    }
+    AddedVolume added;
+    added.Image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+    added.Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
+    added.Property->SetInterpolationTypeToLinear();
+    if (*o->GetAddedVolumeTransferFunction(i))
+    {
+      vtkNew<vtkTransferFunctionFileReader> file;
+      file->SetFileName(o->GetAddedVolumeTransferFunction(i));
+      vtkNew<vtkCallbackCommand> forward;
+      forward->SetClientData(this);
+      forward->SetCallback(Forward);
+      file->AddObserver(vtkCommand::ErrorEvent, forward);
+      if (!file->Read())
+      {
+        return false;
+      }
+      file->Apply(added.Property);
+    }
+    else
+    {
+      std::string preset = o->GetAddedVolumePreset(i);
+      const char* guess = vtkTransferFunctionPresets::GuessPreset(added.Image);
+      preset = preset.empty() && guess ? guess : preset;
+      if (preset.empty() ||
+        !vtkTransferFunctionPresets::ApplyToImage(preset.c_str(), added.Property, added.Image))
+      {
+        vtkErrorMacro(<< path << ": cannot apply the preset '" << preset << "'");
+        return false;
+      }
+    }
+    added.Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
+    added.Mapper->SetInputConnection(reader->GetOutputPort());
+    added.Volume = vtkSmartPointer<vtkVolume>::New();
+    added.Volume->SetMapper(added.Mapper);
+    added.Volume->SetProperty(added.Property);
+    double position[3];
+    o->GetAddedVolumePosition(i, position);
+    added.Volume->SetPosition(position);
+    added.Volume->SetScale(o->GetAddedVolumeScale(i));
+    added.DensityScale = o->GetAddedVolumeDensityScale(i);
+    this->AddedVolumes.push_back(added);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::GetSceneBounds(double bounds[6])
+{
+  this->Volume->GetBounds(bounds);
+  for (const AddedVolume& added : this->AddedVolumes)
+  {
+    const double* b = added.Volume->GetBounds();
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = std::min(bounds[2 * a], b[2 * a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], b[2 * a + 1]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallSceneBuilder::GetNumberOfAddedVolumes()
+{
+  return static_cast<int>(this->AddedVolumes.size());
+}
+
+//------------------------------------------------------------------------------
+vtkVolume* vtkTyndallSceneBuilder::GetAddedVolume(int i)
+{
+  return i >= 0 && i < this->GetNumberOfAddedVolumes() ? this->AddedVolumes[i].Volume.Get()
+                                                       : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -350,8 +484,7 @@ bool vtkTyndallSceneBuilder::LoadMedium()
     this->ProgressLabel = "cloud: " + std::to_string(n) + "^3 voxels";
     return this->Run(cloud);
   }
-  vtkNew<vtkVolumeFileReader> reader;
-  reader->SetFileName(o->GetInput());
+  vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(o->GetInput());
   if (o->IsSet("grid"))
   {
     reader->SetGridName(o->GetText("grid"));
@@ -364,10 +497,7 @@ bool vtkTyndallSceneBuilder::LoadMedium()
   {
     reader->SetComponent(static_cast<int>(o->GetNumber("component")));
   }
-  reader->SetMemoryLimit(o->GetNumber("memory-limit"));
   reader->SetFrame(static_cast<int>(o->GetNumber("frame")));
-  reader->SetRescale(!o->IsSet("no-rescale"));
-  reader->SetConvertLevelSetToFog(o->IsSet("level-set-to-fog"));
   this->ProgressLabel = std::string("loading ") + o->GetInput();
   // The reader reports its own error (one line starting with the path).
   return this->Run(reader);
@@ -433,8 +563,24 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   {
     return;
   }
-  vtkTransmittanceVolumeMapper* mapper = this->Mapper;
-  vtkParticipatingMediumProperty* medium = this->Property;
+  this->ApplyMapperOptions(this->Mapper);
+  this->ApplyMediumOptions(this->Property);
+  this->Property->SetDensityScale(o->GetNumber("density-scale"));
+  for (const AddedVolume& added : this->AddedVolumes)
+  {
+    this->ApplyMapperOptions(added.Mapper);
+    this->ApplyMediumOptions(added.Property);
+    added.Property->SetDensityScale(added.DensityScale);
+  }
+  this->ApplyDetail();
+  this->ApplyClipping();
+  this->ApplyEmission();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* mapper)
+{
+  vtkTyndallOptions* o = this->Options;
   mapper->SetTransmittanceMethod(o->GetChoice("method"));
   mapper->SetNumberOfCoefficients(static_cast<int>(o->GetNumber("coefficients")));
   mapper->SetTransmittanceMapSize(static_cast<int>(o->GetNumber("map-size")));
@@ -446,6 +592,12 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   mapper->SetTransmittanceCache(!o->GetFlag("no-cache"));
   mapper->SetTransmittanceCacheSize(static_cast<int>(o->GetNumber("cache-size")));
   mapper->SetDetailSamplesPerPixel(static_cast<int>(o->GetNumber("detail-samples")));
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyMediumOptions(vtkParticipatingMediumProperty* medium)
+{
+  vtkTyndallOptions* o = this->Options;
   medium->SetScatteringModel(o->GetChoice("model"));
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));
@@ -453,7 +605,6 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   medium->SetOctaveScattering(o->GetNumber("octave-scattering"));
   medium->SetOctaveExtinction(o->GetNumber("octave-extinction"));
   medium->SetOctaveAnisotropy(o->GetNumber("octave-anisotropy"));
-  medium->SetDensityScale(o->GetNumber("density-scale"));
   if (o->IsSet("extinction-color"))
   {
     double color[3];
@@ -462,8 +613,14 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   }
   medium->SetLightScale(
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
-  this->ApplyDetail();
-  this->ApplyClipping();
+  medium->SetSceneShadows(!o->GetFlag("no-scene-shadows"));
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyEmission()
+{
+  vtkTyndallOptions* o = this->Options;
+  vtkParticipatingMediumProperty* medium = this->Property;
   const bool emissionArray = o->IsSet("emission-array");
   medium->SetEmissionArrayName(emissionArray ? o->GetText("emission-array") : nullptr);
   medium->SetBlackbody(o->GetFlag("blackbody"));
@@ -612,7 +769,8 @@ bool vtkTyndallSceneBuilder::SetUpCamera(vtkRenderer* renderer)
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetViewAngle(o->IsSet("view-angle") ? o->GetNumber("view-angle") : kViewAngle);
   camera->SetUseHorizontalViewAngle(o->GetFlag("horizontal-view-angle"));
-  if (this->DefaultScene)
+  if (this->DefaultScene && this->AddedVolumes.empty() && !o->IsSet("position") &&
+    !o->IsSet("scale"))
   {
     camera->SetPosition(kCloudCameraPosition);
     camera->SetFocalPoint(0.0, 0.0, 0.0);
@@ -620,9 +778,9 @@ bool vtkTyndallSceneBuilder::SetUpCamera(vtkRenderer* renderer)
   }
   else
   {
-    // Fitted to the data (the image's aspect is needed for the fit).
+    // Fitted to the volumes (the image's aspect is needed for the fit).
     double bounds[6];
-    this->Image->GetBounds(bounds);
+    this->GetSceneBounds(bounds);
     renderer->SetAspect(o->GetNumber("size", 0) / o->GetNumber("size", 1), 1.0);
     camera->SetPosition(0.0, 0.0, 1.0);
     camera->SetFocalPoint(0.0, 0.0, 0.0);

@@ -8,7 +8,13 @@
  *
  * - the medium: without an input the built-in default scene, a procedural
  *   cosine-noise cloud (vtkCosineNoiseSource, Resolution^3 voxels over
- *   [-1, 1]^3); with one, the volume read by vtkVolumeFileReader;
+ *   [-1, 1]^3); with one, the volume read by vtkVolumeFileReader; placed by
+ *   --position and --scale (its vtkVolume's matrix);
+ * - further volumes (--add-volume, each with its --volume-* placement,
+ *   transfer function and density scale), each drawn by its own mapper with
+ *   the same settings, lit through the others (their maps shared), the
+ *   renderer's volumes sorted back to front; clipping, detail and emission
+ *   apply to the first volume;
  * - the transfer function: a --transfer-function file
  *   (vtkTransferFunctionFileReader), a --preset, or for data the guessed
  *   preset (vtkTransferFunctionPresets::GuessPreset), each applied by
@@ -20,7 +26,8 @@
  *   adaptive ETM, 8 coefficients, 256^2 maps;
  * - the camera: the default scene's fixed view (from (0, -0.6, 4.2) at the
  *   origin, view angle 30), or a fit to the data's bounds looking down -z,
- *   +y up; then --camera-position, --focal-point, --view-up, --view-angle;
+ *   +y up (with added volumes or a placement, a fit to all volumes, also for
+ *   the default scene); then --camera-position, --focal-point, --view-up, --view-angle;
  * - the lights: the given ones; else the default scene's low sun from the
  *   front right (warm white, intensity 0.85), or for data a white key light
  *   (intensity 0.7) from the camera's upper right in front of the data;
@@ -46,6 +53,7 @@
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkActor;
 class vtkAlgorithm;
@@ -58,6 +66,7 @@ class vtkTransferFunctionFileReader;
 class vtkTransmittanceVolumeMapper;
 class vtkTyndallOptions;
 class vtkVolume;
+class vtkVolumeFileReader;
 class vtkVolumeShadowReceiverPass;
 
 class TYNDALLAPPLICATION_EXPORT vtkTyndallSceneBuilder : public vtkObject
@@ -97,6 +106,9 @@ public:
   vtkVolume* GetVolume();
   /// The first light (the sun, the key light or the first given light).
   vtkLight* GetKeyLight();
+  /// The volumes of --add-volume, in order.
+  int GetNumberOfAddedVolumes();
+  vtkVolume* GetAddedVolume(int i);
   ///@}
 
   /// Whether the built scene is the built-in default scene.
@@ -138,6 +150,16 @@ private:
   vtkTyndallSceneBuilder(const vtkTyndallSceneBuilder&) = delete;
   void operator=(const vtkTyndallSceneBuilder&) = delete;
 
+  // The scene's placement, settings and extra volumes.
+  bool LoadAddedVolumes();
+  void GetSceneBounds(double bounds[6]);
+  vtkSmartPointer<vtkVolumeFileReader> MakeReader(const char* path);
+  void ApplyMapperOptions(vtkTransmittanceVolumeMapper* mapper);
+  void ApplyMediumOptions(vtkParticipatingMediumProperty* medium);
+  // The --emission-... options: the first volume's emission.
+  void ApplyEmission();
+  // Updates `source` with its progress and errors forwarded; false on error or no points.
+  bool Update(vtkAlgorithm* source);
   bool ReadTransferFunctionFile();
   bool LoadMedium();
   bool ChooseTransferFunction();
@@ -168,6 +190,17 @@ private:
   vtkSmartPointer<vtkActor> Surface;
   vtkSmartPointer<vtkVolumeShadowReceiverPass> GroundShadows;
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
+
+  /// A volume added with --add-volume.
+  struct AddedVolume
+  {
+    vtkSmartPointer<vtkImageData> Image;
+    vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
+    vtkSmartPointer<vtkParticipatingMediumProperty> Property;
+    vtkSmartPointer<vtkVolume> Volume;
+    double DensityScale = 1.0;
+  };
+  std::vector<AddedVolume> AddedVolumes;
 };
 
 #endif

@@ -20,8 +20,10 @@
 // above are drawn with the cache, the mapper's default, and their map
 // build column is the maps alone), a fourth a coloured extinction against
 // the grey medium (frame, map build, PSNR against the CPU reference of the
-// coloured medium); on the cloud, a last table the frame rate while dragging the
-// camera (interactive level of detail, shadows on).
+// coloured medium); on the cloud, a table of the frame rate while dragging the
+// camera (interactive level of detail, shadows on); last, several volumes: two
+// clouds side by side lit alone against the scene's shared maps (builds,
+// frame, PSNR against the CPU reference of the scene).
 //
 // Media: the built-in cloud, a dense medium, sparse blobs (six Gaussian
 // blobs, most of the box empty), and one more per --volume: a
@@ -69,6 +71,7 @@
 
 #include "TyndallTestImage.h"
 #include "TyndallTestScene.h"
+#include "TyndallTestTwoClouds.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -556,6 +559,64 @@ void MeasureInteraction(const Medium& medium, const Options& o)
             << tyndall_test::MaxDifference(tyndall_test::Grab(scene.Window), before) << "/255 |\n";
 }
 
+// Several volumes (tyndall_test::TwoClouds: two clouds side by side, the
+// left one shadowing the right), per method: the volumes lit alone
+// (SceneShadows off: each builds maps over its own box) against the scene
+// (one set of maps over both, built once and shared): map builds and their
+// seconds, frame, PSNR against the CPU reference of the scene.
+void MeasureSeveralVolumes(const Options& o)
+{
+  using M = vtkTransmittanceVolumeMapper;
+  tyndall_test::TwoClouds timing(o.Size, o.Size / 2, o.Resolution);
+  tyndall_test::TwoClouds reference(o.ReferenceSize, o.ReferenceSize / 2, o.Resolution);
+  for (tyndall_test::TwoClouds* scene : { &timing, &reference })
+  {
+    TheDisplay->Attach(scene->Window);
+    scene->Window->SetOffScreenRendering(1);
+    for (vtkTransmittanceVolumeMapper* mapper :
+      { scene->Left.Mapper.Get(), scene->Right.Mapper.Get() })
+    {
+      mapper->SetNumberOfCoefficients(o.Coefficients);
+      mapper->SetTransmittanceMapSize(o.MapSize);
+      mapper->SetLightSampleCount(o.LightSamples);
+    }
+  }
+  const vtkSmartPointer<vtkImageData> cpu = reference.Cpu();
+  std::cout << "\n## Several volumes (two clouds side by side, " << o.Size << " x " << o.Size / 2
+            << ", the left one in front of the sun)\n\n"
+            << "| method | lit | map builds | build (s) | frame (s) | PSNR vs CPU of the scene "
+               "(dB) |\n"
+            << "|---|---|---|---|---|---|\n";
+  for (int m : { M::BRUTE_FORCE, M::TFM, M::ADAPTIVE_TFM, M::ETM, M::ADAPTIVE_ETM })
+  {
+    for (bool shadows : { false, true })
+    {
+      for (tyndall_test::TwoClouds* scene : { &timing, &reference })
+      {
+        scene->SetMethod(m);
+        scene->SetSceneShadows(shadows);
+      }
+      const int left = timing.Left.Mapper->GetMapBuildCount();
+      const int right = timing.Right.Mapper->GetMapBuildCount();
+      TimeFrame(timing.Window); // compiles the variant, builds the maps
+      const int leftBuilds = timing.Left.Mapper->GetMapBuildCount() - left;
+      const int rightBuilds = timing.Right.Mapper->GetMapBuildCount() - right;
+      const double build = (leftBuilds ? timing.Left.Mapper->GetLastMapBuildTime() : 0.0) +
+        (rightBuilds ? timing.Right.Mapper->GetLastMapBuildTime() : 0.0);
+      double frame = std::numeric_limits<double>::infinity();
+      for (int f = 0; f < o.Frames; ++f)
+      {
+        timing.Left.Mapper->Modified();
+        frame = std::min(frame, TimeFrame(timing.Window));
+      }
+      std::cout << "| " << vtkTransmittanceMapMath::GetMethodName(m) << " | "
+                << (shadows ? "the scene (shared maps)" : "each alone") << " | "
+                << leftBuilds + rightBuilds << " | " << std::setprecision(4) << build << " | "
+                << frame << " | " << tyndall_test::PSNR(reference.Gpu(), cpu) << " |\n";
+    }
+  }
+}
+
 // Runs every method on one medium and prints a table; returns the frame
 // times and PSNRs by method.
 Figures RunMedium(const Medium& medium, const Options& o)
@@ -758,6 +819,7 @@ int main(int argc, char* argv[])
   const Figures& cloud = figures[0];
   const Figures& dense = figures[1];
   MeasureInteraction(media[0], o);
+  MeasureSeveralVolumes(o);
 
   using M = vtkTransmittanceVolumeMapper;
   std::cout << "\n## Bars\n\n";

@@ -28,13 +28,13 @@
 #include "vtkSmartPointer.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkTransmittanceVolumeMapper.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumetricPathTracer.h"
 
 #include "TyndallTestCheck.h"
 #include "TyndallTestImage.h"
 #include "TyndallTestScene.h"
+#include "TyndallTestTwoClouds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,110 +45,8 @@ namespace
 {
 using tyndall_test::Check;
 using M = vtkTransmittanceVolumeMapper;
-
-struct Cloud
-{
-  vtkNew<M> Mapper;
-  vtkSmartPointer<vtkParticipatingMediumProperty> Property;
-  vtkNew<vtkVolume> Volume;
-
-  Cloud(vtkImageData* data, double peakOpacity, double x)
-    : Property(tyndall_test::MakeCloudProperty(peakOpacity))
-  {
-    this->Mapper->SetInputData(data);
-    this->Mapper->JitterOff();
-    this->Mapper->SetNumberOfCoefficients(16);
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Volume->SetScale(0.8);
-    this->Volume->SetPosition(x, 0.0, 0.0);
-  }
-};
-
-struct Scene
-{
-  vtkSmartPointer<vtkImageData> Data = tyndall_test::MakeCloud(48);
-  Cloud Left{ Data, 0.9, -1.0 };
-  Cloud Right{ Data, 0.5, 1.0 };
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-
-  Scene(int width, int height)
-  {
-    this->Renderer->AddVolume(this->Left.Volume);
-    this->Renderer->AddVolume(this->Right.Volume);
-    this->Renderer->AddLight(tyndall_test::MakeSun(-1.0, 0.3, 0.2, 1.0));
-    this->Renderer->SetBackground(0.1, 0.12, 0.18);
-    // The picture of Documentation/scripts/scene_shadows_picture.py, smaller.
-    tyndall_test::SetTestCamera(this->Renderer, 24.0);
-    this->Renderer->GetActiveCamera()->SetPosition(0.0, -0.5, 4.6); // both clouds in view
-    this->Renderer->ResetCameraClippingRange();
-    // Volumes drawn back to front (VTK's way for several volumes).
-    this->Renderer->GetCullers()->InitTraversal();
-    vtkFrustumCoverageCuller::SafeDownCast(this->Renderer->GetCullers()->GetNextItem())
-      ->SetSortingStyleToBackToFront();
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(width, height);
-    this->Window->AddRenderer(this->Renderer);
-  }
-
-  void SetMethod(int method)
-  {
-    this->Left.Mapper->SetTransmittanceMethod(method);
-    this->Right.Mapper->SetTransmittanceMethod(method);
-  }
-
-  void SetSceneShadows(bool on)
-  {
-    this->Left.Property->SetSceneShadows(on);
-    this->Right.Property->SetSceneShadows(on);
-  }
-
-  vtkSmartPointer<vtkImageData> Gpu()
-  {
-    this->Window->Render();
-    return tyndall_test::Grab(this->Window);
-  }
-
-  /**
-   * The CPU reference's picture: each cloud rendered (lit through the
-   * other), composited over the background (their pixels do not overlap,
-   * so the order is exact either way).
-   */
-  vtkSmartPointer<vtkImageData> Cpu()
-  {
-    const int w = this->Window->GetSize()[0], h = this->Window->GetSize()[1];
-    vtkNew<vtkSingleScatteringReference> left, right;
-    left->Render(this->Renderer, this->Left.Volume, w, h);
-    right->Render(this->Renderer, this->Right.Volume, w, h);
-    auto picture = vtkSmartPointer<vtkImageData>::New();
-    vtkDataArray* la = left->GetOutput()->GetPointData()->GetArray("Radiance");
-    vtkDataArray* ta = left->GetOutput()->GetPointData()->GetArray("Transmittance");
-    vtkDataArray* lb = right->GetOutput()->GetPointData()->GetArray("Radiance");
-    vtkDataArray* tb = right->GetOutput()->GetPointData()->GetArray("Transmittance");
-    if (!la || !ta || !lb || !tb)
-    {
-      return picture;
-    }
-    picture->SetDimensions(w, h, 1);
-    vtkNew<vtkUnsignedCharArray> rgb;
-    rgb->SetNumberOfComponents(3);
-    rgb->SetNumberOfTuples(vtkIdType(w) * h);
-    const double* background = this->Renderer->GetBackground();
-    for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
-    {
-      const double T = ta->GetComponent(i, 0) * tb->GetComponent(i, 0);
-      for (int c = 0; c < 3; ++c)
-      {
-        const double L = la->GetComponent(i, c) + ta->GetComponent(i, 0) * lb->GetComponent(i, c);
-        const double v = std::min(1.0, std::max(0.0, L + T * background[c]));
-        rgb->SetComponent(i, c, std::floor(v * 255.0 + 0.5));
-      }
-    }
-    picture->GetPointData()->SetScalars(rgb);
-    return picture;
-  }
-};
+using Scene = tyndall_test::TwoClouds;
+using Cloud = tyndall_test::TwoClouds::Cloud;
 
 // PSNR of two 8-bit pictures over their right half (the right cloud).
 double RightHalfPSNR(vtkImageData* a, vtkImageData* b)

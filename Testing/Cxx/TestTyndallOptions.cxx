@@ -92,6 +92,31 @@ int TestTyndallOptions(int, char*[])
   o->GetLightVector(1, v);
   Check(v[0] == 1 && v[1] == 2 && v[2] == 3, "a point light's position");
 
+  // Added volumes: repeatable, the --volume-* options apply to the latest.
+  Check(Parse(o,
+          { "--add-volume", "a.vdb", "--volume-position", "1", "2", "3", "--volume-preset", "Smoke",
+            "--add-volume", "b.nii", "--volume-scale", "0.5", "--volume-density-scale", "2",
+            "--volume-transfer-function", "b.tf", "--position", "0", "0", "-1" }),
+    "two added volumes");
+  o->GetAddedVolumePosition(0, v);
+  Check(o->GetNumberOfAddedVolumes() == 2 && std::string(o->GetAddedVolumeFile(1)) == "b.nii" &&
+      v[0] == 1 && v[2] == 3 && std::string(o->GetAddedVolumePreset(0)) == "Smoke" &&
+      o->GetAddedVolumeScale(0) == 1.0 && o->GetAddedVolumeScale(1) == 0.5 &&
+      o->GetAddedVolumeDensityScale(1) == 2.0 &&
+      std::string(o->GetAddedVolumeTransferFunction(1)) == "b.tf" &&
+      std::string(o->GetAddedVolumeTransferFunction(0)).empty() &&
+      o->GetNumber("position", 2) == -1,
+    "added volumes' files, placement, presets and transfer functions");
+  ExpectError(o, { "--volume-scale", "2" },
+    "--volume-scale applies to the most recent volume: give --add-volume before it");
+  ExpectError(o, { "--add-volume", "a", "--volume-scale", "0" },
+    "--volume-scale needs a number, 0 < S < 1e+06, got '0'");
+  ExpectError(o, { "--add-volume", "a", "--volume-preset", "Fog" }, "unknown preset 'Fog'");
+  ExpectError(o,
+    { "--add-volume", "a", "--add-volume", "b", "--add-volume", "c", "--add-volume", "d" },
+    "at most 3 --add-volume");
+  Check(Parse(o, {}) && o->GetNumberOfAddedVolumes() == 0, "parsing again clears the volumes");
+
   // Errors, worded for a user.
   ExpectError(o, { "--frobnicate" }, "unknown option '--frobnicate' (see --help)");
   ExpectError(o, { "--coefficients", "17" }, "--coefficients needs an integer in 1..16, got '17'");

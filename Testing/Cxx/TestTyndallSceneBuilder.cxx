@@ -9,7 +9,9 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkCullerCollection.h"
 #include "vtkFloatArray.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -24,6 +26,7 @@
 #include "vtkTyndallOptions.h"
 #include "vtkTyndallSceneBuilder.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkXMLImageDataWriter.h"
 
 #include <cmath>
@@ -244,6 +247,38 @@ int TestTyndallSceneBuilder(int, char*[])
       double emission[3];
       file->GetProperty()->GetEmissionColor()->GetColor(1.0, emission);
       Check(emission[2] == 1.0 && emission[0] == 0.0, "the file's emission colour, not its colour");
+    }
+
+    // Several volumes: the cloud moved by --position, the blob twice beside
+    // it, each with its placement, transfer function and density; the same
+    // mapper settings; sorted back to front; the camera fits all of them.
+    vtkNew<vtkTyndallSceneBuilder> several;
+    auto scene = Build(several,
+      { "-r", "16", "--position", "-1", "0", "0", "--method", "tfm", "--add-volume",
+        "TestTyndallSceneBuilder-blob.vti", "--volume-position", "2", "0", "0", "--volume-scale",
+        "0.1", "--volume-density-scale", "3", "--volume-transfer-function",
+        "TestTyndallSceneBuilder.tf", "--add-volume", "TestTyndallSceneBuilder-blob.vti",
+        "--volume-preset", "mr", "--no-scene-shadows" });
+    Check(scene != nullptr && several->GetNumberOfAddedVolumes() == 2 &&
+        scene->GetVolumes()->GetNumberOfItems() == 3,
+      "two added volumes beside the cloud");
+    if (scene && several->GetNumberOfAddedVolumes() == 2)
+    {
+      vtkVolume* added = several->GetAddedVolume(0);
+      auto* property = vtkParticipatingMediumProperty::SafeDownCast(added->GetProperty());
+      auto* mapper = vtkTransmittanceVolumeMapper::SafeDownCast(added->GetMapper());
+      Check(several->GetVolume()->GetPosition()[0] == -1.0 && added->GetPosition()[0] == 2.0 &&
+          added->GetScale()[0] == 0.1 && property && property->GetDensityScale() == 3.0 &&
+          property->GetScalarOpacityUnitDistance() == 2.0 && !property->GetSceneShadows() &&
+          mapper && mapper->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::TFM,
+        "the added volume's placement, density, transfer function and settings");
+      scene->GetCullers()->InitTraversal();
+      auto* culler = vtkFrustumCoverageCuller::SafeDownCast(scene->GetCullers()->GetNextItem());
+      Check(culler && culler->GetSortingStyle() == VTK_CULLER_SORT_BACK_TO_FRONT,
+        "several volumes are drawn back to front");
+      double focal[3];
+      scene->GetActiveCamera()->GetFocalPoint(focal);
+      Check(focal[0] > 0.0, "the camera fits every volume (its focus moves towards the blobs)");
     }
   }
 

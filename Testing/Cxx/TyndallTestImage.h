@@ -23,6 +23,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -151,6 +152,58 @@ inline std::vector<double> RadianceValues(vtkImageData* image)
     values[i] = array->GetVariantValue(static_cast<vtkIdType>(i)).ToDouble();
   }
   return values;
+}
+
+// The 8-bit picture of several CPU reference images (grey media: one
+// "Transmittance" component) composited front to back over `background`:
+// each image's radiance attenuated by the transmittance of those in front,
+// the background by all of them (vtkTyndallReferenceScene::Composite()'s
+// rounding). Exact where the media lie one behind the other along every
+// ray, or where their pictures do not overlap. Empty when an array is missing.
+inline vtkSmartPointer<vtkImageData> CompositeFrontToBack(
+  const std::vector<vtkImageData*>& images, const double background[3])
+{
+  auto picture = vtkSmartPointer<vtkImageData>::New();
+  if (images.empty())
+  {
+    return picture;
+  }
+  const int* dims = images[0]->GetDimensions();
+  const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1];
+  std::vector<vtkDataArray*> L, T;
+  for (vtkImageData* image : images)
+  {
+    L.push_back(image->GetPointData()->GetArray("Radiance"));
+    T.push_back(image->GetPointData()->GetArray("Transmittance"));
+    if (!L.back() || !T.back() || L.back()->GetNumberOfTuples() != n ||
+      T.back()->GetNumberOfTuples() != n)
+    {
+      return picture;
+    }
+  }
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double color[3] = { 0.0, 0.0, 0.0 }, transmittance = 1.0;
+    for (size_t k = 0; k < images.size(); ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        color[c] += transmittance * L[k]->GetComponent(i, c);
+      }
+      transmittance *= T[k]->GetComponent(i, 0);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = std::min(1.0, std::max(0.0, color[c] + transmittance * background[c]));
+      rgb->SetComponent(i, c, std::floor(v * 255.0 + 0.5));
+    }
+  }
+  picture->SetDimensions(dims[0], dims[1], 1);
+  picture->GetPointData()->SetScalars(rgb);
+  return picture;
 }
 
 // The root mean square difference of two arrays of the same size.
