@@ -198,6 +198,10 @@ int TestTyndallOptions(int, char*[])
     "a twice from the default scene's 0.3 (the table's first default): 0.5");
   viewer->ApplyKey('d');
   Check(std::abs(viewer->GetNumber("density-scale") - 1.25) < 1e-12, "d: density x 1.25");
+  Check(std::string(viewer->ApplyKey('v')) == "no-scene-shadows" &&
+      viewer->GetFlag("no-scene-shadows") && viewer->ApplyKey('v') &&
+      !viewer->GetFlag("no-scene-shadows"),
+    "v, v: scene shadows off, then on again");
   viewer->ApplyKey('j');
   Check(viewer->GetFlag("no-jitter"), "j: jitter off");
   viewer->ApplyKey('j');
