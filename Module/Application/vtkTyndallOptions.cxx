@@ -72,6 +72,12 @@ struct Spec
   double Step = 0.0;
 };
 
+// The groups whose options repeat (one heading in --help each).
+constexpr const char* LightsGroup =
+  "Lights (repeatable, up to 8 are used; any of them replaces the default light)";
+constexpr const char* VolumesGroup =
+  "Several volumes (repeatable, up to 3; each is lit through the others)";
+
 // The table. Help texts wrap at 80 columns; "\n" starts a new line.
 const Spec kOptions[] = {
   { "grid", "", Kind::Text, 0, 0, false, "", "NAME", "", "Input", Both,
@@ -95,30 +101,23 @@ const Spec kOptions[] = {
     Both, "translation of the volume (the input or the built-in cloud) in world units" },
   { "scale", "", Kind::Number, 0, Huge, true, "", "S", "1", "Input", Both,
     "scale of the volume about the world origin, > 0" },
-  { "add-volume", "", Kind::Volume, 0, 0, false, "", "FILE", "",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+  { "add-volume", "", Kind::Volume, 0, 0, false, "", "FILE", "", VolumesGroup, Both,
     "another volume, read like the input and drawn with the same method, lights and medium "
     "settings; the --volume-* options after it set it up (clipping, detail and emission apply "
     "to the first volume only)" },
-  { "no-scene-shadows", "", Kind::Flag, 0, 0, false, "", "", "",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+  { "no-scene-shadows", "", Kind::Flag, 0, 0, false, "", "", "", VolumesGroup, Both,
     "light each volume as if it were alone (vtkParticipatingMediumProperty::SceneShadows off)",
     KeyMode::Toggle, "v" },
   { "volume-position", "", Kind::VolumeSet, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 0",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
-    "translation of the most recent --add-volume" },
-  { "volume-scale", "", Kind::VolumeSet, 0, Huge, true, "", "S", "1",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+    VolumesGroup, Both, "translation of the most recent --add-volume" },
+  { "volume-scale", "", Kind::VolumeSet, 0, Huge, true, "", "S", "1", VolumesGroup, Both,
     "scale of the most recent --add-volume about the world origin, > 0" },
-  { "volume-density-scale", "", Kind::VolumeSet, 0, Huge, false, "", "S", "1",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+  { "volume-density-scale", "", Kind::VolumeSet, 0, Huge, false, "", "S", "1", VolumesGroup, Both,
     "density scale of the most recent --add-volume" },
-  { "volume-preset", "", Kind::VolumeSet, 0, 0, false, "", "NAME", "",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
+  { "volume-preset", "", Kind::VolumeSet, 0, 0, false, "", "NAME", "", VolumesGroup, Both,
     "transfer-function preset of the most recent --add-volume (default: guessed from its data)" },
-  { "volume-transfer-function", "", Kind::VolumeSet, 0, 0, false, "", "FILE", "",
-    "Several volumes (repeatable, up to 3; each is lit through the others)", Both,
-    "transfer-function file of the most recent --add-volume" },
+  { "volume-transfer-function", "", Kind::VolumeSet, 0, 0, false, "", "FILE", "", VolumesGroup,
+    Both, "transfer-function file of the most recent --add-volume" },
   { "method", "", Kind::Choice, 0, 0, false, "none|brute-force|tfm|adaptive-tfm|etm|adaptive-etm",
     "M", "adaptive-etm", "Scattering", Both, "light transmittance", KeyMode::Choose, "123456" },
   { "model", "", Kind::Choice, 0, 0, false, "emission-absorption|single-scattering", "M",
@@ -229,17 +228,14 @@ const Spec kOptions[] = {
   { "horizontal-view-angle", "", Kind::Flag, 0, 0, false, "", "", "", "Camera", Both,
     "the view angle is horizontal (default: vertical)" },
   { "light-direction", "", Kind::Light, -Coordinate, Coordinate, false, "", "X Y Z", "",
-    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+    LightsGroup, Both,
     "a directional light travelling along (X, Y, Z), i.e. coming from -(X, Y, Z): 0 -1 0 "
     "shines downwards" },
-  { "light-position", "", Kind::Light, -Coordinate, Coordinate, false, "", "X Y Z", "",
-    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
-    "a point light at (X, Y, Z), no fall-off" },
-  { "light-color", "", Kind::LightSet, 0, Huge, false, "", "R G B", "1 1 1",
-    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+  { "light-position", "", Kind::Light, -Coordinate, Coordinate, false, "", "X Y Z", "", LightsGroup,
+    Both, "a point light at (X, Y, Z), no fall-off" },
+  { "light-color", "", Kind::LightSet, 0, Huge, false, "", "R G B", "1 1 1", LightsGroup, Both,
     "colour of the most recent light, >= 0" },
-  { "light-intensity", "", Kind::LightSet, 0, Huge, false, "", "I", "1",
-    "Lights (repeatable, up to 8 are used; any of them replaces the default light)", Both,
+  { "light-intensity", "", Kind::LightSet, 0, Huge, false, "", "I", "1", LightsGroup, Both,
     "intensity of the most recent light" },
   { "size", "-s", Kind::Pair, 16, 8192, false, "", "W H", "512 512", "Image", Render,
     "image size in pixels" },
