@@ -108,6 +108,9 @@ const Spec kOptions[] = {
   { "no-scene-shadows", "", Kind::Flag, 0, 0, false, "", "", "", VolumesGroup, Both,
     "light each volume as if it were alone (vtkParticipatingMediumProperty::SceneShadows off)",
     KeyMode::Toggle, "v" },
+  { "no-scene-compositing", "", Kind::Flag, 0, 0, false, "", "", "", VolumesGroup, Both,
+    "draw volumes whose boxes overlap as layers, each by its own mapper, instead of as one "
+    "medium (vtkParticipatingMediumProperty::SceneCompositing off): for comparison" },
   { "volume-position", "", Kind::VolumeSet, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 0",
     VolumesGroup, Both, "translation of the most recent --add-volume" },
   { "volume-scale", "", Kind::VolumeSet, 0, Huge, true, "", "S", "1", VolumesGroup, Both,

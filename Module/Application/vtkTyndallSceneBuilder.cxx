@@ -614,6 +614,7 @@ void vtkTyndallSceneBuilder::ApplyMediumOptions(vtkParticipatingMediumProperty* 
   medium->SetLightScale(
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
   medium->SetSceneShadows(!o->GetFlag("no-scene-shadows"));
+  medium->SetSceneCompositing(!o->GetFlag("no-scene-compositing"));
 }
 
 //------------------------------------------------------------------------------

@@ -73,6 +73,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetBlackbody(medium->Blackbody);
   this->SetTemperatureScale(medium->TemperatureScale);
   this->SetSceneShadows(medium->SceneShadows);
+  this->SetSceneCompositing(medium->SceneCompositing);
   this->SetDetailNoise(medium->DetailNoise);
 }
 
@@ -114,5 +115,6 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Blackbody: " << this->Blackbody << "\n";
   os << indent << "TemperatureScale: " << this->TemperatureScale << "\n";
   os << indent << "SceneShadows: " << (this->SceneShadows ? "On" : "Off") << "\n";
+  os << indent << "SceneCompositing: " << (this->SceneCompositing ? "On" : "Off") << "\n";
   os << indent << "DetailNoise: " << this->DetailNoise << "\n";
 }

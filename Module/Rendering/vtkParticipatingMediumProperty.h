@@ -221,6 +221,28 @@ public:
   vtkBooleanMacro(SceneShadows, bool);
   ///@}
 
+  ///@{
+  /**
+   * Whether volumes whose boxes overlap are drawn as one medium (On, the
+   * default): where the world boxes of several volumes lit through each
+   * other (SceneShadows on for each) overlap, the first of them in the
+   * renderer's order casts the camera rays through all of them, summing
+   * their extinctions and mixing their colours and emission by extinction,
+   * and the others draw nothing of their own; the picture is then exact
+   * where they interpenetrate, which drawing each volume as a layer is not
+   * (Documentation/rendering-model.md, "Several volumes"). Only volumes
+   * with this switch on, the same lighting settings (scattering model,
+   * anisotropy, light scale, ambient, octaves, emission) and no missing data,
+   * clipping, cropping, detail, coloured extinction or emission array are
+   * drawn together; the others are drawn as layers. Off: this volume is
+   * always drawn by its own mapper. Read by the GPU mapper and the CPU
+   * reference.
+   */
+  vtkSetMacro(SceneCompositing, bool);
+  vtkGetMacro(SceneCompositing, bool);
+  vtkBooleanMacro(SceneCompositing, bool);
+  ///@}
+
   /**
    * Copies vtkVolumeProperty's settings and, when `p` is a
    * vtkParticipatingMediumProperty, these (the emission colour is shared,
@@ -254,6 +276,7 @@ protected:
   bool Blackbody = false;
   double TemperatureScale = 1.0;
   bool SceneShadows = true;
+  bool SceneCompositing = true;
   vtkCosineNoise* DetailNoise = nullptr;
 
 private:

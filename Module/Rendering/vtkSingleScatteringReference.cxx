@@ -170,15 +170,15 @@ private:
     transmittance[0] = transmittance[1] = transmittance[2] = 1.0;
     // Unproject the pixel centre at the near and far planes.
     double origin[3], w[3], rayLength;
-    if (!s.CameraRay(i, j, origin, w, rayLength))
+    if (s.DrawnByAnother || !s.CameraRay(i, j, origin, w, rayLength))
     {
-      return;
+      return; // nothing, or drawn by the first volume of its camera group
     }
     double o[3], d[3];
     s.ToIndexPoint(origin, o);
     s.ToIndexDirection(w, d);
     double t0 = 0.0, t1 = rayLength;
-    if (!Scene::ClipToBox(o, d, s.BoxLow, s.BoxHigh, t0, t1))
+    if (!s.ClipToCameraBoxes(o, d, t0, t1))
     {
       return;
     }
@@ -192,10 +192,8 @@ private:
     {
       const double t = t0 + (m + 0.5) * dt;
       const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-      double sigma = 0.0;
-      int k = 0;
-      double f = 0.0;
-      const bool dense = this->Extinction(p, sigma, k, f);
+      double sigma = 0.0, color[3], emission[3];
+      const bool dense = this->CameraMedium(p, sigma, color, emission);
       double sigmaC[3]; // per channel
       for (int c = 0; c < 3; ++c)
       {
@@ -216,7 +214,7 @@ private:
         continue;
       }
       double J[3];
-      this->Source(k, f, origin, w, t, p, J);
+      this->Source(color, emission, origin, w, t, p, J);
       // The step's medium is constant: integrate it exactly.
       for (int c = 0; c < 3; ++c)
       {
@@ -246,14 +244,78 @@ private:
     }
   }
 
-  // The source term J at the table position (k, f), at the distance t along
-  // the camera ray origin + t w (index point p).
-  void Source(int k, double f, const double origin[3], const double w[3], double t,
-    const double p[3], double J[3]) const
+  // What the camera rays see at the index point p: the extinction of this
+  // medium (inside its box) plus its camera guests', with their colours and
+  // emission colours (per unit extinction; zero without emission) mixed in
+  // proportion to their extinctions (GPU twin: tyndallCameraMedium()).
+  // False for empty medium.
+  bool CameraMedium(const double p[3], double& sigma, double color[3], double emission[3]) const
   {
     const Scene& s = *this->S;
-    double color[3];
-    vtkTyndallTransferTable::RGBAt(s.Table->Albedo, k, f, color);
+    std::fill(color, color + 3, 0.0);
+    std::fill(emission, emission + 3, 0.0);
+    const bool emits = s.HasEmission && !s.EmissionArray;
+    sigma = 0.0;
+    int k;
+    double f;
+    // Alone, the ray was clipped to the box: its samples lie inside.
+    const bool own = (!s.CameraGuests || Scene::InsideBox(p, s.BoxLow, s.BoxHigh)) &&
+      this->Extinction(p, sigma, k, f);
+    if (own)
+    {
+      AddColors(*s.Table, k, f, sigma, emits, color, emission);
+    }
+    else
+    {
+      sigma = 0.0;
+    }
+    for (const Scene::Guest& g : s.Guests)
+    {
+      double q[3], sg;
+      if (g.Camera && (g.ToGuest(p, q), g.Sample(q, sg, k, f)) && sg > 0.0)
+      {
+        sigma += sg;
+        AddColors(*g.Table, k, f, sg, emits, color, emission);
+      }
+    }
+    if (!(sigma > 0.0))
+    {
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      color[c] /= sigma;
+      emission[c] /= sigma;
+    }
+    return true;
+  }
+
+  // Adds weight x the colour (and the emission colour when `emits`) at the
+  // table position (k, f) of `table`.
+  static void AddColors(const vtkTyndallTransferTable& table, int k, double f, double weight,
+    bool emits, double color[3], double emission[3])
+  {
+    double c[3];
+    vtkTyndallTransferTable::RGBAt(table.Albedo, k, f, c);
+    double e[3] = { 0.0, 0.0, 0.0 };
+    if (emits)
+    {
+      vtkTyndallTransferTable::RGBAt(table.Emission, k, f, e);
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      color[i] += weight * c[i];
+      emission[i] += weight * e[i];
+    }
+  }
+
+  // The source term J of a sample of colour (or albedo) `color` and emission
+  // colour `emission` at the distance t along the camera ray origin + t w
+  // (index point p).
+  void Source(const double color[3], const double emission[3], const double origin[3],
+    const double w[3], double t, const double p[3], double J[3]) const
+  {
+    const Scene& s = *this->S;
     if (!s.SingleScattering)
     {
       std::copy(color, color + 3, J);
@@ -269,16 +331,7 @@ private:
     }
     for (int c = 0; c < 3; ++c)
     {
-      J[c] = color[c] * in[c];
-    }
-    if (s.HasEmission && !s.EmissionArray)
-    {
-      double e[3];
-      vtkTyndallTransferTable::RGBAt(s.Table->Emission, k, f, e);
-      for (int c = 0; c < 3; ++c)
-      {
-        J[c] += s.EmissionScale * e[c];
-      }
+      J[c] = color[c] * in[c] + s.EmissionScale * emission[c];
     }
   }
 };
@@ -342,18 +395,21 @@ bool SetUpSteps(const vtkTyndallSceneReader& tyndall, double stepSize, double li
   double threshold, Scene& scene, vtkObject* reporter)
 {
   const vtkTyndallGridMedium& medium = tyndall.GetMedium();
-  const double minVoxel = medium.GetMinimumWorldSpacing();
+  const double minVoxel = std::min(medium.GetMinimumWorldSpacing(),
+    scene.CameraGuests ? scene.CameraGuestSpacing : medium.GetMinimumWorldSpacing());
   const double wavelength =
     scene.Detail ? scene.Detail->GetShortestWavelength(medium.GetWorldToIndex()) : 1e30;
   scene.Step = stepSize > 0.0 ? stepSize : std::min(minVoxel, wavelength / 2.0) / 4.0;
   scene.LightStep = lightStepSize > 0.0 ? lightStepSize : scene.Step;
   if (!(scene.Step > 0.0) || !(scene.LightStep > 0.0) ||
-    medium.GetWorldDiagonal() / std::min(scene.Step, scene.LightStep) > kMaxStepsPerRay)
+    (medium.GetWorldDiagonal() + scene.GuestDiagonals) / std::min(scene.Step, scene.LightStep) >
+      kMaxStepsPerRay)
   {
     vtkErrorWithObjectMacro(reporter, << "Render: the step " << scene.Step << " (light step "
                                       << scene.LightStep << ") would take more than "
                                       << kMaxStepsPerRay
-                                      << " steps across the volume; set a larger StepSize / "
+                                      << " steps across the volume and its guests; set a larger "
+                                         "StepSize / "
                                          "LightStepSize.");
     return false;
   }

@@ -92,13 +92,20 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   }
 
   const std::vector<const vtkTyndallGridMedium*>& guests = scene.GetGuests();
+  const std::vector<int>& cameraGuests = scene.GetCameraGuests();
   this->Guests.clear();
   for (size_t g = 0; g < guests.size() && g < guestTextures.size(); ++g)
   {
     Guest guest;
     guest.Medium = guests[g];
     guest.Textures = guestTextures[g];
+    guest.Camera = std::find(cameraGuests.begin(), cameraGuests.end(), static_cast<int>(g)) !=
+      cameraGuests.end();
     WorldToBoxMatrix(*guest.Medium, guest.WorldToBox);
+    if (guest.Camera)
+    {
+      this->MinimumSpacing = std::min(this->MinimumSpacing, guest.Medium->GetMinimumWorldSpacing());
+    }
     this->Guests.push_back(guest);
   }
   this->PrepareMapBox();
@@ -130,46 +137,78 @@ void vtkTransmittanceFrame::PrepareMapBox()
 {
   std::copy(this->Corners, this->Corners + 24, this->MapCorners);
   std::copy(this->WorldToBox, this->WorldToBox + 16, this->WorldToMapBox);
-  if (this->Guests.empty())
+  std::copy(this->WorldToBox, this->WorldToBox + 16, this->WorldToCameraBox);
+  std::copy(this->BoxToWorld, this->BoxToWorld + 16, this->CameraBoxToWorld);
+  std::copy(this->BoxExtents, this->BoxExtents + 3, this->CameraBoxExtents);
+  if (!this->Guests.empty())
   {
-    return; // the medium's own box, exactly
+    double extents[3];
+    float boxToWorld[16];
+    this->FitAxisBox(false, this->MapCorners, this->WorldToMapBox, boxToWorld, extents);
   }
+  if (this->HasCameraGuests())
+  {
+    double corners[24];
+    this->FitAxisBox(
+      true, corners, this->WorldToCameraBox, this->CameraBoxToWorld, this->CameraBoxExtents);
+    this->Diagonal = vtkMath::Norm(this->CameraBoxExtents);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceFrame::HasCameraGuests() const
+{
+  return std::any_of(
+    this->Guests.begin(), this->Guests.end(), [](const Guest& g) { return g.Camera; });
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::FitAxisBox(bool cameraGuestsOnly, double corners[24],
+  float worldToBox[16], float boxToWorld[16], double extents[3]) const
+{
   double low[3], high[3];
   for (int a = 0; a < 3; ++a)
   {
     low[a] = high[a] = this->Corners[a];
   }
-  auto extend = [&low, &high](const double corners[24])
+  auto extend = [&low, &high](const double c[24])
   {
     for (int i = 0; i < 8; ++i)
     {
       for (int a = 0; a < 3; ++a)
       {
-        low[a] = std::min(low[a], corners[3 * i + a]);
-        high[a] = std::max(high[a], corners[3 * i + a]);
+        low[a] = std::min(low[a], c[3 * i + a]);
+        high[a] = std::max(high[a], c[3 * i + a]);
       }
     }
   };
   extend(this->Corners);
   for (const Guest& guest : this->Guests)
   {
-    double corners[24];
-    guest.Medium->GetWorldCorners(corners);
-    extend(corners);
+    if (guest.Camera || !cameraGuestsOnly)
+    {
+      double c[24];
+      guest.Medium->GetWorldCorners(c);
+      extend(c);
+    }
   }
-  std::fill(this->WorldToMapBox, this->WorldToMapBox + 16, 0.0f);
+  std::fill(worldToBox, worldToBox + 16, 0.0f);
+  std::fill(boxToWorld, boxToWorld + 16, 0.0f);
   for (int a = 0; a < 3; ++a)
   {
     const double size = std::max(high[a] - low[a], 1e-30);
-    this->WorldToMapBox[5 * a] = static_cast<float>(1.0 / size);
-    this->WorldToMapBox[12 + a] = static_cast<float>(-low[a] / size);
+    worldToBox[5 * a] = static_cast<float>(1.0 / size);
+    worldToBox[12 + a] = static_cast<float>(-low[a] / size);
+    boxToWorld[5 * a] = static_cast<float>(size);
+    boxToWorld[12 + a] = static_cast<float>(low[a]);
+    extents[a] = size;
   }
-  this->WorldToMapBox[15] = 1.0f;
+  worldToBox[15] = boxToWorld[15] = 1.0f;
   for (int i = 0; i < 8; ++i)
   {
     for (int a = 0; a < 3; ++a)
     {
-      this->MapCorners[3 * i + a] = ((i >> a) & 1) ? high[a] : low[a];
+      corners[3 * i + a] = ((i >> a) & 1) ? high[a] : low[a];
     }
   }
 }
@@ -207,6 +246,11 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
   variant.Chromatic = this->Medium && this->Medium->GetChromatic();
   variant.Guests = static_cast<int>(this->Guests.size());
+  variant.CameraGuests = this->HasCameraGuests();
+  if (variant.CameraGuests)
+  {
+    variant.SkipEmpty = false; // the blocks are this medium's alone
+  }
   return variant;
 }
 
@@ -265,6 +309,7 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
   program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
+  program->SetUniformMatrix4x4("worldToCameraBox", const_cast<float*>(this->WorldToCameraBox));
   this->SetClipUniforms(program);
   this->SetGuestUniforms(program);
   if (vtkTextureObject* emission = this->Textures->GetEmissionTexture())
@@ -364,7 +409,7 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   }
   int volumes[kMaxGuests] = {}, tables[kMaxGuests] = {};
   float toBox[16 * kMaxGuests] = {}, scale[kMaxGuests][3] = {}, shift[kMaxGuests][3] = {},
-                   toTable[kMaxGuests][2] = {}, density[kMaxGuests] = {};
+                   toTable[kMaxGuests][2] = {}, density[kMaxGuests] = {}, camera[kMaxGuests] = {};
   for (int g = 0; g < n; ++g)
   {
     const Guest& guest = this->Guests[g];
@@ -377,6 +422,7 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
     toTable[g][0] = static_cast<float>(table.TextureScale());
     toTable[g][1] = static_cast<float>(table.TextureShift());
     density[g] = static_cast<float>(guest.Medium->GetDensityScale());
+    camera[g] = guest.Camera ? 1.0f : 0.0f;
   }
   program->SetUniform1iv("guestVolume", n, volumes);
   program->SetUniform1iv("guestTransfer", n, tables);
@@ -385,6 +431,10 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   program->SetUniform3fv("guestTexShift", n, shift);
   program->SetUniform2fv("guestScalarToTable", n, toTable);
   program->SetUniform1fv("guestDensity", n, density);
+  if (this->HasCameraGuests())
+  {
+    program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -70,6 +70,11 @@ public:
     const vtkTransmittanceMediumTextures* Textures = nullptr;
     /// World -> its box as [0, 1]^3, column-major.
     float WorldToBox[16];
+    /**
+     * Whether the camera rays sample it too (vtkTyndallSceneReader::
+     * GetCameraGuests(): it overlaps this medium and is drawn with it).
+     */
+    bool Camera = false;
   };
 
   /**
@@ -110,6 +115,9 @@ public:
   /// Whether some light uses a map method.
   bool NeedsMaps() const;
 
+  /// Whether the camera rays sample guests too (some Guest::Camera).
+  bool HasCameraGuests() const;
+
   /**
    * The camera-ray step: SampleDistance, or half the smallest spacing (with
    * procedural detail, at most a quarter of its shortest wavelength).
@@ -137,7 +145,9 @@ public:
   int MapSets = 1;
   std::vector<Light> Lights;
   double Corners[24];
+  /// The world diagonal of the camera rays' box (CameraBoxExtents).
   double Diagonal = 1.0;
+  /// The smallest world spacing of the medium and its camera guests.
   double MinimumSpacing = 1.0;
   /// World -> the box as [0, 1]^3, column-major for glUniformMatrix.
   float WorldToBox[16];
@@ -153,6 +163,15 @@ public:
    */
   double MapCorners[24];
   float WorldToMapBox[16];
+  /**
+   * The camera rays' box: the medium's box, or with camera guests the
+   * world-axis box around the medium's and theirs. World -> [0, 1]^3, its
+   * inverse (column-major) and its world edge lengths; the transmittance
+   * cache's lattice spans it.
+   */
+  float WorldToCameraBox[16];
+  float CameraBoxToWorld[16];
+  double CameraBoxExtents[3] = { 1.0, 1.0, 1.0 };
   /// The procedural detail's shortest wavelength in world units (1e30: no detail).
   double DetailWavelength = 1e30;
 
@@ -161,6 +180,8 @@ private:
   void SetClipUniforms(vtkShaderProgram* program) const;
   void SetGuestUniforms(vtkShaderProgram* program) const;
   void PrepareMapBox();
+  void FitAxisBox(bool cameraGuestsOnly, double corners[24], float worldToBox[16],
+    float boxToWorld[16], double extents[3]) const;
 };
 
 #endif

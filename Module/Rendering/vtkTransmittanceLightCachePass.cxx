@@ -43,11 +43,13 @@ bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
     return false;
   }
   int size[3];
-  LatticeSize(frame.BoxExtents, frame.Integrator.CacheSize, size);
+  LatticeSize(frame.CameraBoxExtents, frame.Integrator.CacheSize, size);
   const int lights = static_cast<int>(frame.Lights.size());
   const double* color = frame.Medium->GetExtinctionColor();
+  const float* box = frame.CameraBoxToWorld;
   if (this->CacheTexture && mapBuild == this->BuiltFromMaps && lights == this->Lights &&
-    std::equal(size, size + 3, this->Size) && std::equal(color, color + 3, this->Color))
+    std::equal(size, size + 3, this->Size) && std::equal(color, color + 3, this->Color) &&
+    std::equal(box, box + 16, this->BoxToWorld))
   {
     return true;
   }
@@ -62,6 +64,7 @@ bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
   timer->StopTimer();
   this->BuiltFromMaps = mapBuild;
   std::copy(color, color + 3, this->Color);
+  std::copy(box, box + 16, this->BoxToWorld);
   this->LastBuildTime = timer->GetElapsedTime();
   ++this->BuildCount;
   return true;
@@ -127,7 +130,7 @@ bool vtkTransmittanceLightCachePass::Build(
   frame.SetMapUniforms(program, maps, mapSlices);
   const float size[3] = { float(this->Size[0]), float(this->Size[1]), float(this->Size[2]) };
   program->SetUniform3f("lightCacheSize", size);
-  program->SetUniformMatrix4x4("boxToWorld", const_cast<float*>(frame.BoxToWorld));
+  program->SetUniformMatrix4x4("boxToWorld", const_cast<float*>(frame.CameraBoxToWorld));
 
   if (!this->Framebuffer)
   {

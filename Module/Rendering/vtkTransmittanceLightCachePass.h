@@ -1,6 +1,6 @@
 /**
  * @class   vtkTransmittanceLightCachePass
- * @brief   caches every map light's transmittance on a lattice over the volume's box
+ * @brief   caches every map light's transmittance on a lattice over the camera rays' box
  *
  * After vtkTransmittanceMapPass, evaluates each map light's transmittance
  * (the same map lookup and reconstruction the camera rays would do per
@@ -11,7 +11,9 @@
  * instead of two or three map fetches, a ray-box intersection and a series
  * reconstruction per sample.
  *
- * The lattice's longest side has `size` texels (the frame's
+ * The lattice spans the camera rays' box (vtkTransmittanceFrame::
+ * CameraBoxToWorld: the medium's box, or the box around it and the guests
+ * drawn with it). Its longest side has `size` texels (the frame's
  * Settings::CacheSize), the others in proportion to the box's world
  * extents, at least 2; its outer texels lie on the box's faces. The lights'
  * lattices are stacked along the third axis. The cache is rebuilt whenever
@@ -104,6 +106,7 @@ private:
   vtkMTimeType BuiltFromMaps = 0;      // the map build the cache holds; 0: none
   bool Chromatic = false;              // per-channel texels (RGBA)
   double Color[3] = { 1.0, 1.0, 1.0 }; // the extinction colour they were built for
+  float BoxToWorld[16] = {};           // the camera box the lattice spans
   int BuildCount = 0;
   double LastBuildTime = 0.0;
 };

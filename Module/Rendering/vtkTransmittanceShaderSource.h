@@ -101,6 +101,8 @@ public:
      * at most vtkTyndallSceneReader::MaximumNumberOfGuests; 0: none.
      */
     int Guests = 0;
+    /// The camera rays sample some guests too (vtkTransmittanceFrame::Guest::Camera).
+    bool CameraGuests = false;
     /// Extinction per channel: light and view transmittances per channel.
     bool Chromatic = false;
     /// Transmittance-function maps of a coloured extinction: one set per channel.

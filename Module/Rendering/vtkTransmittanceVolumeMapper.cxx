@@ -128,6 +128,8 @@ public:
   // Whether the last Render() went through every pass: the lights, methods,
   // frusta and maps it reports describe that render, or nothing.
   bool Complete = false;
+  /// The last Render() read the scene and has its maps (also when another volume drew it).
+  bool Lit = false;
   // Interactive level of detail: the last camera-ray cost per full-size
   // pixel (0: not measured yet), time and reduction.
   double SecondsPerPixel = 0.0;
@@ -388,6 +390,7 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& in = *this->Internals;
   in.Complete = false;
+  in.Lit = false;
   in.Textures->ReleaseGraphicsResources(window);
   in.Occlusion->ReleaseGraphicsResources(window);
   in.Maps->ReleaseGraphicsResources(window);
@@ -518,6 +521,7 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     return;
   }
   in.Complete = false;
+  in.Lit = false;
   if (!in.PrepareFrame(this, renderer, volume, window))
   {
     return;
@@ -530,6 +534,11 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     inputs.OcclusionSlices = in.Occlusion->GetSlices();
   }
   vtkTransmittanceMapPass* maps = in.UpdateMaps(this);
+  in.Lit = maps != nullptr;
+  if (maps && in.Scene.GetDrawnBy())
+  {
+    return; // drawn by the first volume of its camera group, maps shared
+  }
   if (!maps || !in.Depth->Render(in.Frame, this))
   {
     return;
@@ -605,7 +614,7 @@ double vtkTransmittanceVolumeMapper::GetLastRayCastTime()
 int vtkTransmittanceVolumeMapper::GetNumberOfRenderedLights()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete ? static_cast<int>(in.Frame.Lights.size()) : 0;
+  return in.Lit ? static_cast<int>(in.Frame.Lights.size()) : 0;
 }
 
 //------------------------------------------------------------------------------

@@ -44,9 +44,14 @@
  * and built once for all of them (by the first volume drawn; the others read
  * its maps when their settings match), and rebuilt when any of them changes.
  * Draw such volumes back to front (the renderer's vtkFrustumCoverageCuller,
- * SetSortingStyleToBackToFront()); volumes that interpenetrate along a camera
- * ray are composited as whole layers (Documentation/rendering-model.md,
- * "Several volumes").
+ * SetSortingStyleToBackToFront()). Volumes whose boxes overlap are drawn as
+ * one medium (vtkParticipatingMediumProperty::SceneCompositing, on by
+ * default): the first of them in the renderer's order casts the camera rays
+ * through all of them and the others draw nothing of their own (their
+ * lights and maps are still reported: GetNumberOfRenderedLights(),
+ * GetTransmittanceMap(); their ray-cast figures, such as
+ * GetLastRayCastTime(), are 0) (Documentation/rendering-model.md, "Several
+ * volumes").
  *
  * Directional lights get an orthographic map fitted to the volume's bounds,
  * positional (point and spot) lights a perspective one. A positional light

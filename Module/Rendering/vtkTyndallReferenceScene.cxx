@@ -12,6 +12,7 @@
 #include "vtkTyndallSceneReader.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -45,24 +46,23 @@ double PositionalFactor(
   return factor;
 }
 
-// A guest's extinction at its own field index point q: its sampler through its table.
+// The ray p + t d of a medium's index space in `guest`'s: o + t dg.
+void GuestRay(const vtkTyndallReferenceScene::Guest& guest, const double p[3], const double d[3],
+  double o[3], double dg[3])
+{
+  guest.ToGuest(p, o);
+  for (int r = 0; r < 3; ++r)
+  {
+    dg[r] = guest.M[r][0] * d[0] + guest.M[r][1] * d[1] + guest.M[r][2] * d[2];
+  }
+}
+
+// A guest's scalar at its own field index point q (NaN at missing data).
 template <typename T>
-std::function<double(const double q[3])> GuestExtinction(const vtkTyndallGridMedium& medium)
+std::function<double(const double q[3])> GuestScalar(const vtkTyndallGridMedium& medium)
 {
   const vtkTyndallGridMedium::Sampler<T> sampler(medium);
-  const vtkTyndallGridMedium* m = &medium;
-  return [sampler, m](const double q[3])
-  {
-    const double s = sampler.Scalar(q);
-    if (std::isnan(s))
-    {
-      return 0.0;
-    }
-    int k;
-    double f;
-    m->GetTable().Locate(s, k, f);
-    return m->GetDensityScale() * m->GetTable().ExtinctionAt(k, f);
-  };
+  return [sampler](const double q[3]) { return sampler.Scalar(q); };
 }
 }
 
@@ -94,9 +94,25 @@ void vtkTyndallReferenceScene::SetUpGuests(const vtkTyndallSceneReader& reader)
 {
   this->Guests.clear();
   const double* toWorld = reader.GetMedium().GetIndexToWorld();
+  const std::vector<int>& camera = reader.GetCameraGuests();
+  this->CameraGuests = false;
+  this->GuestDiagonals = 0.0;
+  this->CameraGuestSpacing = std::numeric_limits<double>::infinity();
+  this->DrawnByAnother = reader.GetDrawnBy() != nullptr;
   for (const vtkTyndallGridMedium* medium : reader.GetGuests())
   {
     Guest g;
+    g.Camera = std::find(camera.begin(), camera.end(), static_cast<int>(this->Guests.size())) !=
+      camera.end();
+    if (g.Camera)
+    {
+      this->CameraGuests = true;
+      this->CameraGuestSpacing =
+        std::min(this->CameraGuestSpacing, medium->GetMinimumWorldSpacing());
+    }
+    this->GuestDiagonals += medium->GetWorldDiagonal();
+    g.DensityScale = medium->GetDensityScale();
+    g.Table = &medium->GetTable();
     // This medium's index -> world -> the guest's index.
     double m[16];
     vtkMatrix4x4::Multiply4x4(medium->GetWorldToIndex(), toWorld, m);
@@ -112,13 +128,65 @@ void vtkTyndallReferenceScene::SetUpGuests(const vtkTyndallSceneReader& reader)
     }
     switch (medium->GetScalars()->GetDataType())
     {
-      vtkTemplateMacro(g.Extinction = GuestExtinction<VTK_TT>(*medium));
+      vtkTemplateMacro(g.Scalar = GuestScalar<VTK_TT>(*medium));
     }
-    if (g.Extinction)
+    this->Guests.push_back(std::move(g)); // every scalar type is one of vtkTemplateMacro's
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallReferenceScene::Guest::ToGuest(const double p[3], double q[3]) const
+{
+  for (int r = 0; r < 3; ++r)
+  {
+    q[r] = this->C[r] + this->M[r][0] * p[0] + this->M[r][1] * p[1] + this->M[r][2] * p[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallReferenceScene::Guest::Sample(
+  const double q[3], double& sigma, int& k, double& f) const
+{
+  if (!InsideBox(q, this->BoxLow, this->BoxHigh))
+  {
+    return false;
+  }
+  const double s = this->Scalar(q);
+  if (std::isnan(s))
+  {
+    return false;
+  }
+  this->Table->Locate(s, k, f);
+  sigma = this->DensityScale * this->Table->ExtinctionAt(k, f);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallReferenceScene::ClipToCameraBoxes(
+  const double p[3], const double d[3], double& t0, double& t1) const
+{
+  double low = t1, high = t0;
+  double a = t0, b = t1;
+  if (ClipToBox(p, d, this->BoxLow, this->BoxHigh, a, b))
+  {
+    low = a;
+    high = b;
+  }
+  for (const Guest& g : this->Guests)
+  {
+    double o[3], dg[3];
+    GuestRay(g, p, d, o, dg);
+    a = t0;
+    b = t1;
+    if (g.Camera && ClipToBox(o, dg, g.BoxLow, g.BoxHigh, a, b))
     {
-      this->Guests.push_back(std::move(g));
+      low = std::min(low, a);
+      high = std::max(high, b);
     }
   }
+  t0 = low;
+  t1 = high;
+  return t0 < t1;
 }
 
 //------------------------------------------------------------------------------
@@ -129,16 +197,7 @@ double vtkTyndallReferenceScene::GuestOpticalDepth(
   for (const Guest& g : this->Guests)
   {
     double o[3], dg[3];
-    for (int r = 0; r < 3; ++r)
-    {
-      o[r] = g.C[r];
-      dg[r] = 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        o[r] += g.M[r][c] * p[c];
-        dg[r] += g.M[r][c] * d[c];
-      }
-    }
+    GuestRay(g, p, d, o, dg);
     double t0 = 0.0, t1 = tMax;
     if (!ClipToBox(o, dg, g.BoxLow, g.BoxHigh, t0, t1))
     {
@@ -150,7 +209,9 @@ double vtkTyndallReferenceScene::GuestOpticalDepth(
     {
       const double t = t0 + (i + 0.5) * dt;
       const double q[3] = { o[0] + t * dg[0], o[1] + t * dg[1], o[2] + t * dg[2] };
-      tau += g.Extinction(q) * dt;
+      double sigma, f;
+      int k;
+      tau += g.Sample(q, sigma, k, f) ? sigma * dt : 0.0;
     }
   }
   return tau;

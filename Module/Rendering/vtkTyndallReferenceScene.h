@@ -101,8 +101,9 @@ public:
   /**
    * A guest (vtkTyndallSceneReader::GetGuests()): another medium the light
    * crosses. This medium's field index point p is the guest's index point M p
-   * + C; Extinction() samples the guest at its own index point (0 outside
-   * its box and at missing data), by the rules of the guest's medium.
+   * + C; Scalar() samples the guest's field at its own index point (NaN at
+   * missing data), Table is its transfer table. Camera: the camera rays
+   * sample it too (vtkTyndallSceneReader::GetCameraGuests()).
    */
   struct Guest
   {
@@ -110,7 +111,18 @@ public:
     double C[3];
     double BoxLow[3];
     double BoxHigh[3];
-    std::function<double(const double q[3])> Extinction;
+    double DensityScale = 1.0;
+    const vtkTyndallTransferTable* Table = nullptr;
+    std::function<double(const double q[3])> Scalar;
+    bool Camera = false;
+
+    /// The guest's index point of this medium's index point p.
+    void ToGuest(const double p[3], double q[3]) const;
+    /**
+     * At the guest's index point q: false outside its box or at missing
+     * data, else its extinction and its table position (k, f).
+     */
+    bool Sample(const double q[3], double& sigma, int& k, double& f) const;
   };
   std::vector<Guest> Guests;
 
@@ -121,6 +133,22 @@ public:
    */
   double GuestOpticalDepth(
     const double p[3], const double d[3], double tMax, double step, double maxDepth) const;
+
+  /// Whether the camera rays sample guests (some Guest::Camera), and their smallest world spacing.
+  bool CameraGuests = false;
+  double CameraGuestSpacing = 0.0;
+  /// The sum of the guests' world diagonals (how far beyond its own box a ray may march).
+  double GuestDiagonals = 0.0;
+  /// Whether this medium is drawn by another volume's camera rays
+  /// (vtkTyndallSceneReader::GetDrawnBy()).
+  bool DrawnByAnother = false;
+
+  /**
+   * The camera rays' part [t0, t1] of the ray p + t d (this medium's index
+   * space): its box's, or with camera guests from the first entry into any
+   * of their boxes to the last exit. False when it misses them all.
+   */
+  bool ClipToCameraBoxes(const double p[3], const double d[3], double& t0, double& t1) const;
 
   /// Whether the field index point p is kept by the clipping and cropping.
   bool Inside(const double p[3]) const { return !this->Clip || this->Clip->InsideIndex(p); }
@@ -175,10 +203,18 @@ public:
   /// The phase function at the cosine mu (Henyey-Greenstein, anisotropy G).
   double Phase(double mu) const { return vtkTransmittanceMapMath::HenyeyGreenstein(this->G, mu); }
 
+  /// Whether the point p lies in the box [lo, hi].
+  static bool InsideBox(const double p[3], const double lo[3], const double hi[3])
+  {
+    return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] &&
+      p[2] <= hi[2];
+  }
+
   /**
    * Clips the parameter interval [t0, t1] of the ray o + t d to the box
    * [lo, hi] (all in field index space); false if nothing is left.
    */
+
   static bool ClipToBox(const double o[3], const double d[3], const double lo[3],
     const double hi[3], double& t0, double& t1)
   {

@@ -44,6 +44,43 @@ void PlaceLight(
     light->GetTransformedFocalPoint(focalPoint);
   }
 }
+
+// Whether a Tyndall volume can be part of a camera group (see the class
+// description); `medium` is its medium as read by this reader, or null when
+// it is not one of the guests.
+bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
+{
+  auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
+  return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
+    !property->GetDetailNoise() && medium->GetNumberOfNaNScalars() == 0 &&
+    !medium->GetClip().Enabled() && !medium->GetChromatic() && !medium->GetEmissionFromArray();
+}
+
+// Whether the world boxes of two media overlap (their world-axis bounds, by
+// more than a millionth of the smaller diagonal on every axis).
+bool Overlap(const vtkTyndallGridMedium& a, const vtkTyndallGridMedium& b)
+{
+  double ca[24], cb[24];
+  a.GetWorldCorners(ca);
+  b.GetWorldCorners(cb);
+  const double margin = 1e-6 * std::min(a.GetWorldDiagonal(), b.GetWorldDiagonal());
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    double lowA = ca[axis], highA = ca[axis], lowB = cb[axis], highB = cb[axis];
+    for (int i = 1; i < 8; ++i)
+    {
+      lowA = std::min(lowA, ca[3 * i + axis]);
+      highA = std::max(highA, ca[3 * i + axis]);
+      lowB = std::min(lowB, cb[3 * i + axis]);
+      highB = std::max(highB, cb[3 * i + axis]);
+    }
+    if (std::min(highA, highB) - std::max(lowA, lowB) <= margin)
+    {
+      return false;
+    }
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -65,6 +102,7 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   }
   this->UpdateLights(renderer, reporter);
   this->UpdateGuests(renderer, volume, reporter);
+  this->UpdateCameraGroup(renderer, volume, reporter);
   if (!this->Medium.GetSingleScattering())
   {
     this->Lights.clear();
@@ -233,4 +271,138 @@ void vtkTyndallSceneReader::UpdateGuests(
     vtkWarningWithObjectMacro(reporter, << warning.str());
   }
   this->LastGuestWarning = warning.str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneReader::SameLighting(
+  const vtkTyndallGridMedium& a, const vtkTyndallGridMedium& b)
+{
+  if (a.GetScatteringModel() != b.GetScatteringModel())
+  {
+    return false;
+  }
+  // Emission-absorption: the colour is the emission, no light: nothing more to agree on.
+  return !a.GetSingleScattering() ||
+    (a.GetHasEmission() == b.GetHasEmission() &&
+      (!a.GetHasEmission() || a.GetEmissionScale() == b.GetEmissionScale()) &&
+      a.GetScatteringAnisotropy() == b.GetScatteringAnisotropy() &&
+      a.GetLightScale() == b.GetLightScale() &&
+      a.GetAmbientIntensity() == b.GetAmbientIntensity() &&
+      a.GetScatteringOctaves() == b.GetScatteringOctaves() &&
+      (a.GetScatteringOctaves() == 1 ||
+        std::equal(a.GetOctaveFactors(), a.GetOctaveFactors() + 3, b.GetOctaveFactors())));
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::UpdateCameraGroup(
+  vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+{
+  this->CameraGuests.clear();
+  this->DrawnBy = nullptr;
+  // The candidates: the first MaximumNumberOfGuests + 1 visible Tyndall
+  // volumes in the renderer's order, each with its medium (this one's, a
+  // guest's, or null for a volume that is not a guest).
+  std::vector<vtkVolume*> volumes;
+  std::vector<const vtkTyndallGridMedium*> read, media;
+  vtkVolumeCollection* collection = renderer->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkVolume* v = static_cast<int>(volumes.size()) <= MaximumNumberOfGuests
+      ? collection->GetNextVolume(it)
+      : nullptr)
+  {
+    if (!v->GetVisibility() || !v->GetMapper() ||
+      !v->GetMapper()->IsA("vtkTransmittanceVolumeMapper"))
+    {
+      continue;
+    }
+    const auto guest = std::find(this->GuestVolumes.begin(), this->GuestVolumes.end(), v);
+    const vtkTyndallGridMedium* medium = v == volume ? &this->Medium
+      : guest != this->GuestVolumes.end() ? this->Guests[guest - this->GuestVolumes.begin()]
+                                          : nullptr;
+    volumes.push_back(v);
+    read.push_back(medium);
+    media.push_back(Groupable(v, medium) ? medium : nullptr);
+  }
+  const auto self = std::find(volumes.begin(), volumes.end(), volume);
+  if (self == volumes.end())
+  {
+    return;
+  }
+  // Groups: connected components of "overlap and are lit alike" (an
+  // equivalence, so every reader finds the same), labelled by their first
+  // member.
+  const size_t n = volumes.size();
+  std::vector<size_t> group(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    group[i] = i;
+  }
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    for (size_t i = 0; i < n; ++i)
+    {
+      for (size_t j = i + 1; j < n; ++j)
+      {
+        if (media[i] && media[j] && group[i] != group[j] && SameLighting(*media[i], *media[j]) &&
+          Overlap(*media[i], *media[j]))
+        {
+          group[i] = group[j] = std::min(group[i], group[j]);
+          changed = true;
+        }
+      }
+    }
+  }
+  const size_t me = self - volumes.begin();
+  this->WarnLayers(volumes, read, group, me, reporter);
+  if (!media[me])
+  {
+    return;
+  }
+  if (group[me] != me)
+  {
+    this->DrawnBy = volumes[group[me]];
+    return;
+  }
+  for (size_t j = me + 1; j < n; ++j)
+  {
+    if (group[j] == me)
+    {
+      const auto guest =
+        std::find(this->GuestVolumes.begin(), this->GuestVolumes.end(), volumes[j]);
+      this->CameraGuests.push_back(static_cast<int>(guest - this->GuestVolumes.begin()));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::WarnLayers(const std::vector<vtkVolume*>& volumes,
+  const std::vector<const vtkTyndallGridMedium*>& media, const std::vector<size_t>& group,
+  size_t me, vtkObject* reporter)
+{
+  std::ostringstream warning;
+  auto compositing = [](vtkVolume* v)
+  {
+    auto* p = vtkParticipatingMediumProperty::SafeDownCast(v->GetProperty());
+    return p && p->GetSceneShadows() && p->GetSceneCompositing();
+  };
+  for (size_t j = 0; j < volumes.size(); ++j)
+  {
+    if (j != me && group[j] != group[me] && media[me] && media[j] && compositing(volumes[me]) &&
+      compositing(volumes[j]) && Overlap(*media[me], *media[j]))
+    {
+      warning << "This volume's box overlaps that of Tyndall volume " << j
+              << " (counting the renderer's visible Tyndall volumes from 0), but they cannot be "
+                 "drawn as one medium (different lighting "
+                 "settings, or missing data, clipping, cropping, detail, a coloured extinction "
+                 "or an emission array): each is drawn as a layer, wrong where they "
+                 "interpenetrate along a camera ray. ";
+    }
+  }
+  if (!warning.str().empty() && warning.str() != this->LastCameraWarning)
+  {
+    vtkWarningWithObjectMacro(reporter, << warning.str());
+  }
+  this->LastCameraWarning = warning.str();
 }

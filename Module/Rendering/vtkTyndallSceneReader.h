@@ -31,7 +31,16 @@
  *   guest with missing data (NaN), clipping or cropping, or procedural
  *   detail, and every guest of a scene with a coloured extinction, is left
  *   out with a warning naming the reason (the shaders' guest lookup has
- *   none of these).
+ *   none of these);
+ * - the camera group (the property's SceneCompositing): among the first
+ *   MaximumNumberOfGuests + 1 visible Tyndall volumes of the renderer, those
+ *   that can be drawn together (SceneShadows and SceneCompositing on, read
+ *   as guests are, no emission array, the same lighting settings:
+ *   SameLighting()) and whose world boxes overlap, directly or through
+ *   others, form a group; the first of a group in the renderer's order
+ *   draws it (GetCameraGuests(): the members among its guests) and the
+ *   others draw nothing of their own (GetDrawnBy()). Every reader of the
+ *   renderer finds the same groups, each from the volumes' own settings.
  *
  * A warning is given once per change, not once per frame. Internal to
  * Tyndall::Rendering; not wrapped.
@@ -79,9 +88,34 @@ public:
   const std::vector<vtkVolume*>& GetGuestVolumes() const { return this->GuestVolumes; }
   ///@}
 
+  ///@{
+  /**
+   * The camera group (see the class description): the indices into
+   * GetGuests() of the guests this volume's camera rays also sample (empty
+   * unless this volume draws a group), and the volume that draws this one's
+   * medium (null unless another does).
+   */
+  const std::vector<int>& GetCameraGuests() const { return this->CameraGuests; }
+  vtkVolume* GetDrawnBy() const { return this->DrawnBy; }
+  ///@}
+
+  /**
+   * Whether two media are lit alike, so that one camera ray can integrate
+   * them as one medium: the same scattering model and, in single
+   * scattering, the same emission (on or off, and its scale when on),
+   * anisotropy, light scale, ambient intensity and octaves (their factors
+   * when there are several).
+   */
+  static bool SameLighting(const vtkTyndallGridMedium& a, const vtkTyndallGridMedium& b);
+
 private:
   void UpdateLights(vtkRenderer* renderer, vtkObject* reporter);
   void UpdateGuests(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+  void UpdateCameraGroup(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+  /// Warns when this volume (volumes[me]) overlaps one it cannot be drawn with.
+  void WarnLayers(const std::vector<vtkVolume*>& volumes,
+    const std::vector<const vtkTyndallGridMedium*>& media, const std::vector<size_t>& group,
+    size_t me, vtkObject* reporter);
 
   /// One slot per guest, kept between frames (its medium's caches) while the slot's volume stays.
   struct GuestSlot
@@ -93,6 +127,9 @@ private:
   std::vector<const vtkTyndallGridMedium*> Guests;
   std::vector<vtkVolume*> GuestVolumes;
   std::string LastGuestWarning;
+  std::vector<int> CameraGuests;
+  vtkVolume* DrawnBy = nullptr;
+  std::string LastCameraWarning;
 
   vtkTyndallGridMedium Medium;
   vtkTyndallDetailMedium Detail;

@@ -559,6 +559,20 @@ void MeasureInteraction(const Medium& medium, const Options& o)
             << tyndall_test::MaxDifference(tyndall_test::Grab(scene.Window), before) << "/255 |\n";
 }
 
+// The two-cloud scene off screen on the benchmark's display, both mappers
+// with the benchmark's coefficients, map size and light samples.
+void SetUpTwoClouds(tyndall_test::TwoClouds& scene, const Options& o)
+{
+  TheDisplay->Attach(scene.Window);
+  scene.Window->SetOffScreenRendering(1);
+  for (vtkTransmittanceVolumeMapper* mapper : { scene.Left.Mapper.Get(), scene.Right.Mapper.Get() })
+  {
+    mapper->SetNumberOfCoefficients(o.Coefficients);
+    mapper->SetTransmittanceMapSize(o.MapSize);
+    mapper->SetLightSampleCount(o.LightSamples);
+  }
+}
+
 // Several volumes (tyndall_test::TwoClouds: two clouds side by side, the
 // left one shadowing the right), per method: the volumes lit alone
 // (SceneShadows off: each builds maps over its own box) against the scene
@@ -569,18 +583,8 @@ void MeasureSeveralVolumes(const Options& o)
   using M = vtkTransmittanceVolumeMapper;
   tyndall_test::TwoClouds timing(o.Size, o.Size / 2, o.Resolution);
   tyndall_test::TwoClouds reference(o.ReferenceSize, o.ReferenceSize / 2, o.Resolution);
-  for (tyndall_test::TwoClouds* scene : { &timing, &reference })
-  {
-    TheDisplay->Attach(scene->Window);
-    scene->Window->SetOffScreenRendering(1);
-    for (vtkTransmittanceVolumeMapper* mapper :
-      { scene->Left.Mapper.Get(), scene->Right.Mapper.Get() })
-    {
-      mapper->SetNumberOfCoefficients(o.Coefficients);
-      mapper->SetTransmittanceMapSize(o.MapSize);
-      mapper->SetLightSampleCount(o.LightSamples);
-    }
-  }
+  SetUpTwoClouds(timing, o);
+  SetUpTwoClouds(reference, o);
   const vtkSmartPointer<vtkImageData> cpu = reference.Cpu();
   std::cout << "\n## Several volumes (two clouds side by side, " << o.Size << " x " << o.Size / 2
             << ", the left one in front of the sun)\n\n"
@@ -613,6 +617,48 @@ void MeasureSeveralVolumes(const Options& o)
                 << (shadows ? "the scene (shared maps)" : "each alone") << " | "
                 << leftBuilds + rightBuilds << " | " << std::setprecision(4) << build << " | "
                 << frame << " | " << tyndall_test::PSNR(reference.Gpu(), cpu) << " |\n";
+    }
+  }
+}
+
+// Overlapping volumes (tyndall_test::TwoClouds::Interpenetrate(): two clouds
+// through the same space), per method: drawn as layers (SceneCompositing
+// off: each volume by its own mapper) against one medium (the first
+// volume's mapper casts the camera rays through both): frame and PSNR
+// against the CPU reference of the one medium.
+void MeasureOverlapping(const Options& o)
+{
+  using M = vtkTransmittanceVolumeMapper;
+  tyndall_test::TwoClouds timing(o.Size, o.Size / 2, o.Resolution);
+  tyndall_test::TwoClouds reference(o.ReferenceSize, o.ReferenceSize / 2, o.Resolution);
+  SetUpTwoClouds(timing, o);
+  SetUpTwoClouds(reference, o);
+  timing.Interpenetrate();
+  reference.Interpenetrate();
+  const vtkSmartPointer<vtkImageData> cpu = reference.Cpu();
+  std::cout << "\n## Overlapping volumes (two clouds through the same space, " << o.Size << " x "
+            << o.Size / 2 << ")\n\n"
+            << "| method | drawn | frame (s) | PSNR vs CPU of the one medium (dB) |\n"
+            << "|---|---|---|---|\n";
+  for (int m : { M::BRUTE_FORCE, M::ADAPTIVE_TFM, M::ADAPTIVE_ETM })
+  {
+    for (bool together : { false, true })
+    {
+      for (tyndall_test::TwoClouds* scene : { &timing, &reference })
+      {
+        scene->SetMethod(m);
+        scene->SetSceneCompositing(together);
+      }
+      TimeFrame(timing.Window); // compiles the variant, builds the maps and the cache
+      double frame = std::numeric_limits<double>::infinity();
+      for (int f = 0; f < o.Frames; ++f)
+      {
+        timing.Left.Mapper->Modified();
+        frame = std::min(frame, TimeFrame(timing.Window));
+      }
+      std::cout << "| " << vtkTransmittanceMapMath::GetMethodName(m) << " | "
+                << (together ? "one medium" : "as layers") << " | " << std::setprecision(4) << frame
+                << " | " << tyndall_test::PSNR(reference.Gpu(), cpu) << " |\n";
     }
   }
 }
@@ -820,6 +866,7 @@ int main(int argc, char* argv[])
   const Figures& dense = figures[1];
   MeasureInteraction(media[0], o);
   MeasureSeveralVolumes(o);
+  MeasureOverlapping(o);
 
   using M = vtkTransmittanceVolumeMapper;
   std::cout << "\n## Bars\n\n";

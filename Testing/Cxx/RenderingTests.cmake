@@ -26,6 +26,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperChromatic.cxx
   TestVolumeShadowReceiver.cxx
   TestTransmittanceMapperSceneShadows.cxx
+  TestTransmittanceMapperSceneCompositing.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx

@@ -258,7 +258,7 @@ int TestTyndallSceneBuilder(int, char*[])
         "TestTyndallSceneBuilder-blob.vti", "--volume-position", "2", "0", "0", "--volume-scale",
         "0.1", "--volume-density-scale", "3", "--volume-transfer-function",
         "TestTyndallSceneBuilder.tf", "--add-volume", "TestTyndallSceneBuilder-blob.vti",
-        "--volume-preset", "mr", "--no-scene-shadows" });
+        "--volume-preset", "mr", "--no-scene-shadows", "--no-scene-compositing" });
     Check(scene != nullptr && several->GetNumberOfAddedVolumes() == 2 &&
         scene->GetVolumes()->GetNumberOfItems() == 3,
       "two added volumes beside the cloud");
@@ -270,6 +270,7 @@ int TestTyndallSceneBuilder(int, char*[])
       Check(several->GetVolume()->GetPosition()[0] == -1.0 && added->GetPosition()[0] == 2.0 &&
           added->GetScale()[0] == 0.1 && property && property->GetDensityScale() == 3.0 &&
           property->GetScalarOpacityUnitDistance() == 2.0 && !property->GetSceneShadows() &&
+          !property->GetSceneCompositing() &&
           mapper && mapper->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::TFM,
         "the added volume's placement, density, transfer function and settings");
       scene->GetCullers()->InitTraversal();

@@ -187,6 +187,25 @@ scene_prop.SetSceneShadows(False)
 window.Render()
 check(mapper.GetMapBuildCount() + second_mapper.GetMapBuildCount() == builds + 2,
       "switching scene shadows off: each volume builds its own maps")
+# The two in the same place: one medium, drawn by the first volume's mapper.
+check(scene_prop.GetSceneCompositing(), "scene compositing is on by default")
+scene_prop.SetSceneShadows(True)
+second.SetPosition(volume.GetPosition())
+
+
+def pixels():
+    window.Render()
+    grab.Modified()
+    grab.Update()
+    a = grab.GetOutput().GetPointData().GetScalars()
+    return [a.GetComponent(i, c) for i in range(a.GetNumberOfTuples()) for c in range(3)]
+
+
+together = pixels()
+scene_prop.SetSceneCompositing(False)
+layers = pixels()
+scene_prop.SetSceneCompositing(True)
+check(together != layers, "overlapping volumes drawn as one medium differ from layers")
 renderer.RemoveVolume(second)
 volume.SetProperty(prop)
 

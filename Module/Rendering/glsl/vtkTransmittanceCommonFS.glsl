@@ -27,13 +27,16 @@ uniform vec3 volumeTexShift;
 uniform vec2 scalarToTable; // table coordinate = value * x + y
 uniform float densityScale;
 uniform mat4 worldToVolume; // world -> the medium's box as [0,1]^3
+// World -> the camera rays' box as [0,1]^3: the medium's, or the box around
+// it and the guests drawn with it (TYNDALL_CAMERA_GUESTS).
+uniform mat4 worldToCameraBox;
 
 //TYNDALL::LightMaps
 
-// Ray (world) against the medium's box (see tyndallIntersectBox()).
-vec2 tyndallIntersectVolume(vec3 origin, vec3 dir)
+// Ray (world) against the camera rays' box (see tyndallIntersectBox()).
+vec2 tyndallIntersectCameraBox(vec3 origin, vec3 dir)
 {
-  return tyndallIntersectBox(worldToVolume, origin, dir);
+  return tyndallIntersectBox(worldToCameraBox, origin, dir);
 }
 
 #if TYNDALL_SKIP_EMPTY
@@ -217,16 +220,17 @@ vec3 tyndallEmissionColor(float tableCoord)
 
 #if TYNDALL_LIGHT_CACHE
 // The transmittance cache (vtkTransmittanceLightCachePass): light l's map
-// transmittance at the texels of a lattice over the volume's box, texel
-// centres on the box's faces (box coordinate i / (n - 1)); the lights'
-// lattices are stacked along the third axis, lightCacheSize.z slices each.
+// transmittance at the texels of a lattice over the camera rays' box,
+// texel centres on the box's faces (box coordinate i / (n - 1)); the
+// lights' lattices are stacked along the third axis, lightCacheSize.z
+// slices each.
 uniform sampler3D lightCacheTexture;
 uniform vec3 lightCacheSize; // texels per axis of one light's lattice
 uniform int lightCacheLights;
 
 TyndallTransmittance tyndallCachedTransmittance(int l, vec3 x)
 {
-  vec3 q = clamp((worldToVolume * vec4(x, 1.0)).xyz, 0.0, 1.0);
+  vec3 q = clamp((worldToCameraBox * vec4(x, 1.0)).xyz, 0.0, 1.0);
   vec3 texel = q * (lightCacheSize - 1.0) + 0.5; // within [0.5, size - 0.5]: no bleeding
   texel.z += float(l) * lightCacheSize.z;
   vec4 T = texture(

@@ -1,7 +1,8 @@
 // Tyndall: fills one slice of a light's transmittance cache (appended to
 // vtkTransmittanceCommonFS.glsl, compiled with the frame's map variant).
 // One fragment per texel: the light's map transmittance at the texel's
-// point of the volume's box; texel (i, j) of slice k lies at box coordinate
+// point of the camera rays' box (the medium's, or with camera guests the
+// box around them all); texel (i, j) of slice k lies at box coordinate
 // (i, j, k) / (n - 1), so the lattice's outer texels sit on the box's faces.
 in vec2 texCoord;
 //VTK::Output::Dec

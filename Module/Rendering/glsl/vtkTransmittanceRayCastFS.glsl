@@ -302,6 +302,67 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
   return sum;
 }
 
+#if TYNDALL_CAMERA_GUESTS
+// Guests drawn with this medium (vtkTyndallSceneReader::GetCameraGuests():
+// they overlap it and are lit alike): 1 for a guest the camera rays sample.
+uniform float guestCamera[TYNDALL_GUESTS];
+
+// Guest g's extinction at x (0 outside its box or when the camera rays do
+// not sample it); adds its colour and emission, weighted by it, to `color`
+// and `emission`.
+float tyndallGuestCameraSample(
+  sampler3D volume, sampler2D table, int g, vec3 x, inout vec3 color, inout vec3 emission)
+{
+  vec3 q = (guestWorldToBox[g] * vec4(x, 1.0)).xyz;
+  if (guestCamera[g] == 0.0 || any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0))))
+  {
+    return 0.0;
+  }
+  float value = texture(volume, q * guestTexScale[g] + guestTexShift[g]).r;
+  vec2 toTable = guestScalarToTable[g];
+  float coord = value * toTable.x + toTable.y;
+  vec4 tf = texture(table, vec2(coord, TYNDALL_TABLE_ALBEDO_ROW));
+  float sigma = guestDensity[g] * tf.a;
+  color += sigma * tf.rgb;
+#if TYNDALL_EMISSION
+  emission += sigma * texture(table, vec2(coord, TYNDALL_TABLE_EMISSION_ROW)).rgb;
+#endif
+  return sigma;
+}
+
+// Samplers are indexed by constants only (GLSL 1.50): one statement per guest.
+#define TYNDALL_GUEST_CAMERA_SAMPLE(g) sigma += tyndallGuestCameraSample(guestVolume[g], guestTransfer[g], g, x, color, emission);
+
+// What the camera rays see at x: the extinction of this medium (empty
+// outside its box) plus its camera guests', returned; their colours and
+// emission colours mixed in proportion to their extinctions (the mixture's
+// albedo and emission per unit extinction; CPU twin:
+// vtkSingleScatteringReference's camera rays).
+float tyndallCameraMedium(vec3 x, out vec3 color, out vec3 emission)
+{
+  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
+  bool inside = all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(1.0)));
+  vec3 ownColor = vec3(0.0);
+  float tableCoord = 0.0;
+  float sigma = inside ? tyndallMedium(x, ownColor, tableCoord) : 0.0;
+  color = sigma * ownColor;
+  emission = vec3(0.0);
+#if TYNDALL_EMISSION
+  if (sigma > 0.0)
+  {
+    emission = sigma * tyndallEmissionColor(tableCoord);
+  }
+#endif
+  TYNDALL_FOR_GUESTS(TYNDALL_GUEST_CAMERA_SAMPLE)
+  if (sigma > 0.0)
+  {
+    color /= sigma;
+    emission /= sigma;
+  }
+  return sigma;
+}
+#endif
+
 #if TYNDALL_DETAIL_SAMPLES > 0
 // Procedural detail, camera rays importance-sampled in closed form
 // (Documentation/rendering-model.md, "Camera rays sampled in closed form"):
@@ -386,7 +447,7 @@ void main()
   vec3 p1 = unproject(ndc, depthNdc);
   vec3 w = normalize(p1 - p0);
   float tDepth = length(p1 - p0);
-  vec2 range = tyndallIntersectVolume(p0, w);
+  vec2 range = tyndallIntersectCameraBox(p0, w);
   float tNear = max(range.x, 0.0);
   float tFar = min(range.y, tDepth);
 #if TYNDALL_ACCUMULATE
@@ -441,8 +502,13 @@ void main()
     ++n;
     vec3 x = p0 + ts * w;
     vec3 color;
+#if TYNDALL_CAMERA_GUESTS
+    vec3 emission;
+    float sigma = tyndallCameraMedium(x, color, emission);
+#else
     float tableCoord;
     float sigma = tyndallMedium(x, color, tableCoord);
+#endif
 #if TYNDALL_EMISSION_ARRAY
     // Emission per unit length over the step, attenuated within it.
     radiance += Tv * emissionScale * tyndallArrayEmission(x) *
@@ -459,7 +525,9 @@ void main()
       else
       {
         source = color * inScattering(x, w, color);
-#if TYNDALL_EMISSION
+#if TYNDALL_EMISSION && TYNDALL_CAMERA_GUESTS
+        source += emissionScale * emission;
+#elif TYNDALL_EMISSION
         source += emissionScale * tyndallEmissionColor(tableCoord);
 #endif
       }
