@@ -322,7 +322,10 @@ void vtkTyndallSceneReader::UpdateCameraGroup(
                                           : nullptr;
     volumes.push_back(v);
     read.push_back(medium);
-    media.push_back(Groupable(v, medium) ? medium : nullptr);
+    // A volume VTK's culler left out of this frame (render time multiplier
+    // 0: its bounding sphere lies outside the view, so no camera ray meets
+    // it) draws nothing and is drawn by no one: not grouped.
+    media.push_back(Groupable(v, medium) && v->GetRenderTimeMultiplier() > 0.0 ? medium : nullptr);
   }
   const auto self = std::find(volumes.begin(), volumes.end(), volume);
   if (self == volumes.end())
@@ -385,7 +388,8 @@ void vtkTyndallSceneReader::WarnLayers(const std::vector<vtkVolume*>& volumes,
   auto compositing = [](vtkVolume* v)
   {
     auto* p = vtkParticipatingMediumProperty::SafeDownCast(v->GetProperty());
-    return p && p->GetSceneShadows() && p->GetSceneCompositing();
+    return p && p->GetSceneShadows() && p->GetSceneCompositing() &&
+      v->GetRenderTimeMultiplier() > 0.0; // culled: no group to miss
   };
   for (size_t j = 0; j < volumes.size(); ++j)
   {

@@ -40,7 +40,10 @@
  *   others, form a group; the first of a group in the renderer's order
  *   draws it (GetCameraGuests(): the members among its guests) and the
  *   others draw nothing of their own (GetDrawnBy()). Every reader of the
- *   renderer finds the same groups, each from the volumes' own settings.
+ *   renderer finds the same groups, each from the volumes' own settings. A
+ *   volume VTK's culler left out of the frame (its render time multiplier
+ *   0: entirely outside the view) is in no group, so a group whose first
+ *   volume is culled is drawn by its next one.
  *
  * A warning is given once per change, not once per frame. Internal to
  * Tyndall::Rendering; not wrapped.

@@ -6,6 +6,7 @@ vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseSampleDistance.cxx
   TestCosineNoiseSource.cxx
   TestCosineNoiseBadInput.cxx
+  TestParticleKernel.cxx
   TestTransmittanceMapMath.cxx)
 vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseCloudRender.cxx)

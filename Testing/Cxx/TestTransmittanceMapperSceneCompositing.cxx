@@ -9,7 +9,8 @@
 //    AdaptiveETM >= 40 dB; the layers' picture measurably wrong against it;
 //    the second volume draws nothing of its own (its CPU image is empty) and
 //    builds no maps;
-// 3. overlapping volumes lit differently are drawn as layers, with a warning.
+// 3. overlapping volumes lit differently are drawn as layers, with a warning;
+// 4. a group whose first volume VTK culls is drawn by the next one.
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -169,11 +170,50 @@ void Interpenetrating()
   own->Render(scene.Renderer, scene.Right.Volume, 32, 16);
   Check(LargestOpacity(own->GetOutput()) > 0.1, "lit differently, each volume draws its own");
 }
+
+// 4. The first volume of a group culled by VTK (outside the view): the
+// second, in view, draws itself.
+void CulledFirstVolume()
+{
+  Scene scene(128, 96);
+  vtkNew<vtkTest::ErrorObserver> observer;
+  scene.Right.Mapper->AddObserver(vtkCommand::WarningEvent, observer);
+  scene.SetMethod(M::ADAPTIVE_ETM);
+  scene.Left.Volume->SetPosition(-1.5, 0.0, 0.0); // overlaps the right one's box by 0.1
+  scene.Right.Volume->SetPosition(0.0, 0.0, 0.0);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.6, 0.0, 0.0);
+  camera->SetPosition(0.6, 0.0, 4.0);
+  camera->SetViewAngle(12.0); // the left cloud's bounding sphere lies left of the view
+  scene.Renderer->ResetCameraClippingRange();
+  const vtkSmartPointer<vtkImageData> gpu = scene.Gpu();
+  const double culled = scene.Left.Volume->GetRenderTimeMultiplier();
+  const vtkSmartPointer<vtkImageData> cpu = scene.Cpu();
+  vtkNew<vtkImageData> background;
+  background->DeepCopy(cpu);
+  vtkDataArray* rgb = background->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb->SetComponent(i, c, std::lround(255.0 * scene.Renderer->GetBackground()[c]));
+    }
+  }
+  const double psnr = tyndall_test::PSNR(gpu, cpu);
+  std::cout << "the first volume culled (render time multiplier " << culled
+            << "): the second draws itself, " << psnr << " dB against the CPU reference, "
+            << tyndall_test::MaxDifference(gpu, background) << "/255 from the background\n";
+  Check(culled == 0.0, "VTK culls the first volume");
+  Check(!observer->GetWarning(), "no warning about a culled volume");
+  Check(tyndall_test::MaxDifference(gpu, background) > 60 && psnr >= 45.0,
+    "a group whose first volume is culled is drawn by the next");
+}
 }
 
 int TestTransmittanceMapperSceneCompositing(int, char*[])
 {
   CoincidentHalves();
   Interpenetrating();
+  CulledFirstVolume();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

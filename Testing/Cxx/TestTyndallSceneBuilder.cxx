@@ -270,8 +270,8 @@ int TestTyndallSceneBuilder(int, char*[])
       Check(several->GetVolume()->GetPosition()[0] == -1.0 && added->GetPosition()[0] == 2.0 &&
           added->GetScale()[0] == 0.1 && property && property->GetDensityScale() == 3.0 &&
           property->GetScalarOpacityUnitDistance() == 2.0 && !property->GetSceneShadows() &&
-          !property->GetSceneCompositing() &&
-          mapper && mapper->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::TFM,
+          !property->GetSceneCompositing() && mapper &&
+          mapper->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::TFM,
         "the added volume's placement, density, transfer function and settings");
       scene->GetCullers()->InitTraversal();
       auto* culler = vtkFrustumCoverageCuller::SafeDownCast(scene->GetCullers()->GetNextItem());

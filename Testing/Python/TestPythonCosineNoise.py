@@ -66,6 +66,24 @@ noise.AddObserver(vtkCommand.ErrorEvent, lambda obj, ev: errors.append(ev))
 noise.SetNumberOfOctaves(0)
 check(len(errors) == 1 and noise.GetNumberOfOctaves() == 1, "zero octaves reported and clamped")
 
+# The particle kernel from Python: a chord's depth by Simpson, and the
+# coefficients written into a list.
+from tyndall import vtkParticleKernel  # noqa: E402
+
+R, rho, b = 0.8, 3.0, 0.3
+half = math.sqrt(R * R - b * b)
+m = 2000
+acc = 0.0
+for i in range(m + 1):
+    v = -half + 2 * half * i / m
+    weight = 1 if i in (0, m) else (4 if i % 2 else 2)
+    acc += weight * vtkParticleKernel.Extinction(math.sqrt(b * b + v * v), R, rho)
+chord = acc * (2 * half / m) / 3.0
+check(abs(chord - vtkParticleKernel.ChordDepth(b, R, rho)) < 1e-10, "a particle's chord depth")
+coefficients = [0.0] * 4
+check(vtkParticleKernel.AddExtinctionCoefficients(b, 2.0, 4.0, R, rho, 4, coefficients)
+      and abs(coefficients[0] - 2 * chord) < 1e-9, "a particle's map coefficients from Python")
+
 if failures:
     sys.exit(1)
 print("ok")
