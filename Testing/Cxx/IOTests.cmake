@@ -7,6 +7,7 @@ vtk_add_test_cxx(TyndallIOCxxTests tests
   TestOpenVDBReaderStreaming.cxx
   TestOpenVDBWriterRoundTrip.cxx
   TestOpenVDBWriterSamples.cxx
+  TestParticleFileReader.cxx
   TestVolumeFileReader.cxx)
 # Rendering tests (need a display): baselines in Testing/Data/Baseline.
 vtk_add_test_cxx(TyndallIOCxxTests tests

@@ -84,6 +84,24 @@ coefficients = [0.0] * 4
 check(vtkParticleKernel.AddExtinctionCoefficients(b, 2.0, 4.0, R, rho, 4, coefficients)
       and abs(coefficients[0] - 2 * chord) < 1e-9, "a particle's map coefficients from Python")
 
+# A particle file from Python.
+import os  # noqa: E402
+import tempfile  # noqa: E402
+
+from tyndall import vtkParticleFileReader  # noqa: E402
+
+with tempfile.TemporaryDirectory() as folder:
+    path = os.path.join(folder, "particles.csv")
+    with open(path, "w") as f:
+        f.write("x,y,z,radius,density\n0,0,0,0.5,2\n1,2,3,0.25,1\n")
+    particles = vtkParticleFileReader()
+    particles.SetFileName(path)
+    particles.Update()
+    cloud = particles.GetOutput()
+    check(cloud.GetNumberOfPoints() == 2
+          and cloud.GetPointData().GetArray("radius").GetValue(1) == 0.25,
+          "a particle file read from Python")
+
 if failures:
     sys.exit(1)
 print("ok")
