@@ -260,16 +260,24 @@ bool vtkParticleFileReader::ReadText(vtkPolyData* output)
 //------------------------------------------------------------------------------
 bool vtkParticleFileReader::ReadPolyData(vtkPolyData* output, bool xml)
 {
-  vtkNew<vtkXMLPolyDataReader> xmlReader;
-  vtkNew<vtkPolyDataReader> legacyReader;
-  vtkAlgorithm* reader = xml ? static_cast<vtkAlgorithm*>(xmlReader.Get()) : legacyReader.Get();
-  xmlReader->SetFileName(this->FileName);
-  legacyReader->SetFileName(this->FileName);
   vtkNew<vtkTyndallErrorObserver> errors;
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (xml)
+  {
+    auto xmlReader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    xmlReader->SetFileName(this->FileName);
+    xmlReader->SetParserErrorObserver(errors); // the XML parser's own errors
+    xmlReader->SetReaderErrorObserver(errors);
+    reader = xmlReader;
+  }
+  else
+  {
+    auto legacyReader = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacyReader->SetFileName(this->FileName);
+    reader = legacyReader;
+  }
   errors->Watch(reader);
   errors->Watch(reader->GetExecutive());
-  xmlReader->SetParserErrorObserver(errors); // the XML parser's own errors
-  xmlReader->SetReaderErrorObserver(errors);
   reader->Update();
   vtkPolyData* data = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (errors->HasErrors() || !data || !data->GetPoints())
