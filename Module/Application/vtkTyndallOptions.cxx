@@ -77,6 +77,8 @@ constexpr const char* LightsGroup =
   "Lights (repeatable, up to 8 are used; any of them replaces the default light)";
 constexpr const char* VolumesGroup =
   "Several volumes (repeatable, up to 3; each is lit through the others)";
+// The particle cloud's options.
+constexpr const char* ParticlesGroup = "Particles";
 
 // The table. Help texts wrap at 80 columns; "\n" starts a new line.
 const Spec kOptions[] = {
@@ -111,6 +113,22 @@ const Spec kOptions[] = {
   { "no-scene-compositing", "", Kind::Flag, 0, 0, false, "", "", "", VolumesGroup, Both,
     "draw volumes whose boxes overlap as layers, each by its own mapper, instead of as one "
     "medium (vtkParticipatingMediumProperty::SceneCompositing off): for comparison" },
+  { "particles", "", Kind::Text, 0, 0, false, "", "FILE", "", ParticlesGroup, Both,
+    "a particle cloud (CSV or text of x y z radius density [r g b], .vtp or legacy .vtk "
+    "polydata with radius and density arrays) drawn as a medium beside the input "
+    "(vtkTransmittanceParticleMapper), lit and shadowed with it; it uses --method etm (its "
+    "particles splatted into the extinction maps) unless --method is given" },
+  { "particles-position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 0",
+    ParticlesGroup, Both, "translation of the particle cloud" },
+  { "particles-scale", "", Kind::Number, 0, Huge, true, "", "S", "1", ParticlesGroup, Both,
+    "scale of the particle cloud about the world origin, > 0" },
+  { "particles-density-scale", "", Kind::Number, 0, Huge, false, "", "S", "1", ParticlesGroup, Both,
+    "density scale of the particle cloud (its extinction is density times this)" },
+  { "particles-grid", "", Kind::Integer, 8, 1024, false, "", "N", "128", ParticlesGroup, Both,
+    "samples along the longest side of the grid the particles are sampled on for the camera "
+    "rays (vtkTransmittanceParticleMapper::GridResolution)" },
+  { "no-splatting", "", Kind::Flag, 0, 0, false, "", "", "", ParticlesGroup, Both,
+    "march the particles' grid for the maps instead of splatting them: for comparison" },
   { "volume-position", "", Kind::VolumeSet, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 0",
     VolumesGroup, Both, "translation of the most recent --add-volume" },
   { "volume-scale", "", Kind::VolumeSet, 0, Huge, true, "", "S", "1", VolumesGroup, Both,

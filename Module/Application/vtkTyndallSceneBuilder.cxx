@@ -9,6 +9,7 @@
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkCullerCollection.h"
+#include "vtkDataSet.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFrustumCoverageCuller.h"
@@ -20,6 +21,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkParticipatingMediumProperty.h"
+#include "vtkParticleFileReader.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
@@ -32,6 +34,7 @@
 #include "vtkStringArray.h"
 #include "vtkTransferFunctionFileReader.h"
 #include "vtkTransferFunctionPresets.h"
+#include "vtkTransmittanceParticleMapper.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallOptions.h"
 #include "vtkVolume.h"
@@ -164,7 +167,7 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   this->Volume->SetPosition(position);
   this->Volume->SetScale(this->Options->GetNumber("scale"));
   this->AddedVolumes.clear();
-  if (!this->LoadAddedVolumes())
+  if (!this->LoadAddedVolumes() || !this->LoadParticles())
   {
     return false;
   }
@@ -359,8 +362,8 @@ bool vtkTyndallSceneBuilder::Update(vtkAlgorithm* source)
   source->RemoveObserver(progressTag);
   source->RemoveObserver(errorTag);
   source->GetExecutive()->RemoveObserver(executiveTag);
-  auto* image = vtkImageData::SafeDownCast(source->GetOutputDataObject(0));
-  return image && image->GetNumberOfPoints() > 0;
+  auto* data = vtkDataSet::SafeDownCast(source->GetOutputDataObject(0));
+  return data && data->GetNumberOfPoints() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -439,6 +442,45 @@ bool vtkTyndallSceneBuilder::LoadAddedVolumes()
     added.DensityScale = o->GetAddedVolumeDensityScale(i);
     this->AddedVolumes.push_back(added);
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::LoadParticles()
+{
+  vtkTyndallOptions* o = this->Options;
+  if (!o->IsSet("particles"))
+  {
+    return true;
+  }
+  vtkNew<vtkParticleFileReader> reader;
+  reader->SetFileName(o->GetText("particles"));
+  this->ProgressLabel = std::string("loading ") + o->GetText("particles");
+  if (!this->Update(reader))
+  {
+    return false; // the reader's error names the file
+  }
+  AddedVolume added;
+  auto mapper = vtkSmartPointer<vtkTransmittanceParticleMapper>::New();
+  mapper->SetInputConnection(reader->GetOutputPort());
+  mapper->SetGridResolution(static_cast<int>(o->GetNumber("particles-grid")));
+  mapper->SetSplatting(!o->GetFlag("no-splatting"));
+  added.Mapper = mapper;
+  added.Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
+  added.Property->SetInterpolationTypeToLinear();
+  vtkNew<vtkColorTransferFunction> white;
+  white->AddRGBPoint(0.0, 0.9, 0.9, 0.9);
+  added.Property->SetColor(white);
+  added.Volume = vtkSmartPointer<vtkVolume>::New();
+  added.Volume->SetMapper(added.Mapper);
+  added.Volume->SetProperty(added.Property);
+  double position[3];
+  o->GetVector("particles-position", position);
+  added.Volume->SetPosition(position);
+  added.Volume->SetScale(o->GetNumber("particles-scale"));
+  added.DensityScale = o->GetNumber("particles-density-scale");
+  added.Particles = true;
+  this->AddedVolumes.push_back(added);
   return true;
 }
 
@@ -569,6 +611,10 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   for (const AddedVolume& added : this->AddedVolumes)
   {
     this->ApplyMapperOptions(added.Mapper);
+    if (added.Particles && !o->IsSet("method"))
+    {
+      added.Mapper->SetTransmittanceMethodToETM(); // the method that splats
+    }
     this->ApplyMediumOptions(added.Property);
     added.Property->SetDensityScale(added.DensityScale);
   }

@@ -175,6 +175,9 @@ private:
   // --surface FILE: a surface that receives the volume's shadow; false (with
   // an error naming the file) when it cannot be read or has no polygons.
   bool AddSurface(vtkRenderer* renderer);
+  // --particles FILE: a particle cloud as another volume (vtkTransmittanceParticleMapper);
+  // false (with the reader's error) when it cannot be read.
+  bool LoadParticles();
   // The actors with shadows: the receiver pass installed once.
   void ReceiveShadows(vtkRenderer* renderer);
   bool Run(vtkAlgorithm* source);
@@ -198,6 +201,7 @@ private:
     vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
     vtkSmartPointer<vtkParticipatingMediumProperty> Property;
     vtkSmartPointer<vtkVolume> Volume;
+    bool Particles = false; // a --particles cloud
     double DensityScale = 1.0;
   };
   std::vector<AddedVolume> AddedVolumes;

@@ -99,7 +99,7 @@ private:
     {
       return false;
     }
-    const double s = this->Field.Scalar(p);
+    const double s = this->Field.ReferenceScalar(p);
     if (std::isnan(s))
     {
       return false;

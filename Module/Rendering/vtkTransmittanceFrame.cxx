@@ -109,6 +109,7 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
     this->Guests.push_back(guest);
   }
   this->PrepareMapBox();
+  this->PrepareSplats();
 
   // The lights, each with its map's frustum.
   const std::vector<vtkTyndallLight>& lights = scene.GetLights();
@@ -152,6 +153,68 @@ void vtkTransmittanceFrame::PrepareMapBox()
     this->FitAxisBox(
       true, corners, this->WorldToCameraBox, this->CameraBoxToWorld, this->CameraBoxExtents);
     this->Diagonal = vtkMath::Norm(this->CameraBoxExtents);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::PrepareSplats()
+{
+  this->Splats.clear();
+  if (this->Integrator.Method != vtkTransmittanceMapMath::ETM)
+  {
+    return;
+  }
+  auto add = [this](const vtkTyndallGridMedium& medium, int guest)
+  {
+    if (!medium.GetSplatParticles())
+    {
+      return;
+    }
+    Splat splat;
+    splat.Particles = medium.GetParticles();
+    splat.DensityScale = medium.GetDensityScale();
+    splat.Guest = guest;
+    // World -> field index -> data, and back.
+    vtkNew<vtkMatrix4x4> toIndex, toData, worldToData, dataToWorld;
+    toIndex->DeepCopy(medium.GetWorldToIndex());
+    toData->DeepCopy(medium.GetIndexToData());
+    vtkMatrix4x4::Multiply4x4(toData, toIndex, worldToData);
+    vtkMatrix4x4::Invert(worldToData, dataToWorld);
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        splat.WorldToData[4 * c + r] = static_cast<float>(worldToData->GetElement(r, c));
+        splat.DataToWorld[4 * c + r] = static_cast<float>(dataToWorld->GetElement(r, c));
+      }
+    }
+    this->Splats.push_back(splat);
+  };
+  add(*this->Medium, -1);
+  for (size_t g = 0; g < this->Guests.size(); ++g)
+  {
+    add(*this->Guests[g].Medium, static_cast<int>(g));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetMarchedDensities(vtkShaderProgram* program) const
+{
+  float own = static_cast<float>(this->Medium->GetDensityScale());
+  float guests[kMaxGuests] = {};
+  const int n = static_cast<int>(std::min<size_t>(this->Guests.size(), kMaxGuests));
+  for (int g = 0; g < n; ++g)
+  {
+    guests[g] = static_cast<float>(this->Guests[g].Medium->GetDensityScale());
+  }
+  for (const Splat& splat : this->Splats)
+  {
+    (splat.Guest < 0 ? own : guests[splat.Guest]) = 0.0f;
+  }
+  program->SetUniformf("densityScale", own);
+  if (n > 0)
+  {
+    program->SetUniform1fv("guestDensity", n, guests);
   }
 }
 

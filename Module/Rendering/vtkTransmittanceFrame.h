@@ -32,6 +32,7 @@ class vtkTransmittanceMediumTextures;
 class vtkTextureObject;
 class vtkTyndallDetailMedium;
 class vtkTyndallGridMedium;
+class vtkTyndallParticleMedium;
 class vtkTyndallSceneReader;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceFrame
@@ -78,6 +79,23 @@ public:
   };
 
   /**
+   * A particle medium whose share of the extinction maps is splatted
+   * (vtkTransmittanceSplatPass) instead of marched: the frame's method is
+   * ETM and the medium's mapper splats (vtkTyndallGridMedium::
+   * GetSplatParticles()).
+   */
+  struct Splat
+  {
+    const vtkTyndallParticleMedium* Particles = nullptr;
+    /// World <-> the particles' data coordinates, column-major.
+    float WorldToData[16];
+    float DataToWorld[16];
+    double DensityScale = 1.0;
+    /// The medium it is: -1 the frame's own, else the guest's index.
+    int Guest = -1;
+  };
+
+  /**
    * Fills the frame. `lights` are reused between frames (their frusta).
    * `guestTextures` are the textures of the scene's guests, in their order.
    */
@@ -111,6 +129,15 @@ public:
 
   /// Sets the map lookup's uniforms (GetMapVariant()) for `maps` of `slices` slices (all sets).
   void SetMapUniforms(vtkShaderProgram* program, vtkTextureObject* maps, int slices) const;
+
+  /**
+   * Sets densityScale and guestDensity for the map build's march: the
+   * medium's and the guests' density scales, 0 for those that are splatted.
+   */
+  void SetMarchedDensities(vtkShaderProgram* program) const;
+
+  /// Whether every medium of the frame is splatted (the march adds nothing).
+  bool AllSplatted() const { return this->Splats.size() == this->Guests.size() + 1; }
 
   /// Whether some light uses a map method.
   bool NeedsMaps() const;
@@ -156,6 +183,8 @@ public:
   double BoxExtents[3] = { 1.0, 1.0, 1.0 };
   /// The guests, whose extinction the map build and brute-force lights add to the medium's.
   std::vector<Guest> Guests;
+  /// The media splatted into the extinction maps (see Splat).
+  std::vector<Splat> Splats;
   /**
    * The light maps' box, whose corners the lights' frusta are fitted to:
    * the medium's box, or with guests the world-axis box around every
@@ -180,6 +209,7 @@ private:
   void SetClipUniforms(vtkShaderProgram* program) const;
   void SetGuestUniforms(vtkShaderProgram* program) const;
   void PrepareMapBox();
+  void PrepareSplats();
   void FitAxisBox(bool cameraGuestsOnly, double corners[24], float worldToBox[16],
     float boxToWorld[16], double extents[3]) const;
 };

@@ -21,7 +21,9 @@
 #include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
+#include "vtkTransmittanceSplatPass.h"
 #include "vtkTyndallGridMedium.h"
+#include "vtkTyndallParticleMedium.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -94,6 +96,12 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
     key.insert(key.end(), k.begin(), k.end());
   }
   key.push_back(double(media.size()));
+  // The splatted particle media (their particles and which medium each is).
+  for (const vtkTransmittanceFrame::Splat& splat : frame.Splats)
+  {
+    key.insert(key.end(), { double(splat.Guest), double(splat.Particles->GetReadTime()) });
+  }
+  key.push_back(double(frame.Splats.size()));
   // Per light, its method and, when it has a map, the frustum the map is
   // built along (which also covers the frustum's padding and field of view).
   for (const vtkTransmittanceFrame::Light& l : frame.Lights)
@@ -199,6 +207,7 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
   }
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   frame.SetMediumUniforms(program);
+  frame.SetMarchedDensities(program);
   program->SetUniformi("method", s.Method);
   program->SetUniformi("coefficientCount", s.Coefficients);
   program->SetUniformi("sampleCount", s.LightSampleCount);
@@ -231,10 +240,23 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
     const char* status = nullptr;
     const bool complete =
       vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_DRAW_FRAMEBUFFER, status);
-    if (complete)
+    bool drawn = complete;
+    if (complete && frame.AllSplatted())
     {
+      // Nothing to march: the splats add to zero.
+      vtkOpenGLState::ScopedglClearColor savedClear(frame.State);
+      frame.State->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      frame.State->vtkglClear(GL_COLOR_BUFFER_BIT);
+    }
+    else if (complete)
+    {
+      frame.Window->GetShaderCache()->ReadyShaderProgram(program); // after a light's splats
       program->SetUniformi("lightIndex", l);
       this->Quad.Render();
+    }
+    if (complete && !frame.Splats.empty())
+    {
+      drawn = this->Splats->Render(frame, l, MapOutputs(layers, frame.BoundsLayer), reporter);
     }
     // vtkOpenGLFramebufferObject keeps an attachment of the same texture
     // even for another slice: detach before the next light's slices.
@@ -243,6 +265,10 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
     {
       vtkErrorWithObjectMacro(
         reporter, << "The transmittance-map framebuffer is incomplete: " << status);
+      return false;
+    }
+    if (!drawn)
+    {
       return false;
     }
   }
@@ -320,6 +346,7 @@ void vtkTransmittanceMapPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Quad.Release(window);
+  this->Splats->ReleaseGraphicsResources(window);
   this->MapTexture = nullptr;
   this->Framebuffer = nullptr;
   this->BuiltKey.clear();

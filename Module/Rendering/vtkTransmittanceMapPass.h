@@ -17,6 +17,9 @@
  * extinction colour, or (with guests, other media the light crosses) any
  * of the guests' extinction or placement. GetBuildCount() counts the builds.
  *
+ * Particle media of the ETM method are not marched but splatted
+ * (vtkTransmittanceSplatPass, after the march, additively).
+ *
  * GetMap() reads a light's map (the first set) back to the CPU (for tests and inspection).
  *
  * Internal to Tyndall::Rendering.
@@ -26,10 +29,12 @@
 #define vtkTransmittanceMapPass_h
 
 #include "TyndallRenderingModule.h" // For export macro
+#include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"            // For vtkSmartPointer
 #include "vtkTimeStamp.h"               // For vtkTimeStamp
 #include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
+#include "vtkTransmittanceSplatPass.h"  // For vtkTransmittanceSplatPass
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -105,6 +110,7 @@ private:
   vtkSmartPointer<vtkTextureObject> MapTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTransmittanceShaderQuad Quad;
+  vtkNew<vtkTransmittanceSplatPass> Splats;
   std::vector<double> BuiltKey;
   int Slices = 0;
   int Size = 0;

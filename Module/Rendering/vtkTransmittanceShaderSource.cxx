@@ -16,6 +16,8 @@
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
+#include "vtkTransmittanceSplatFS.h"
+#include "vtkTransmittanceSplatVS.h"
 #include "vtkTransmittanceSurfaceFS.h"
 
 #include <iomanip>
@@ -95,6 +97,17 @@ std::string vtkTransmittanceShaderSource::GetLightMapLookup(const Variant& varia
 std::string vtkTransmittanceShaderSource::GetSurfaceLookup(const Variant& variant)
 {
   return GetLightMapLookup(variant) + vtkTransmittanceSurfaceFS;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceShaderSource::GetSplatShaders(
+  const Variant& variant, std::string& vertex, std::string& fragment)
+{
+  const std::string lookup = GetLightMapLookup(variant);
+  vertex = vtkTransmittanceSplatVS;
+  fragment = vtkTransmittanceSplatFS;
+  vtkShaderProgram::Substitute(vertex, "//TYNDALL::LightMaps", lookup);
+  vtkShaderProgram::Substitute(fragment, "//TYNDALL::LightMaps", lookup);
 }
 
 //------------------------------------------------------------------------------

@@ -125,6 +125,14 @@ public:
    * tyndallSurfaceTransmittance()), for vtkVolumeShadowReceiverPass.
    */
   static std::string GetSurfaceLookup(const Variant& variant);
+
+  /**
+   * The particle splats' vertex and fragment shaders
+   * (vtkTransmittanceSplatVS.glsl, vtkTransmittanceSplatFS.glsl), the light
+   * maps' lookup and the constants inserted; the fragment shader's outputs
+   * are left at `//TYNDALL::MapOutputs` (vtkTransmittanceSplatPass).
+   */
+  static void GetSplatShaders(const Variant& variant, std::string& vertex, std::string& fragment);
   static std::string GetFragmentShader(int pass) { return GetFragmentShader(pass, Variant()); }
 
   /// The #define lines that replace `//TYNDALL::Constants`.

@@ -658,6 +658,12 @@ bool vtkTransmittanceVolumeMapper::GetTransmittanceMap(int light, vtkImageData* 
 }
 
 //------------------------------------------------------------------------------
+vtkImageData* vtkTransmittanceVolumeMapper::GetMediumImage()
+{
+  return vtkImageData::SafeDownCast(this->GetDataSetInput());
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -100,6 +100,7 @@ class vtkImageData;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
 class vtkTransmittanceLightFrustum;
+class vtkTyndallParticleMedium;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceVolumeMapper : public vtkVolumeMapper
 {
@@ -425,6 +426,28 @@ public:
    * UpdateShadowMaps() or Render() and its maps (`maps`, `slices` slices).
    */
   const vtkTransmittanceFrame& GetShadowFrame(vtkTextureObject*& maps, int& slices);
+
+  /**
+   * Internal (the scene reader): the image whose scalars are the medium,
+   * the input itself here (null when it is not a vtkImageData); a particle
+   * mapper's grid of its particles (vtkTransmittanceParticleMapper).
+   */
+  virtual vtkImageData* GetMediumImage();
+
+  /**
+   * Internal (the scene reader): the particles whose sum the medium image
+   * samples, or null for an image input.
+   */
+  virtual const vtkTyndallParticleMedium* GetParticleMedium()
+  {
+    return nullptr;
+  }
+
+  /// Internal: whether the extinction maps add the particles in closed form (splatting).
+  virtual bool GetSplatsParticles()
+  {
+    return false;
+  }
 #endif
 
   /**

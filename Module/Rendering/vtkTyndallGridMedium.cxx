@@ -17,6 +17,8 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallParticleMedium.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -50,6 +52,14 @@ void ScanScalars(const T* data, vtkIdType n, double range[2], vtkIdType& nan, vt
       range[1] = std::max(range[1], v);
     }
   }
+}
+
+// The image whose scalars are the medium: a Tyndall mapper's medium image
+// (its input, or a particle mapper's grid), else the mapper's input.
+vtkDataSet* MediumInput(vtkAbstractVolumeMapper* mapper)
+{
+  auto* tyndall = vtkTransmittanceVolumeMapper::SafeDownCast(mapper);
+  return tyndall ? tyndall->GetMediumImage() : mapper->GetDataSetInput();
 }
 
 bool AllFinite(const double* v, int n)
@@ -95,7 +105,15 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
       producer->Update(port);
     }
   }
-  vtkDataSet* input = mapper->GetDataSetInput();
+  auto* tyndall = vtkTransmittanceVolumeMapper::SafeDownCast(mapper);
+  vtkDataSet* input = MediumInput(mapper);
+  this->Particles = tyndall ? tyndall->GetParticleMedium() : nullptr;
+  this->SplatParticles = this->Particles && tyndall->GetSplatsParticles();
+  if (tyndall && tyndall->GetParticleMedium() == nullptr &&
+    tyndall->IsA("vtkTransmittanceParticleMapper"))
+  {
+    return false; // the particle mapper has reported why
+  }
   vtkImageData* image = vtkImageData::SafeDownCast(input);
   if (!image)
   {
@@ -232,7 +250,7 @@ bool vtkTyndallGridMedium::UpdateEmissionArray(vtkVolume* volume, vtkObject* rep
 {
   auto* medium = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
   const char* name = medium ? medium->GetEmissionArrayName() : nullptr;
-  auto* image = vtkImageData::SafeDownCast(volume->GetMapper()->GetDataSetInput());
+  auto* image = vtkImageData::SafeDownCast(MediumInput(volume->GetMapper()));
   vtkDataSetAttributes* data = this->CellScalars
     ? static_cast<vtkDataSetAttributes*>(image->GetCellData())
     : static_cast<vtkDataSetAttributes*>(image->GetPointData());
@@ -303,6 +321,18 @@ bool vtkTyndallGridMedium::UpdateEmissionArray(vtkVolume* volume, vtkObject* rep
 }
 
 //------------------------------------------------------------------------------
+double vtkTyndallGridMedium::ParticleScalar(const double p[3]) const
+{
+  double x[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    const double* row = this->IndexToData + 4 * r;
+    x[r] = row[0] * p[0] + row[1] * p[1] + row[2] * p[2] + row[3];
+  }
+  return this->Particles->Density(x);
+}
+
+//------------------------------------------------------------------------------
 double vtkTyndallGridMedium::EmissionValue(const double p[3]) const
 {
   return Sampler<float>(*this, this->EmissionValues.data()).Scalar(p);
@@ -311,7 +341,7 @@ double vtkTyndallGridMedium::EmissionValue(const double p[3]) const
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter)
 {
-  auto* image = vtkImageData::SafeDownCast(volume->GetMapper()->GetDataSetInput());
+  auto* image = vtkImageData::SafeDownCast(MediumInput(volume->GetMapper()));
   const double* spacing = image->GetSpacing();
   const double* origin = image->GetOrigin();
   const double* direction = image->GetDirectionMatrix()->GetData();
@@ -431,7 +461,7 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     key.push_back(function ? static_cast<double>(function->GetMTime()) : -1.0);
   };
   std::vector<double> extinction = { property->GetScalarOpacityUnitDistance(0),
-    this->FiniteRange[0], this->FiniteRange[1] };
+    this->FiniteRange[0], this->FiniteRange[1], double(this->Particles != nullptr) };
   identify(extinction, property->GetScalarOpacity(0));
   const bool gray = property->GetColorChannels(0) == 1;
   std::vector<double> key = extinction;
@@ -455,7 +485,8 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   this->TableKey.clear();
   this->TableTime.Modified();
   std::string error;
-  if (!this->Table.Build(property, emission, this->FiniteRange[0], this->FiniteRange[1], error))
+  if (!this->Table.Build(property, emission, this->FiniteRange[0], this->FiniteRange[1], error,
+        this->Particles != nullptr))
   {
     this->ExtinctionKey.clear();
     vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);

@@ -53,6 +53,7 @@
 class vtkAbstractVolumeMapper;
 class vtkImageData;
 class vtkObject;
+class vtkTyndallParticleMedium;
 class vtkVolume;
 
 class TYNDALLRENDERING_EXPORT vtkTyndallGridMedium
@@ -118,6 +119,17 @@ public:
   double EmissionValue(const double p[3]) const;
   /// When the emission array (or its absence) last changed.
   vtkMTimeType GetEmissionTime() const { return this->EmissionArrayTime.GetMTime(); }
+  ///@}
+
+  ///@{
+  /**
+   * A particle cloud's medium (vtkTransmittanceParticleMapper): the
+   * particles whose sum the scalars sample (the table's extinction is then
+   * the scalar itself), and whether the extinction maps splat them instead
+   * of marching the scalars. Null and false for an image.
+   */
+  const vtkTyndallParticleMedium* GetParticles() const { return this->Particles; }
+  bool GetSplatParticles() const { return this->SplatParticles; }
   ///@}
 
   /// What the mapper's clipping planes and cropping keep.
@@ -201,6 +213,14 @@ public:
     /// Another array of the same layout (the emission array), not cleaned.
     Sampler(const vtkTyndallGridMedium& medium, const T* data);
     double Scalar(const double p[3]) const;
+    /**
+     * The scalar the CPU renderers integrate: Scalar(), or for a particle
+     * medium (GetParticles()) the particles' exact sum at p, no grid.
+     */
+    double ReferenceScalar(const double p[3]) const
+    {
+      return this->Medium->Particles ? this->Medium->ParticleScalar(p) : this->Scalar(p);
+    }
 
   private:
     double Value(T v) const
@@ -217,6 +237,9 @@ public:
     int Dims[3];
     vtkIdType Stride[3];
   };
+
+  /// The particles' exact sum at the field index point p (GetParticles() must be set).
+  double ParticleScalar(const double p[3]) const;
 
   /**
    * Sigma_t (density scale applied) at a world point, through the table:
@@ -261,6 +284,8 @@ private:
 
   // The table and the parameters.
   vtkTyndallTransferTable Table;
+  const vtkTyndallParticleMedium* Particles = nullptr;
+  bool SplatParticles = false;
   std::vector<double> TableKey;
   vtkTimeStamp TableTime;
   std::vector<double> ExtinctionKey;

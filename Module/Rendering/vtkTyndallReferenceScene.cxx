@@ -62,7 +62,7 @@ template <typename T>
 std::function<double(const double q[3])> GuestScalar(const vtkTyndallGridMedium& medium)
 {
   const vtkTyndallGridMedium::Sampler<T> sampler(medium);
-  return [sampler](const double q[3]) { return sampler.Scalar(q); };
+  return [sampler](const double q[3]) { return sampler.ReferenceScalar(q); };
 }
 }
 

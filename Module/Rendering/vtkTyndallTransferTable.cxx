@@ -11,7 +11,7 @@
 
 //------------------------------------------------------------------------------
 bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission,
-  double lo, double hi, std::string& error)
+  double lo, double hi, std::string& error, bool linearExtinction)
 {
   const double unitDistance = property->GetScalarOpacityUnitDistance(0);
   if (!(unitDistance > 0.0) || !std::isfinite(unitDistance))
@@ -37,8 +37,9 @@ bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransfe
   for (int i = 0; i < Size; ++i)
   {
     const double s = std::min(this->Scale > 0.0 ? lo + i / this->Scale : lo, hi);
-    this->Extinction[i] =
-      vtkTransmittanceMapMath::ExtinctionFromOpacity(opacity->GetValue(s), unitDistance, 1.0);
+    this->Extinction[i] = linearExtinction
+      ? std::max(s, 0.0)
+      : vtkTransmittanceMapMath::ExtinctionFromOpacity(opacity->GetValue(s), unitDistance, 1.0);
     double* albedo = this->Albedo.data() + 3 * i;
     if (gray)
     {

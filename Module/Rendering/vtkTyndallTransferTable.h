@@ -9,7 +9,9 @@
  *
  * - Extinction: sigma_t per world unit at DensityScale 1, from VTK's opacity
  *   semantics (vtkTransmittanceMapMath::ExtinctionFromOpacity of the scalar
- *   opacity and its unit distance); interpolated linearly in sigma_t;
+ *   opacity and its unit distance); interpolated linearly in sigma_t; with
+ *   `linearExtinction` (a particle medium) the scalar itself (its negative
+ *   part 0), the opacity unused;
  * - Albedo: the colour transfer function (RGB, or grey when the property has
  *   one colour channel);
  * - Emission: the emission colour transfer function (zero without one).
@@ -55,7 +57,7 @@ public:
    * property cannot be used (non-positive or non-finite unit distance).
    */
   bool Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission, double lo, double hi,
-    std::string& error);
+    std::string& error, bool linearExtinction = false);
 
   double Minimum = 0.0;
   double Maximum = 1.0;

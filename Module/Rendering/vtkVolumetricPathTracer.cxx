@@ -11,6 +11,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTyndallParticleMedium.h"
 #include "vtkTyndallReferenceScene.h"
 #include "vtkTyndallSceneReader.h"
 
@@ -162,7 +163,7 @@ private:
     {
       return this->S->Detail->Extinction(p);
     }
-    const double v = this->Field.Scalar(p);
+    const double v = this->Field.ReferenceScalar(p);
     if (std::isnan(v))
     {
       return 0.0;
@@ -178,7 +179,7 @@ private:
   {
     std::fill(color, color + 3, 0.0);
     std::fill(emission, emission + 3, 0.0);
-    const double v = this->Field.Scalar(p);
+    const double v = this->Field.ReferenceScalar(p);
     if (std::isnan(v))
     {
       return;
@@ -428,9 +429,15 @@ void RenderRows(const Scene& scene, const vtkTyndallGridMedium& medium,
   vtkSMPTools::For(begin, end, 1, tracer);
 }
 
-// The majorant of delta tracking (per world unit).
+// The majorant of delta tracking (per world unit): the table's largest
+// extinction, or for a particle medium (sampled exactly, not on its grid) a
+// bound of the particles' sum.
 double GridMajorant(const vtkTyndallGridMedium& medium)
 {
+  if (const vtkTyndallParticleMedium* particles = medium.GetParticles())
+  {
+    return medium.GetDensityScale() * particles->GetDensityBound();
+  }
   const std::vector<double>& extinction = medium.GetTable().Extinction;
   const double largest =
     extinction.empty() ? 0.0 : *std::max_element(extinction.begin(), extinction.end());

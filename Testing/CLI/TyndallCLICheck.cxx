@@ -28,6 +28,7 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMetaImageWriter.h"
 #include "vtkNIFTIImageWriter.h"
 #include "vtkNew.h"
@@ -650,6 +651,20 @@ int MakeData(const std::vector<std::string>& args)
     writer->SetInputConnection(sphere->GetOutputPort());
     writer->SetFileName((dir + "/sphere.vtk").c_str());
     writer->Write();
+  }
+  {
+    // A particle cloud (x y z radius density): a ring of puffs, and a bad one.
+    std::ostringstream csv;
+    csv << "x,y,z,radius,density\n";
+    for (int i = 0; i < 400; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * i / 400.0;
+      const double wobble = 0.15 * std::sin(7.0 * a);
+      csv << 0.9 * std::cos(a) << "," << wobble << "," << 0.9 * std::sin(a) << ","
+          << 0.08 + 0.04 * std::cos(5.0 * a) << "," << 2.0 + std::sin(3.0 * a) << "\n";
+    }
+    WriteText(dir + "/ring.csv", csv.str());
+    WriteText(dir + "/bad-particles.csv", "0,0,0,0.1,1\n1,0,0,-0.1,1\n");
   }
   // Corrupt files: an XML image file cut in the middle of its data, garbage
   // behind a NIfTI name, a MetaImage header whose raw file is missing.

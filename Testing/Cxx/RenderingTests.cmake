@@ -27,6 +27,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestVolumeShadowReceiver.cxx
   TestTransmittanceMapperSceneShadows.cxx
   TestTransmittanceMapperSceneCompositing.cxx
+  TestTransmittanceParticleMapper.cxx
   TestTransmittanceMapperDetail.cxx
   TestTransmittanceMapperOccluder.cxx
   TestTransmittanceMapperGeometry.cxx
