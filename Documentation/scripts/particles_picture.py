@@ -1,9 +1,10 @@
 """Renders the documentation's particle picture: a plume of 6000 particles
 (vtkTransmittanceParticleMapper) rising over the built-in cloud, a sun from
 the upper left, both drawn with ETM maps. Left: each lit as if alone
-(SceneShadows off); right: the default, one set of maps per light for both,
+(SceneShadows off); middle: the default, one set of maps per light for both,
 the particles splatted into it, so the plume's shadow falls on the cloud
-and the cloud's on the foot of the plume.
+and the cloud's on the foot of the plume; right: the same with a colour per
+particle (a "color" array: its albedo), rust at the foot to grey at the top.
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
         Documentation/scripts/particles_picture.py Documentation/images
@@ -31,8 +32,10 @@ radius = vtkDoubleArray()
 radius.SetName("radius")
 density = vtkDoubleArray()
 density.SetName("density")
+heights = []
 for i in range(6000):
     t = random.random()
+    heights.append(t)
     spread = 0.05 + 0.16 * t
     centre = (0.3 * math.sin(4.0 * t) - 0.15, 0.1 + 0.9 * t, 0.2 * math.cos(3.0 * t))
     points.InsertNextPoint(*(c + random.gauss(0.0, spread) for c in centre))
@@ -80,6 +83,15 @@ for shared in (False, True):
     for volume in (cloud, particles):
         volume.GetProperty().SetSceneShadows(shared)
     row.AddInputData(grab(window))
+# Per-particle colours: rust at the foot of the plume to grey at its top.
+colors = vtkDoubleArray()
+colors.SetName("color")
+colors.SetNumberOfComponents(3)
+for t in heights:
+    colors.InsertNextTuple3(0.95 - 0.3 * t, 0.45 + 0.2 * t, 0.2 + 0.45 * t)
+plume.GetPointData().AddArray(colors)
+plume.Modified()
+row.AddInputData(grab(window))
 writer = vtkPNGWriter()
 writer.SetInputConnection(row.GetOutputPort())
 writer.SetFileName(sys.argv[1] + "/particles.png")

@@ -264,6 +264,14 @@ private:
     if (own)
     {
       AddColors(*s.Table, k, f, sigma, emits, color, emission);
+      double albedo[3];
+      if (this->Field.ReferenceColor(p, albedo)) // a coloured particle cloud
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          color[c] = sigma * albedo[c];
+        }
+      }
     }
     else
     {

@@ -383,6 +383,11 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
       static_cast<float>(table.EmissionTextureShift()) };
     program->SetUniform2f("emissionToTable", toTable);
   }
+  if (vtkTextureObject* scattering = this->Textures->GetScatteringTexture())
+  {
+    // Declared only by the ray cast's particle-colour variant.
+    program->SetUniformi("scatteringTexture", scattering->GetTextureUnit());
+  }
   this->SetDetailUniforms(program);
 }
 

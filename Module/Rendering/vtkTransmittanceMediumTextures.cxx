@@ -1,6 +1,7 @@
 #include "vtkTransmittanceMediumTextures.h"
 
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
@@ -70,6 +71,12 @@ bool vtkTransmittanceMediumTextures::Update(
       return false;
     }
     this->ScalarsTime = medium.GetScalarsTime();
+    // A coloured particle cloud's scattering grid changes with its scalars.
+    if (!this->UploadScattering(window, medium, reporter))
+    {
+      this->ScalarsTime = 0;
+      return false;
+    }
   }
   // The emission array: its own upload, at the scalars' sampling (Factor).
   if (newScalars || medium.GetEmissionTime() > this->EmissionTime)
@@ -211,33 +218,74 @@ bool vtkTransmittanceMediumTextures::UploadEmission(
     this->EmissionTexture = nullptr;
     return true;
   }
-  // Every Factor-th sample, as the scalars.
+  return this->UploadSampled(
+    window, medium, emission.data(), 1, this->EmissionTexture, "emission array", reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadScattering(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  vtkFloatArray* scattering = medium.GetParticleScattering();
+  if (!scattering)
+  {
+    if (this->ScatteringTexture)
+    {
+      this->ScatteringTexture->ReleaseGraphicsResources(window);
+    }
+    this->ScatteringTexture = nullptr;
+    return true;
+  }
+  return this->UploadSampled(window, medium, scattering->GetPointer(0), 3, this->ScatteringTexture,
+    "particles' colour", reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadSampled(vtkOpenGLRenderWindow* window,
+  const vtkTyndallGridMedium& medium, const float* values, int components,
+  vtkSmartPointer<vtkTextureObject>& texture, const char* what, vtkObject* reporter)
+{
+  // Every Factor-th sample, as the scalars (all of them: no copy).
   const int* full = medium.GetDimensions();
   const int* dims = this->Dimensions;
-  std::vector<float> values(static_cast<size_t>(dims[0]) * dims[1] * dims[2]);
+  std::vector<float> sampled;
+  try
+  {
+    sampled.resize(
+      this->Factor > 1 ? static_cast<size_t>(dims[0]) * dims[1] * dims[2] * components : 0);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot allocate the " << what << "'s texture.");
+    return false;
+  }
   size_t i = 0;
-  for (int z = 0; z < dims[2]; ++z)
+  for (int z = 0; z < dims[2] && this->Factor > 1; ++z)
   {
     for (int y = 0; y < dims[1]; ++y)
     {
-      for (int x = 0; x < dims[0]; ++x, ++i)
+      for (int x = 0; x < dims[0]; ++x)
       {
-        values[i] = emission[(static_cast<size_t>(z) * this->Factor * full[1] +
-                               static_cast<size_t>(y) * this->Factor) *
+        const size_t from = (static_cast<size_t>(z) * this->Factor * full[1] +
+                              static_cast<size_t>(y) * this->Factor) *
             full[0] +
-          static_cast<size_t>(x) * this->Factor];
+          static_cast<size_t>(x) * this->Factor;
+        for (int c = 0; c < components; ++c)
+        {
+          sampled[i++] = values[components * from + c];
+        }
       }
     }
   }
-  if (!this->EmissionTexture)
+  if (!texture)
   {
-    this->EmissionTexture = vtkSmartPointer<vtkTextureObject>::New();
+    texture = vtkSmartPointer<vtkTextureObject>::New();
   }
-  vtkTransmittanceOffscreenDraw::SetClamped(this->EmissionTexture, window, true);
-  if (!this->EmissionTexture->Create3DFromRaw(
-        dims[0], dims[1], dims[2], 1, VTK_FLOAT, values.data()))
+  vtkTransmittanceOffscreenDraw::SetClamped(texture, window, true);
+  if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], components, VTK_FLOAT,
+        this->Factor > 1 ? static_cast<void*>(sampled.data()) : const_cast<float*>(values)))
   {
-    vtkErrorWithObjectMacro(reporter, << "Could not create the emission array's 3-D texture.");
+    vtkErrorWithObjectMacro(reporter, << "Could not create the " << what << "'s 3-D texture.");
     return false;
   }
   return true;
@@ -324,9 +372,9 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
 //------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture :
-    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get(),
-      this->BlockTexture.Get(), this->DetailTexture.Get(), this->EmissionTexture.Get() })
+  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
+         this->TransferTexture.Get(), this->BlockTexture.Get(), this->DetailTexture.Get(),
+         this->EmissionTexture.Get(), this->ScatteringTexture.Get() })
   {
     if (texture)
     {
@@ -339,6 +387,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->BlockTexture = nullptr;
   this->DetailTexture = nullptr;
   this->EmissionTexture = nullptr;
+  this->ScatteringTexture = nullptr;
   this->DetailTime = 0;
   this->UploadedMedium = nullptr;
   this->ScalarsTime = this->TableTime = this->EmissionTime = 0;

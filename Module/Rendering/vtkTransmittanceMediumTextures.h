@@ -66,6 +66,12 @@ public:
   vtkTextureObject* GetVolumeTexture() const { return this->VolumeTexture; }
   /// Null without an emission array (vtkTyndallGridMedium::GetEmissionValues()).
   vtkTextureObject* GetEmissionTexture() const { return this->EmissionTexture; }
+  /**
+   * A coloured particle cloud's scattering density
+   * (vtkTyndallGridMedium::GetParticleScattering(), RGB float, sampled like
+   * the scalars); null for any other medium.
+   */
+  vtkTextureObject* GetScatteringTexture() const { return this->ScatteringTexture; }
   /// Null when the scalars hold no NaN.
   vtkTextureObject* GetValidityTexture() const { return this->ValidityTexture; }
   vtkTextureObject* GetTransferTexture() const { return this->TransferTexture; }
@@ -103,6 +109,14 @@ private:
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadEmission(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadScattering(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  // Every Factor-th sample of `components`-component `values` (laid out like
+  // the scalars) into `texture`, created when needed; false with an error
+  // naming `what`.
+  bool UploadSampled(vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium,
+    const float* values, int components, vtkSmartPointer<vtkTextureObject>& texture,
+    const char* what, vtkObject* reporter);
   bool UploadMajorants(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
 
@@ -112,6 +126,7 @@ private:
   vtkSmartPointer<vtkTextureObject> BlockTexture;
   vtkSmartPointer<vtkTextureObject> DetailTexture;
   vtkSmartPointer<vtkTextureObject> EmissionTexture;
+  vtkSmartPointer<vtkTextureObject> ScatteringTexture;
   vtkMTimeType DetailTime = 0;
   vtkTyndallMajorantGrid Majorants;
   double BlockRangeTime = 0.0;

@@ -14,7 +14,14 @@
  * the colour transfer function of the summed density, anisotropy, light
  * scale, ambient, octaves, emission colour) is read as for an image. The
  * scalar opacity function is not used: a particle medium's extinction is its
- * density, so that particles add.
+ * density, so that particles add. With a three-component point-data array
+ * "color" (components in [0, 1]), each particle's colour is its albedo
+ * instead of the colour transfer function's, and where particles overlap
+ * the albedo is their colours' mean weighted by their extinctions (their
+ * scattering adds like their extinction); the GPU samples it from a grid of
+ * the scattering density beside the density's, the CPU renderers exactly.
+ * A coloured cloud is not drawn as one medium with the volumes it overlaps
+ * (SceneCompositing) but still shadows them and is shadowed by them.
  *
  * How it is rendered (Documentation/rendering-model.md, "Particles"):
  *
@@ -40,7 +47,8 @@
  * scene with the exact sum (no grid): the oracle the GPU is measured against.
  *
  * Bad input (no points, a missing or multi-component array, a non-finite
- * centre, a radius <= 0, a negative or non-finite density, more than 50
+ * centre, a radius <= 0, a negative or non-finite density, a colour array
+ * without three components or with a component outside [0, 1], more than 50
  * million particles) is an error through VTK's error mechanism and nothing
  * is drawn.
  *

@@ -156,6 +156,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   const bool emits = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
   variant.EmissionArray = emits && frame.Medium->GetEmissionFromArray();
   variant.Emission = emits && !variant.EmissionArray;
+  variant.ParticleColors = frame.Medium->GetParticleScattering() != nullptr;
   variant.Octaves = frame.Medium->GetScatteringOctaves();
   return variant;
 }

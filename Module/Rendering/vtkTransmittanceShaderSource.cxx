@@ -59,6 +59,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("OCCLUSION", variant.Occlusion ? 1 : 0);
   define("EMISSION", variant.Emission ? 1 : 0);
   define("EMISSION_ARRAY", variant.EmissionArray ? 1 : 0);
+  define("PARTICLE_COLORS", variant.ParticleColors ? 1 : 0);
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);

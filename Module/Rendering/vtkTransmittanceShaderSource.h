@@ -91,6 +91,7 @@ public:
     bool Occlusion = false;
     bool Emission = false;         // emission per unit extinction (the colour's table)
     bool EmissionArray = false;    // emission per unit length from a separate array
+    bool ParticleColors = false;   // the albedo from a coloured particle cloud's grid
     bool Accumulate = false;       // continues the rays of an earlier pass
     bool BruteForceLights = false; // some light marches to the light
     bool LightCache = false;       // map lights read the transmittance cache

@@ -195,7 +195,7 @@ public:
     std::vector<vtkTextureObject*> textures = { this->Textures->GetVolumeTexture(),
       this->Textures->GetValidityTexture(), this->Textures->GetTransferTexture(),
       this->Textures->GetBlockTexture(), this->Textures->GetDetailTexture(),
-      this->Textures->GetEmissionTexture() };
+      this->Textures->GetEmissionTexture(), this->Textures->GetScatteringTexture() };
     for (const vtkTransmittanceMediumTextures* guest : this->GuestTextures)
     {
       textures.push_back(guest->GetVolumeTexture());

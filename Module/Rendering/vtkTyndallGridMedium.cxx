@@ -8,6 +8,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
@@ -91,6 +92,7 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
 {
+  this->ParticleScattering = nullptr; // set again below for a coloured particle cloud
   vtkAbstractVolumeMapper* mapper = volume ? volume->GetMapper() : nullptr;
   if (!mapper)
   {
@@ -122,6 +124,11 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
                                       << "; a vtkImageData is needed.");
     return false;
   }
+  // A coloured particle cloud's scattering density, voxelised beside the
+  // density (vtkTyndallParticleMedium::Voxelize()): it changes with the image.
+  this->ParticleScattering = this->Particles && this->Particles->HasColors()
+    ? vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("scattering"))
+    : nullptr;
   int cellFlag = 0;
   vtkDataArray* scalars = vtkAbstractMapper::GetScalars(image, mapper->GetScalarMode(),
     mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
@@ -330,6 +337,23 @@ double vtkTyndallGridMedium::ParticleScalar(const double p[3]) const
     x[r] = row[0] * p[0] + row[1] * p[1] + row[2] * p[2] + row[3];
   }
   return this->Particles->Density(x);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::ParticleColor(const double p[3], double color[3]) const
+{
+  if (!this->Particles || !this->Particles->HasColors())
+  {
+    return false;
+  }
+  double x[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    const double* row = this->IndexToData + 4 * r;
+    x[r] = row[0] * p[0] + row[1] * p[1] + row[2] * p[2] + row[3];
+  }
+  this->Particles->Density(x, color);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -38,6 +38,7 @@
 
 #include "TyndallRenderingModule.h"  // For export macro
 #include "vtkDataArray.h"            // For the sampler
+#include "vtkFloatArray.h"           // For vtkFloatArray
 #include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkTimeStamp.h"            // For vtkTimeStamp
 #include "vtkTyndallClipRegion.h"    // For the clip region
@@ -132,6 +133,22 @@ public:
   bool GetSplatParticles() const { return this->SplatParticles; }
   ///@}
 
+  /**
+   * A coloured particle cloud (vtkTyndallParticleMedium::HasColors()): the
+   * grid of its scattering density (density times albedo, three components
+   * per sample, beside the scalars: the GPU's albedo is its interpolation
+   * over the scalars'); null otherwise. The colour transfer function is then
+   * not used for the albedo.
+   */
+  vtkFloatArray* GetParticleScattering() const { return this->ParticleScattering; }
+
+  /**
+   * The albedo of a coloured particle cloud at the field index point p,
+   * exact (the particles' colours weighted by their extinctions); false,
+   * `color` untouched, for any other medium.
+   */
+  bool ParticleColor(const double p[3], double color[3]) const;
+
   /// What the mapper's clipping planes and cropping keep.
   const vtkTyndallClipRegion& GetClip() const { return this->Clip; }
 
@@ -221,6 +238,15 @@ public:
     {
       return this->Medium->Particles ? this->Medium->ParticleScalar(p) : this->Scalar(p);
     }
+    /**
+     * The albedo the CPU renderers use at p when it does not come from the
+     * table: a coloured particle cloud's exact colour
+     * (vtkTyndallGridMedium::ParticleColor()); false otherwise.
+     */
+    bool ReferenceColor(const double p[3], double color[3]) const
+    {
+      return this->Medium->ParticleColor(p, color);
+    }
 
   private:
     double Value(T v) const
@@ -286,6 +312,7 @@ private:
   vtkTyndallTransferTable Table;
   const vtkTyndallParticleMedium* Particles = nullptr;
   bool SplatParticles = false;
+  vtkSmartPointer<vtkFloatArray> ParticleScattering;
   std::vector<double> TableKey;
   vtkTimeStamp TableTime;
   std::vector<double> ExtinctionKey;

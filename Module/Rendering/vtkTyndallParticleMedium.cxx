@@ -38,6 +38,44 @@ vtkDataArray* PerParticleArray(vtkPolyData* particles, const char* name, std::st
   error = os.str();
   return error.empty() ? array : nullptr;
 }
+
+// The particles' optional "color" array into `colors` (3 per particle);
+// false with `error` set when it is there but unusable.
+bool ReadColors(vtkPolyData* particles, std::vector<double>& colors, std::string& error)
+{
+  vtkDataArray* array = particles->GetPointData()->GetArray("color");
+  if (!array)
+  {
+    return true;
+  }
+  const vtkIdType n = particles->GetNumberOfPoints();
+  std::ostringstream os;
+  if (array->GetNumberOfComponents() != 3 || array->GetNumberOfTuples() != n)
+  {
+    os << "The particles' array \"color\" has " << array->GetNumberOfTuples() << " values of "
+       << array->GetNumberOfComponents() << " components for " << n
+       << " particles (three components per particle are needed).";
+    error = os.str();
+    return false;
+  }
+  colors.resize(3 * static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = array->GetComponent(i, c);
+      if (!(v >= 0.0 && v <= 1.0))
+      {
+        os << "Particle " << i << " has the colour component " << v
+           << "; colours must lie in [0, 1].";
+        error = os.str();
+        return false;
+      }
+      colors[3 * i + c] = v;
+    }
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -55,8 +93,9 @@ bool vtkTyndallParticleMedium::Update(vtkPolyData* particles, std::string& error
   }
   vtkDataArray* radius = PerParticleArray(particles, "radius", error);
   vtkDataArray* density = radius ? PerParticleArray(particles, "density", error) : nullptr;
-  if (!density)
+  if (!density || !ReadColors(particles, this->Colors, error))
   {
+    *this = vtkTyndallParticleMedium();
     return false;
   }
   this->Centers.resize(3 * n);
@@ -189,6 +228,28 @@ int vtkTyndallParticleMedium::CellIndex(int a, double x) const
 //------------------------------------------------------------------------------
 double vtkTyndallParticleMedium::Density(const double x[3]) const
 {
+  return this->Sum(x, nullptr);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallParticleMedium::Density(const double x[3], double color[3]) const
+{
+  double scattering[3] = { 0.0, 0.0, 0.0 };
+  const double density = this->Sum(x, this->HasColors() ? scattering : nullptr);
+  for (int c = 0; c < 3; ++c)
+  {
+    color[c] = this->HasColors() && density > 0.0 ? scattering[c] / density : 1.0;
+  }
+  return density;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallParticleMedium::Sum(const double x[3], double* color) const
+{
+  if (color)
+  {
+    std::fill(color, color + 3, 0.0);
+  }
   if (this->CellStart.empty())
   {
     return 0.0;
@@ -210,8 +271,16 @@ double vtkTyndallParticleMedium::Density(const double x[3]) const
     const vtkIdType i = this->CellParticles[k];
     const double* c = this->Centers.data() + 3 * i;
     const double dx = x[0] - c[0], dy = x[1] - c[1], dz = x[2] - c[2];
-    sum += vtkParticleKernel::Extinction(
+    const double e = vtkParticleKernel::Extinction(
       std::sqrt(dx * dx + dy * dy + dz * dz), this->Radius[i], this->DensityValues[i]);
+    sum += e;
+    if (color)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        color[a] += e * this->Colors[3 * i + a];
+      }
+    }
   }
   return sum;
 }
@@ -247,6 +316,11 @@ void vtkTyndallParticleMedium::Voxelize(int longestSide, vtkImageData* image) co
   values->SetName("density");
   values->SetNumberOfTuples(static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2]);
   float* out = values->GetPointer(0);
+  vtkNew<vtkFloatArray> scattering;
+  scattering->SetName("scattering");
+  scattering->SetNumberOfComponents(3);
+  scattering->SetNumberOfTuples(this->HasColors() ? values->GetNumberOfTuples() : 0);
+  float* rgb = this->HasColors() ? scattering->GetPointer(0) : nullptr;
   vtkSMPTools::For(0, dims[2],
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -258,10 +332,20 @@ void vtkTyndallParticleMedium::Voxelize(int longestSide, vtkImageData* image) co
           {
             const double p[3] = { origin[0] + x * spacing, origin[1] + y * spacing,
               origin[2] + z * spacing };
-            out[(z * dims[1] + y) * dims[0] + x] = static_cast<float>(this->Density(p));
+            const vtkIdType i = (z * dims[1] + y) * dims[0] + x;
+            double c[3];
+            out[i] = static_cast<float>(this->Sum(p, rgb ? c : nullptr));
+            for (int a = 0; rgb && a < 3; ++a)
+            {
+              rgb[3 * i + a] = static_cast<float>(c[a]);
+            }
           }
         }
       }
     });
   image->GetPointData()->SetScalars(values);
+  if (this->HasColors())
+  {
+    image->GetPointData()->AddArray(scattering);
+  }
 }

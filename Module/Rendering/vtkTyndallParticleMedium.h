@@ -19,11 +19,20 @@
  *   kernel is zero.
  * - GetSplatVertices() is what the GPU splats into the extinction maps: per
  *   particle its centre, radius and density (5 floats).
+ * - Colours (optional): with a three-component point-data array "color"
+ *   (vtkParticleFileReader's), each particle's colour is its albedo, and
+ *   where particles overlap the medium's albedo is their mean weighted by
+ *   their extinctions, sum(rho_i k_i c_i) / sum(rho_i k_i): scattering adds
+ *   like extinction. Density() gives it exactly; Voxelize() adds the
+ *   scattering density sum(rho_i k_i c_i) as a three-component array, from
+ *   which the GPU divides the interpolated scattering by the interpolated
+ *   density.
  *
  * Update() reads a vtkPolyData: at least one point and at most
  * MaximumNumberOfParticles, finite coordinates, the two arrays (one
  * component, one value per point), every radius finite and > 0 and every
- * density finite and >= 0. Anything else is an error and an empty medium.
+ * density finite and >= 0, and if there is a "color" array, three components
+ * in [0, 1] per point. Anything else is an error and an empty medium.
  *
  * Internal to Tyndall::Rendering; not wrapped.
  *
@@ -73,11 +82,22 @@ public:
   /// The exact density (the sum of the kernels) at the data point x.
   double Density(const double x[3]) const;
 
+  /// Whether the particles have colours (a "color" array).
+  bool HasColors() const { return !this->Colors.empty(); }
+
+  /**
+   * The exact density at the data point x, and in `color` the albedo there:
+   * the particles' colours weighted by their extinctions (without colours,
+   * or where the density is 0: white).
+   */
+  double Density(const double x[3], double color[3]) const;
+
   /**
    * Samples Density() at the nodes of `image`: isotropic spacing, the
    * longest side of GetBounds() `longestSide` nodes (at least 2), the
    * outermost nodes on the bounds. The point scalars are a float array
-   * named "density".
+   * named "density"; with colours, a three-component float array named
+   * "scattering" holds the density times the albedo at each node.
    */
   void Voxelize(int longestSide, vtkImageData* image) const;
 
@@ -89,12 +109,15 @@ public:
 
 private:
   void BuildCells();
+  // The density at x, and with `color` the sum of density x colour.
+  double Sum(const double x[3], double* color) const;
   // The cell of a data coordinate along axis a, clamped to the grid.
   int CellIndex(int a, double x) const;
 
   std::vector<double> Centers; // 3 per particle
   std::vector<double> Radius;
   std::vector<double> DensityValues;
+  std::vector<double> Colors; // 3 per particle, or none
   std::vector<float> SplatVertices;
   double Bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   double MaximumRadius = 0.0;

@@ -188,6 +188,7 @@ private:
     double f;
     this->S->Table->Locate(v, k, f);
     vtkTyndallTransferTable::RGBAt(this->S->Table->Albedo, k, f, color);
+    this->Field.ReferenceColor(p, color); // a coloured particle cloud's own
     if (this->S->HasEmission && this->S->SingleScattering)
     {
       vtkTyndallTransferTable::RGBAt(this->S->Table->Emission, k, f, emission);

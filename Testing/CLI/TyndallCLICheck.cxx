@@ -664,6 +664,17 @@ int MakeData(const std::vector<std::string>& args)
           << 0.08 + 0.04 * std::cos(5.0 * a) << "," << 2.0 + std::sin(3.0 * a) << "\n";
     }
     WriteText(dir + "/ring.csv", csv.str());
+    // The same ring with colours (x y z radius density r g b): orange and blue halves.
+    std::ostringstream coloured;
+    for (int i = 0; i < 400; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * i / 400.0;
+      const bool left = std::cos(a) < 0.0;
+      coloured << 0.9 * std::cos(a) << " " << 0.15 * std::sin(7.0 * a) << " " << 0.9 * std::sin(a)
+               << " " << 0.08 + 0.04 * std::cos(5.0 * a) << " " << 2.0 + std::sin(3.0 * a)
+               << (left ? " 0.95 0.45 0.15\n" : " 0.2 0.45 0.95\n");
+    }
+    WriteText(dir + "/ring-coloured.txt", coloured.str());
     WriteText(dir + "/bad-particles.csv", "0,0,0,0.1,1\n1,0,0,-0.1,1\n");
   }
   // Corrupt files: an XML image file cut in the middle of its data, garbage

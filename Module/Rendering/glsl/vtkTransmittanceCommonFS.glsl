@@ -16,6 +16,10 @@
 // extinction per unit length before the density scale; emission row rgb =
 // emission colour).
 uniform sampler3D volumeTexture;
+#if TYNDALL_PARTICLE_COLORS
+// A coloured particle cloud: density x albedo per node, beside the density.
+uniform sampler3D scatteringTexture;
+#endif
 #if TYNDALL_MISSING_DATA
 // NaN voxels (missing data): 0 there, 1 elsewhere; a sample whose filtered
 // validity is below 1 is empty.
@@ -154,7 +158,13 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   float value = texture(volumeTexture, texel).r;
   tableCoord = value * scalarToTable.x + scalarToTable.y;
   vec4 tf = texture(transferTexture, vec2(tableCoord, TYNDALL_TABLE_ALBEDO_ROW));
+#if TYNDALL_PARTICLE_COLORS
+  // A coloured particle cloud: the interpolated scattering density over the
+  // interpolated density, the nodes' colours weighted by their extinctions.
+  color = value > 0.0 ? clamp(texture(scatteringTexture, texel).rgb / value, 0.0, 1.0) : vec3(1.0);
+#else
   color = tf.rgb;
+#endif
 #if TYNDALL_DETAIL_GROUPS > 0
   return tyndallDetailExtinction(q);
 #else
