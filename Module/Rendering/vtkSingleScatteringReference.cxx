@@ -261,17 +261,11 @@ private:
     // Alone, the ray was clipped to the box: its samples lie inside.
     const bool own = (!s.CameraGuests || Scene::InsideBox(p, s.BoxLow, s.BoxHigh)) &&
       this->Extinction(p, sigma, k, f);
+    double albedo[3]; // a coloured particle cloud's, else the table's
     if (own)
     {
-      AddColors(*s.Table, k, f, sigma, emits, color, emission);
-      double albedo[3];
-      if (this->Field.ReferenceColor(p, albedo)) // a coloured particle cloud
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          color[c] = sigma * albedo[c];
-        }
-      }
+      const bool coloured = this->Field.ReferenceColor(p, albedo);
+      AddColors(*s.Table, k, f, sigma, emits, coloured ? albedo : nullptr, color, emission);
     }
     else
     {
@@ -283,7 +277,8 @@ private:
       if (g.Camera && (g.ToGuest(p, q), g.Sample(q, sg, k, f)) && sg > 0.0)
       {
         sigma += sg;
-        AddColors(*g.Table, k, f, sg, emits, color, emission);
+        const bool coloured = g.Medium->ParticleColor(q, albedo);
+        AddColors(*g.Table, k, f, sg, emits, coloured ? albedo : nullptr, color, emission);
       }
     }
     if (!(sigma > 0.0))
@@ -298,13 +293,17 @@ private:
     return true;
   }
 
-  // Adds weight x the colour (and the emission colour when `emits`) at the
-  // table position (k, f) of `table`.
+  // Adds weight x the colour (`albedo`, or without it the table's) and
+  // the emission colour when `emits` at the table position (k, f) of `table`.
   static void AddColors(const vtkTyndallTransferTable& table, int k, double f, double weight,
-    bool emits, double color[3], double emission[3])
+    bool emits, const double* albedo, double color[3], double emission[3])
   {
     double c[3];
     vtkTyndallTransferTable::RGBAt(table.Albedo, k, f, c);
+    if (albedo)
+    {
+      std::copy(albedo, albedo + 3, c);
+    }
     double e[3] = { 0.0, 0.0, 0.0 };
     if (emits)
     {

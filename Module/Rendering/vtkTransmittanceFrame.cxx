@@ -310,6 +310,8 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   variant.Chromatic = this->Medium && this->Medium->GetChromatic();
   variant.Guests = static_cast<int>(this->Guests.size());
   variant.CameraGuests = this->HasCameraGuests();
+  variant.GuestColors = std::any_of(this->Guests.begin(), this->Guests.end(),
+    [](const Guest& g) { return g.Camera && g.Textures->GetScatteringTexture(); });
   if (variant.CameraGuests)
   {
     variant.SkipEmpty = false; // the blocks are this medium's alone
@@ -502,6 +504,20 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   if (this->HasCameraGuests())
   {
     program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only
+    // Declared by the coloured-guest variant only: a coloured particle
+    // cloud's scattering grid, the others their own volume (a valid 3-D
+    // texture on a unit of its own, never read).
+    int scattering[kMaxGuests] = {};
+    float colored[kMaxGuests] = {};
+    for (int g = 0; g < n; ++g)
+    {
+      vtkTextureObject* grid = this->Guests[g].Textures->GetScatteringTexture();
+      colored[g] = grid && this->Guests[g].Camera ? 1.0f : 0.0f;
+      scattering[g] =
+        (grid ? grid : this->Guests[g].Textures->GetVolumeTexture())->GetTextureUnit();
+    }
+    program->SetUniform1iv("guestScattering", n, scattering);
+    program->SetUniform1fv("guestColored", n, colored);
   }
 }
 

@@ -19,9 +19,9 @@
  * instead of the colour transfer function's, and where particles overlap
  * the albedo is their colours' mean weighted by their extinctions (their
  * scattering adds like their extinction); the GPU samples it from a grid of
- * the scattering density beside the density's, the CPU renderers exactly.
- * A coloured cloud is not drawn as one medium with the volumes it overlaps
- * (SceneCompositing) but still shadows them and is shadowed by them.
+ * the scattering density beside the density's, the CPU renderers exactly,
+ * also where it is drawn as one medium with the volumes it overlaps
+ * (SceneCompositing).
  *
  * How it is rendered (Documentation/rendering-model.md, "Particles"):
  *

@@ -79,6 +79,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   // Guests: the other media the light crosses, and the loop over them.
   define("GUESTS", variant.Guests);
   define("CAMERA_GUESTS", variant.Guests > 0 && variant.CameraGuests ? 1 : 0);
+  define("GUEST_COLORS", variant.Guests > 0 && variant.CameraGuests && variant.GuestColors ? 1 : 0);
   os << "#define TYNDALL_FOR_GUESTS(X)";
   for (int g = 0; g < variant.Guests; ++g)
   {

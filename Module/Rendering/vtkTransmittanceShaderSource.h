@@ -104,6 +104,8 @@ public:
     int Guests = 0;
     /// The camera rays sample some guests too (vtkTransmittanceFrame::Guest::Camera).
     bool CameraGuests = false;
+    /// Some camera guest is a coloured particle cloud (its albedo from its scattering grid).
+    bool GuestColors = false;
     /// Extinction per channel: light and view transmittances per channel.
     bool Chromatic = false;
     /// Transmittance-function maps of a coloured extinction: one set per channel.

@@ -200,6 +200,7 @@ public:
     {
       textures.push_back(guest->GetVolumeTexture());
       textures.push_back(guest->GetTransferTexture());
+      textures.push_back(guest->GetScatteringTexture()); // null but for a coloured cloud
     }
     return vtkTransmittanceScopedTextures(textures);
   }

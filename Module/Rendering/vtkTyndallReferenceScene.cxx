@@ -113,6 +113,7 @@ void vtkTyndallReferenceScene::SetUpGuests(const vtkTyndallSceneReader& reader)
     this->GuestDiagonals += medium->GetWorldDiagonal();
     g.DensityScale = medium->GetDensityScale();
     g.Table = &medium->GetTable();
+    g.Medium = medium;
     // This medium's index -> world -> the guest's index.
     double m[16];
     vtkMatrix4x4::Multiply4x4(medium->GetWorldToIndex(), toWorld, m);

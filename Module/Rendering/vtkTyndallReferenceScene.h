@@ -115,6 +115,8 @@ public:
     const vtkTyndallTransferTable* Table = nullptr;
     std::function<double(const double q[3])> Scalar;
     bool Camera = false;
+    /// The guest's medium (a coloured particle cloud's albedo: ParticleColor()).
+    const vtkTyndallGridMedium* Medium = nullptr;
 
     /// The guest's index point of this medium's index point p.
     void ToGuest(const double p[3], double q[3]) const;

@@ -53,8 +53,7 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
     !property->GetDetailNoise() && medium->GetNumberOfNaNScalars() == 0 &&
-    !medium->GetClip().Enabled() && !medium->GetChromatic() && !medium->GetEmissionFromArray() &&
-    !medium->GetParticleScattering();
+    !medium->GetClip().Enabled() && !medium->GetChromatic() && !medium->GetEmissionFromArray();
 }
 
 // Whether the world boxes of two media overlap (their world-axis bounds, by
@@ -397,13 +396,12 @@ void vtkTyndallSceneReader::WarnLayers(const std::vector<vtkVolume*>& volumes,
     if (j != me && group[j] != group[me] && media[me] && media[j] && compositing(volumes[me]) &&
       compositing(volumes[j]) && Overlap(*media[me], *media[j]))
     {
-      warning
-        << "This volume's box overlaps that of Tyndall volume " << j
-        << " (counting the renderer's visible Tyndall volumes from 0), but they cannot be "
-           "drawn as one medium (different lighting "
-           "settings, or missing data, clipping, cropping, detail, a coloured extinction, "
-           "an emission array or coloured particles): each is drawn as a layer, wrong where they "
-           "interpenetrate along a camera ray. ";
+      warning << "This volume's box overlaps that of Tyndall volume " << j
+              << " (counting the renderer's visible Tyndall volumes from 0), but they cannot be "
+                 "drawn as one medium (different lighting "
+                 "settings, or missing data, clipping, cropping, detail, a coloured extinction "
+                 "or an emission array): each is drawn as a layer, wrong where they "
+                 "interpenetrate along a camera ray. ";
     }
   }
   if (!warning.str().empty() && warning.str() != this->LastCameraWarning)

@@ -35,7 +35,7 @@
  * - the camera group (the property's SceneCompositing): among the first
  *   MaximumNumberOfGuests + 1 visible Tyndall volumes of the renderer, those
  *   that can be drawn together (SceneShadows and SceneCompositing on, read
- *   as guests are, no emission array or particle colours, the same lighting settings:
+ *   as guests are, no emission array, the same lighting settings:
  *   SameLighting()) and whose world boxes overlap, directly or through
  *   others, form a group; the first of a group in the renderer's order
  *   draws it (GetCameraGuests(): the members among its guests) and the

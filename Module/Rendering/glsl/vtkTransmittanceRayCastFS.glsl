@@ -307,23 +307,45 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 // they overlap it and are lit alike): 1 for a guest the camera rays sample.
 uniform float guestCamera[TYNDALL_GUESTS];
 
+#if TYNDALL_GUEST_COLORS
+// Coloured particle clouds among the guests: 1 for such a guest, whose
+// albedo is its scattering grid over its density (the others' samplers
+// point at their own volumes and are not read).
+uniform sampler3D guestScattering[TYNDALL_GUESTS];
+uniform float guestColored[TYNDALL_GUESTS];
+#define TYNDALL_GUEST_SCATTERING(g) guestScattering[g],
+#else
+#define TYNDALL_GUEST_SCATTERING(g)
+#endif
+
 // Guest g's extinction at x (0 outside its box or when the camera rays do
 // not sample it); adds its colour and emission, weighted by it, to `color`
 // and `emission`.
-float tyndallGuestCameraSample(
-  sampler3D volume, sampler2D table, int g, vec3 x, inout vec3 color, inout vec3 emission)
+float tyndallGuestCameraSample(sampler3D volume, sampler2D table,
+#if TYNDALL_GUEST_COLORS
+  sampler3D scattering,
+#endif
+  int g, vec3 x, inout vec3 color, inout vec3 emission)
 {
   vec3 q = (guestWorldToBox[g] * vec4(x, 1.0)).xyz;
   if (guestCamera[g] == 0.0 || any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0))))
   {
     return 0.0;
   }
-  float value = texture(volume, q * guestTexScale[g] + guestTexShift[g]).r;
+  vec3 texel = q * guestTexScale[g] + guestTexShift[g];
+  float value = texture(volume, texel).r;
   vec2 toTable = guestScalarToTable[g];
   float coord = value * toTable.x + toTable.y;
   vec4 tf = texture(table, vec2(coord, TYNDALL_TABLE_ALBEDO_ROW));
   float sigma = guestDensity[g] * tf.a;
-  color += sigma * tf.rgb;
+  vec3 albedo = tf.rgb;
+#if TYNDALL_GUEST_COLORS
+  if (guestColored[g] > 0.0)
+  {
+    albedo = value > 0.0 ? clamp(texture(scattering, texel).rgb / value, 0.0, 1.0) : vec3(1.0);
+  }
+#endif
+  color += sigma * albedo;
 #if TYNDALL_EMISSION
   emission += sigma * texture(table, vec2(coord, TYNDALL_TABLE_EMISSION_ROW)).rgb;
 #endif
@@ -331,7 +353,7 @@ float tyndallGuestCameraSample(
 }
 
 // Samplers are indexed by constants only (GLSL 1.50): one statement per guest.
-#define TYNDALL_GUEST_CAMERA_SAMPLE(g) sigma += tyndallGuestCameraSample(guestVolume[g], guestTransfer[g], g, x, color, emission);
+#define TYNDALL_GUEST_CAMERA_SAMPLE(g) sigma += tyndallGuestCameraSample(guestVolume[g], guestTransfer[g], TYNDALL_GUEST_SCATTERING(g) g, x, color, emission);
 
 // What the camera rays see at x: the extinction of this medium (empty
 // outside its box) plus its camera guests', returned; their colours and
