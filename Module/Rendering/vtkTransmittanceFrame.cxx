@@ -310,8 +310,6 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   variant.Chromatic = this->Medium && this->Medium->GetChromatic();
   variant.Guests = static_cast<int>(this->Guests.size());
   variant.CameraGuests = this->HasCameraGuests();
-  variant.GuestColors = std::any_of(this->Guests.begin(), this->Guests.end(),
-    [](const Guest& g) { return g.Camera && g.Textures->GetScatteringTexture(); });
   if (variant.CameraGuests)
   {
     variant.SkipEmpty = false; // the blocks are this medium's alone

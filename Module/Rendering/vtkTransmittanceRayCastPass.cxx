@@ -13,6 +13,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallDetailMedium.h"
@@ -157,6 +158,10 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   variant.EmissionArray = emits && frame.Medium->GetEmissionFromArray();
   variant.Emission = emits && !variant.EmissionArray;
   variant.ParticleColors = frame.Medium->GetParticleScattering() != nullptr;
+  // Only the camera rays read colours: the other passes keep their programs.
+  variant.GuestColors = std::any_of(frame.Guests.begin(), frame.Guests.end(),
+    [](const vtkTransmittanceFrame::Guest& g)
+    { return g.Camera && g.Textures->GetScatteringTexture(); });
   variant.Octaves = frame.Medium->GetScatteringOctaves();
   return variant;
 }

@@ -113,6 +113,25 @@ struct ParticleScene
   }
 };
 
+// The 64^3 test cloud as a volume of scale `scale` (AdaptiveETM, maps 128^2).
+struct CloudVolume
+{
+  vtkNew<vtkTransmittanceVolumeMapper> Mapper;
+  vtkNew<vtkVolume> Volume;
+  vtkSmartPointer<vtkParticipatingMediumProperty> Property = tyndall_test::MakeCloudProperty();
+
+  explicit CloudVolume(double scale)
+  {
+    this->Mapper->SetInputData(tyndall_test::MakeCloud(64));
+    this->Mapper->JitterOff();
+    this->Mapper->SetTransmittanceMapSize(128);
+    this->Property->SetAmbientIntensity(0.1);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Volume->SetScale(scale);
+  }
+};
+
 // The largest difference between light 0's ETM map and the closed-form sum,
 // relative to the map's largest coefficient.
 double MapError(ParticleScene& scene, vtkPolyData* particles)
@@ -256,16 +275,10 @@ void SharedShadows()
   ParticleScene scene(particles, 96);
   scene.Mapper->SetGridResolution(64);
   scene.Volume->SetPosition(0.0, 0.9, 0.0);
-  vtkNew<vtkTransmittanceVolumeMapper> cloudMapper;
-  cloudMapper->SetInputData(tyndall_test::MakeCloud(64));
-  cloudMapper->JitterOff();
-  cloudMapper->SetTransmittanceMapSize(128);
-  vtkNew<vtkVolume> cloud;
-  cloud->SetMapper(cloudMapper);
-  auto cloudProperty = tyndall_test::MakeCloudProperty();
-  cloudProperty->SetAmbientIntensity(0.1);
-  cloud->SetProperty(cloudProperty);
-  cloud->SetScale(0.7);
+  CloudVolume cloudVolume(0.7);
+  vtkVolume* cloud = cloudVolume.Volume;
+  vtkTransmittanceVolumeMapper* cloudMapper = cloudVolume.Mapper;
+  vtkParticipatingMediumProperty* cloudProperty = cloudVolume.Property;
   cloud->SetPosition(0.0, -1.0, 0.0);
   scene.Renderer->AddVolume(cloud);
   scene.Renderer->GetCullers()->InitTraversal();
@@ -389,16 +402,9 @@ void ColouredGroup()
   ParticleScene scene(particles, 96);
   scene.Mapper->SetGridResolution(64);
   scene.Mapper->SetTransmittanceMethod(M::ADAPTIVE_ETM);
-  vtkNew<vtkTransmittanceVolumeMapper> cloudMapper;
-  cloudMapper->SetInputData(tyndall_test::MakeCloud(64));
-  cloudMapper->JitterOff();
-  cloudMapper->SetTransmittanceMapSize(128);
-  vtkNew<vtkVolume> cloud;
-  cloud->SetMapper(cloudMapper);
-  auto cloudProperty = tyndall_test::MakeCloudProperty();
-  cloudProperty->SetAmbientIntensity(0.1);
-  cloud->SetProperty(cloudProperty);
-  cloud->SetScale(0.8);
+  CloudVolume cloudVolume(0.8);
+  vtkVolume* cloud = cloudVolume.Volume;
+  vtkParticipatingMediumProperty* cloudProperty = cloudVolume.Property;
   scene.Renderer->AddLight(tyndall_test::MakeSun(0.6, 1.0, 0.4));
   auto* particleProperty =
     vtkParticipatingMediumProperty::SafeDownCast(scene.Volume->GetProperty());
@@ -407,8 +413,8 @@ void ColouredGroup()
   {
     // The particles drawing the group (first in the renderer), then the cloud.
     scene.Renderer->RemoveAllViewProps();
-    scene.Renderer->AddVolume(order == 0 ? scene.Volume.Get() : cloud.Get());
-    scene.Renderer->AddVolume(order == 0 ? cloud.Get() : scene.Volume.Get());
+    scene.Renderer->AddVolume(order == 0 ? scene.Volume.Get() : cloud);
+    scene.Renderer->AddVolume(order == 0 ? cloud : scene.Volume.Get());
     scene.Window->Render();
     vtkSmartPointer<vtkImageData> gpu = tyndall_test::Grab(scene.Window);
     vtkNew<vtkSingleScatteringReference> a, b;
