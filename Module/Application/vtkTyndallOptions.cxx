@@ -168,12 +168,14 @@ const Spec kOptions[] = {
     "multiple-scattering octaves (single scattering): each adds light seen through less "
     "extinction, scattered more isotropically; 1 = single scattering alone",
     KeyMode::Add, "m", "n", 1.0 },
-  { "octave-scattering", "", Kind::Number, 0, 1, false, "", "A", "0.9", "Scattering", Both,
+  { "octave-scattering", "", Kind::Number, 0, 4, false, "", "A", "1.3", "Scattering", Both,
     "light scattered by each further octave, times the albedo" },
-  { "octave-extinction", "", Kind::Number, 0, 1, false, "", "B", "0.3", "Scattering", Both,
+  { "octave-extinction", "", Kind::Number, 0, 1, false, "", "B", "0.45", "Scattering", Both,
     "extinction the light of each further octave sees (relative to the one before)" },
   { "octave-anisotropy", "", Kind::Number, 0, 1, false, "", "C", "0", "Scattering", Both,
     "anisotropy of each further octave (relative to the one before)" },
+  { "octave-build-up", "", Kind::Number, 0, 64, false, "", "S", "6", "Scattering", Both,
+    "build-up of the further octaves: times 1 - T^S (T the light's transmittance; 0 = off)" },
   { "emission-scale", "", Kind::Number, 0, Huge, false, "", "E", "0", "Scattering", Both,
     "emission strength (single scattering); the emission colour comes from the transfer "
     "function file's 'emission' lines, else its colour" },

@@ -651,6 +651,7 @@ void vtkTyndallSceneBuilder::ApplyMediumOptions(vtkParticipatingMediumProperty* 
   medium->SetOctaveScattering(o->GetNumber("octave-scattering"));
   medium->SetOctaveExtinction(o->GetNumber("octave-extinction"));
   medium->SetOctaveAnisotropy(o->GetNumber("octave-anisotropy"));
+  medium->SetOctaveBuildUp(o->GetNumber("octave-build-up"));
   if (o->IsSet("extinction-color"))
   {
     double color[3];

@@ -297,8 +297,8 @@ double vtkTransmittanceMapMath::HenyeyGreenstein(double g, double mu)
 }
 
 //------------------------------------------------------------------------------
-void vtkTransmittanceMapMath::OctaveScattering(int n, double a, double b, double c, double g,
-  double mu, double T, const double albedo[3], double weight[3])
+void vtkTransmittanceMapMath::OctaveScattering(int n, const double factors[4], double g, double mu,
+  double T, const double albedo[3], double weight[3])
 {
   weight[0] = weight[1] = weight[2] = 0.0;
   if (!(T > 0.0))
@@ -307,17 +307,21 @@ void vtkTransmittanceMapMath::OctaveScattering(int n, double a, double b, double
   }
   T = std::min(T, 1.0);
   n = std::min(std::max(n, 1), 8);
-  auto unit = [](double v) { return std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), 1.0); };
-  a = unit(a);
-  b = unit(b);
-  c = unit(c);
+  auto clamp = [](double v, double high)
+  { return std::isnan(v) ? 0.0 : std::min(std::max(v, 0.0), high); };
+  const double a = clamp(factors[0], 4.0);
+  const double b = clamp(factors[1], 1.0);
+  const double c = clamp(factors[2], 1.0);
+  const double s = clamp(factors[3], 64.0);
   const double logT = std::log(T);
-  double scale[3] = { 1.0, 1.0, 1.0 }; // (a rho)^i
-  double extinction = 1.0;             // b^i
-  double anisotropy = g;               // c^i g
+  const double buildUp = s > 0.0 ? 1.0 - std::exp(s * logT) : 1.0; // 1 - T^s
+  double scale[3] = { 1.0, 1.0, 1.0 };                             // (a rho)^i
+  double extinction = 1.0;                                         // b^i
+  double anisotropy = g;                                           // c^i g
   for (int i = 0; i < n; ++i)
   {
-    const double term = HenyeyGreenstein(anisotropy, mu) * std::exp(extinction * logT);
+    const double term =
+      HenyeyGreenstein(anisotropy, mu) * std::exp(extinction * logT) * (i > 0 ? buildUp : 1.0);
     for (int k = 0; k < 3; ++k)
     {
       weight[k] += scale[k] * term;

@@ -202,16 +202,20 @@ public:
    * irradiance and of its scattering albedo, with multiple scattering
    * approximated by octaves (Wrenninge, "Art-Directable Multiple Volumetric
    * Scattering", 2015; Documentation/rendering-model.md, "Multiple
-   * scattering"): for each channel k,
-   * \f[ w_k = \sum_{i=0}^{n-1} (a\,\rho_k)^i\, p(c^i g, \mu)\, T^{b^i}, \f]
-   * T the light transmittance, rho the albedo, a the scattering, b the
-   * extinction and c the anisotropy factor of an octave, p the
-   * Henyey-Greenstein phase function (HenyeyGreenstein()). One octave
-   * (n = 1) is single scattering, p(g, mu) T. T <= 0 (or NaN) gives 0; n is
-   * clamped to [1, 8], a, b and c to [0, 1], T to at most 1. The CPU twin
-   * of the ray-cast shader's tyndallOctaves().
+   * scattering") with a build-up term: for each channel k,
+   * \f[ w_k = p(g, \mu)\, T + (1 - T^{s}) \sum_{i=1}^{n-1} (a\,\rho_k)^i\,
+   *     p(c^i g, \mu)\, T^{b^i}, \f]
+   * T the light transmittance, rho the albedo; factors = {a, b, c, s}: a
+   * the scattering, b the extinction and c the anisotropy factor of an
+   * octave, s the build-up (multiply scattered light grows over the first
+   * optical depths 1/s from the lit side, none where T = 1; s = 0 turns
+   * the term off: Wrenninge's octaves); p the Henyey-Greenstein phase
+   * function (HenyeyGreenstein()). One octave (n = 1) is single scattering,
+   * p(g, mu) T. T <= 0 (or NaN) gives 0; n is clamped to [1, 8], a to
+   * [0, 4], b and c to [0, 1], s to [0, 64] (NaN factors count as 0), T to
+   * at most 1. The CPU twin of the ray-cast shader's tyndallOctaves().
    */
-  static void OctaveScattering(int n, double a, double b, double c, double g, double mu, double T,
+  static void OctaveScattering(int n, const double factors[4], double g, double mu, double T,
     const double albedo[3], double weight[3]);
 
   /**

@@ -67,6 +67,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetOctaveScattering(medium->OctaveScattering);
   this->SetOctaveExtinction(medium->OctaveExtinction);
   this->SetOctaveAnisotropy(medium->OctaveAnisotropy);
+  this->SetOctaveBuildUp(medium->OctaveBuildUp);
   this->SetEmissionScale(medium->EmissionScale);
   this->SetEmissionColor(medium->EmissionColor);
   this->SetEmissionArrayName(medium->EmissionArrayName);
@@ -107,6 +108,7 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OctaveScattering: " << this->OctaveScattering << "\n";
   os << indent << "OctaveExtinction: " << this->OctaveExtinction << "\n";
   os << indent << "OctaveAnisotropy: " << this->OctaveAnisotropy << "\n";
+  os << indent << "OctaveBuildUp: " << this->OctaveBuildUp << "\n";
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "EmissionColor: " << this->EmissionColor << "\n";
   os << indent

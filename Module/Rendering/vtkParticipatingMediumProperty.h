@@ -104,21 +104,30 @@ public:
    * albedo^i more light (a = OctaveScattering), sees the light through
    * b^i times the extinction (b = OctaveExtinction: the map's
    * transmittance raised to b^i, so the octaves cost no extra map) and
-   * scatters with anisotropy c^i g (c = OctaveAnisotropy). One octave is
-   * single scattering alone. The camera rays and the maps are unchanged.
-   * Ranges: ScatteringOctaves [1, 8], default 2; the factors [0, 1],
-   * defaults a = 0.9, b = 0.3, c = 0 (chosen by BenchMultipleScattering
-   * against the path tracer: about 3x less error than single scattering on
-   * dense media; see the documentation).
+   * scatters with anisotropy c^i g (c = OctaveAnisotropy); the terms i >= 1
+   * are multiplied by 1 - T^s (s = OctaveBuildUp: multiply scattered light
+   * builds up over the first optical depths 1/s from the lit side and is
+   * absent where the light has crossed no medium; 0 turns it off, giving
+   * Wrenninge's octaves). One octave is single scattering alone. The camera
+   * rays and the maps are unchanged. Ranges: ScatteringOctaves [1, 8],
+   * default 2; OctaveScattering [0, 4], default 1.3 (above 1: the one
+   * further octave stands for every order of scattering after the first);
+   * OctaveExtinction and OctaveAnisotropy [0, 1], defaults 0.45 and 0;
+   * OctaveBuildUp [0, 64], default 6. The defaults were chosen by
+   * BenchMultipleScattering --fit against the path tracer with up to 128
+   * bounces: 3.2x less error than single scattering on the dense medium and
+   * the thick cloud (see the documentation).
    */
   vtkSetClampMacro(ScatteringOctaves, int, 1, 8);
   vtkGetMacro(ScatteringOctaves, int);
-  vtkSetClampMacro(OctaveScattering, double, 0.0, 1.0);
+  vtkSetClampMacro(OctaveScattering, double, 0.0, 4.0);
   vtkGetMacro(OctaveScattering, double);
   vtkSetClampMacro(OctaveExtinction, double, 0.0, 1.0);
   vtkGetMacro(OctaveExtinction, double);
   vtkSetClampMacro(OctaveAnisotropy, double, 0.0, 1.0);
   vtkGetMacro(OctaveAnisotropy, double);
+  vtkSetClampMacro(OctaveBuildUp, double, 0.0, 64.0);
+  vtkGetMacro(OctaveBuildUp, double);
   ///@}
 
   ///@{
@@ -267,9 +276,10 @@ protected:
   double AmbientIntensity = 0.0;
   double ExtinctionColor[3] = { 1.0, 1.0, 1.0 };
   int ScatteringOctaves = 2;
-  double OctaveScattering = 0.9;
-  double OctaveExtinction = 0.3;
+  double OctaveScattering = 1.3;
+  double OctaveExtinction = 0.45;
   double OctaveAnisotropy = 0.0;
+  double OctaveBuildUp = 6.0;
   double EmissionScale = 0.0;
   vtkColorTransferFunction* EmissionColor = nullptr;
   char* EmissionArrayName = nullptr;

@@ -236,8 +236,8 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   if (medium.GetScatteringOctaves() > 1)
   {
     const double* f = medium.GetOctaveFactors();
-    const float factors[3] = { float(f[0]), float(f[1]), float(f[2]) };
-    program->SetUniform3f("octaveFactors", factors);
+    const float factors[4] = { float(f[0]), float(f[1]), float(f[2]), float(f[3]) };
+    program->SetUniform4f("octaveFactors", factors);
   }
   program->SetUniformf("emissionScale",
     medium.GetHasEmission() ? static_cast<float>(medium.GetEmissionScale()) : 0.0f);

@@ -470,6 +470,7 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   this->OctaveFactors[0] = source->GetOctaveScattering();
   this->OctaveFactors[1] = source->GetOctaveExtinction();
   this->OctaveFactors[2] = source->GetOctaveAnisotropy();
+  this->OctaveFactors[3] = source->GetOctaveBuildUp();
   this->EmissionScale = source->GetEmissionScale();
   vtkColorTransferFunction* emission = medium ? medium->GetEmissionColor() : nullptr;
   const bool fromArray = !this->EmissionValues.empty();

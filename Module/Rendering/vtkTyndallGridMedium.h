@@ -166,7 +166,8 @@ public:
   double GetScatteringAnisotropy() const { return this->ScatteringAnisotropy; }
   double GetLightScale() const { return this->LightScale; }
   double GetAmbientIntensity() const { return this->AmbientIntensity; }
-  /// Multiple-scattering octaves: their count (1: single scattering alone) and factors a, b, c.
+  /// Multiple-scattering octaves: their count (1: single scattering alone) and factors a, b, c, s
+  /// (vtkParticipatingMediumProperty: OctaveScattering, -Extinction, -Anisotropy, -BuildUp).
   int GetScatteringOctaves() const { return this->ScatteringOctaves; }
   const double* GetOctaveFactors() const { return this->OctaveFactors; }
   double GetEmissionScale() const { return this->EmissionScale; }
@@ -324,7 +325,7 @@ private:
   double AmbientIntensity = 0.0;
   double ExtinctionColor[3] = { 1.0, 1.0, 1.0 };
   int ScatteringOctaves = 1;
-  double OctaveFactors[3] = { 0.0, 0.0, 0.0 };
+  double OctaveFactors[4] = { 0.0, 0.0, 0.0, 0.0 };
   double EmissionScale = 0.0;
   bool HasEmission = false;
 };

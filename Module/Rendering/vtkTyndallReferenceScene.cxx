@@ -239,7 +239,7 @@ void vtkTyndallReferenceScene::SetUpMedium(const vtkTyndallGridMedium& medium)
   this->G = medium.GetScatteringAnisotropy();
   this->Ambient = medium.GetAmbientIntensity();
   this->Octaves = medium.GetScatteringOctaves();
-  std::copy(medium.GetOctaveFactors(), medium.GetOctaveFactors() + 3, this->OctaveFactors);
+  std::copy(medium.GetOctaveFactors(), medium.GetOctaveFactors() + 4, this->OctaveFactors);
   this->EmissionScale = medium.GetEmissionScale();
   this->HasEmission = medium.GetHasEmission();
   this->Table = &medium.GetTable();

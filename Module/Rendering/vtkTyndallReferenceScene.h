@@ -88,7 +88,7 @@ public:
   double Ambient = 0.0;
   /// Multiple-scattering octaves (1: single scattering alone) and their factors a, b, c.
   int Octaves = 1;
-  double OctaveFactors[3] = { 0.0, 0.0, 0.0 };
+  double OctaveFactors[4] = { 0.0, 0.0, 0.0, 0.0 };
   double EmissionScale = 0.0;
   bool HasEmission = false;
   std::vector<LightSource> Lights;
@@ -310,9 +310,8 @@ public:
   {
     if (this->Octaves > 1)
     {
-      const double* f = this->OctaveFactors;
       vtkTransmittanceMapMath::OctaveScattering(
-        this->Octaves, f[0], f[1], f[2], this->G, mu, T, albedo, weight);
+        this->Octaves, this->OctaveFactors, this->G, mu, T, albedo, weight);
       return;
     }
     weight[0] = weight[1] = weight[2] = this->Phase(mu) * T;

@@ -290,7 +290,7 @@ bool vtkTyndallSceneReader::SameLighting(
       a.GetAmbientIntensity() == b.GetAmbientIntensity() &&
       a.GetScatteringOctaves() == b.GetScatteringOctaves() &&
       (a.GetScatteringOctaves() == 1 ||
-        std::equal(a.GetOctaveFactors(), a.GetOctaveFactors() + 3, b.GetOctaveFactors())));
+        std::equal(a.GetOctaveFactors(), a.GetOctaveFactors() + 4, b.GetOctaveFactors())));
 }
 
 //------------------------------------------------------------------------------

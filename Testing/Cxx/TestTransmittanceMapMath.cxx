@@ -525,35 +525,58 @@ int TestTransmittanceMapMath(int, char*[])
       "HG(0.5, 1) = (1 - g^2) / (4 pi (1 - g)^3)");
 
     // Multiple-scattering octaves: one octave is p T; three octaves against
-    // the sum written out; T = 0 and NaN give 0; clamps.
+    // the sum written out, without and with the build-up; T = 0 and NaN
+    // give 0; clamps.
     {
       const double albedo[3] = { 0.9, 0.5, 0.0 };
       double w[3];
-      Math::OctaveScattering(1, 0.5, 0.25, 0.5, 0.3, 0.2, 0.4, albedo, w);
+      const double quarter[4] = { 0.5, 0.25, 0.5, 0.0 };
+      Math::OctaveScattering(1, quarter, 0.3, 0.2, 0.4, albedo, w);
       const double single = Math::HenyeyGreenstein(0.3, 0.2) * 0.4;
       Check(w[0] == single && w[1] == single && w[2] == single, "one octave is p(g, mu) T");
-      Math::OctaveScattering(3, 0.6, 0.3, 0.5, 0.4, -0.3, 0.2, albedo, w);
-      bool agree = true;
-      for (int k = 0; k < 3; ++k)
+      for (double s : { 0.0, 5.0 })
       {
-        const double r = 0.6 * albedo[k];
-        const double expected = Math::HenyeyGreenstein(0.4, -0.3) * 0.2 +
-          r * Math::HenyeyGreenstein(0.2, -0.3) * std::pow(0.2, 0.3) +
-          r * r * Math::HenyeyGreenstein(0.1, -0.3) * std::pow(0.2, 0.09);
-        agree = agree && std::abs(w[k] - expected) < 1e-14 * expected;
+        const double factors[4] = { 1.6, 0.3, 0.5, s };
+        Math::OctaveScattering(3, factors, 0.4, -0.3, 0.2, albedo, w);
+        const double buildUp = s > 0.0 ? 1.0 - std::pow(0.2, s) : 1.0;
+        bool agree = true;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double r = 1.6 * albedo[k];
+          const double expected = Math::HenyeyGreenstein(0.4, -0.3) * 0.2 +
+            buildUp *
+              (r * Math::HenyeyGreenstein(0.2, -0.3) * std::pow(0.2, 0.3) +
+                r * r * Math::HenyeyGreenstein(0.1, -0.3) * std::pow(0.2, 0.09));
+          agree = agree && std::abs(w[k] - expected) < 1e-14 * expected;
+        }
+        Check(agree,
+          s > 0.0 ? "three octaves with build-up: p T + (1 - T^s) sum_i (a rho)^i p(c^i g) T^(b^i)"
+                  : "three octaves: sum_i (a rho)^i p(c^i g, mu) T^(b^i)");
+        Check(w[2] == Math::HenyeyGreenstein(0.4, -0.3) * 0.2, "albedo 0: the first octave alone");
       }
-      Check(agree, "three octaves: sum_i (a rho)^i p(c^i g, mu) T^(b^i)");
-      Check(w[2] == Math::HenyeyGreenstein(0.4, -0.3) * 0.2, "albedo 0: the first octave alone");
-      Math::OctaveScattering(4, 0.5, 0.25, 0.5, 0.3, 0.2, 0.0, albedo, w);
+      const double full[4] = { 1.3, 0.45, 0.0, 6.0 };
+      Math::OctaveScattering(2, full, 0.4, 0.2, 1.0, albedo, w);
+      Check(w[0] == Math::HenyeyGreenstein(0.4, 0.2),
+        "build-up: no multiply scattered light where the light crossed no medium (T = 1)");
+      Math::OctaveScattering(4, quarter, 0.3, 0.2, 0.0, albedo, w);
       Check(w[0] == 0.0 && w[1] == 0.0 && w[2] == 0.0, "T = 0: no light in any octave");
-      Math::OctaveScattering(4, 0.5, 0.25, 0.5, 0.3, 0.2, std::nan(""), albedo, w);
+      Math::OctaveScattering(4, quarter, 0.3, 0.2, std::nan(""), albedo, w);
       Check(w[0] == 0.0, "T = NaN: no light");
       double clamped[3];
-      Math::OctaveScattering(20, 3.0, -1.0, 2.0, 0.3, 0.2, 0.5, albedo, w);
-      Math::OctaveScattering(8, 1.0, 0.0, 1.0, 0.3, 0.2, 0.5, albedo, clamped);
-      Check(w[0] == clamped[0] && w[1] == clamped[1], "n clamps to 8, a, b, c to [0, 1]");
-      Math::OctaveScattering(4, 0.5, 0.25, 0.5, 0.3, 0.2, 1.0, albedo, w);
-      Math::OctaveScattering(4, 0.5, 0.25, 0.5, 0.3, 0.2, 0.9, albedo, clamped);
+      const double wild[4] = { 9.0, -1.0, 2.0, 100.0 };
+      const double limits[4] = { 4.0, 0.0, 1.0, 64.0 };
+      Math::OctaveScattering(20, wild, 0.3, 0.2, 0.5, albedo, w);
+      Math::OctaveScattering(8, limits, 0.3, 0.2, 0.5, albedo, clamped);
+      Check(w[0] == clamped[0] && w[1] == clamped[1],
+        "n clamps to 8, a to [0, 4], b, c to [0, 1], "
+        "s to [0, 64]");
+      const double nans[4] = { std::nan(""), std::nan(""), std::nan(""), std::nan("") };
+      const double zeros[4] = { 0.0, 0.0, 0.0, 0.0 };
+      Math::OctaveScattering(3, nans, 0.3, 0.2, 0.5, albedo, w);
+      Math::OctaveScattering(3, zeros, 0.3, 0.2, 0.5, albedo, clamped);
+      Check(w[0] == clamped[0], "NaN factors count as 0");
+      Math::OctaveScattering(4, quarter, 0.3, 0.2, 1.0, albedo, w);
+      Math::OctaveScattering(4, quarter, 0.3, 0.2, 0.9, albedo, clamped);
       Check(w[0] > clamped[0] && clamped[0] > single, "the octaves add light and fall with T");
     }
 

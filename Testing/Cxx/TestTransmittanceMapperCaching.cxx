@@ -99,7 +99,8 @@ int TestTransmittanceMapperCaching(int, char*[])
   expect(false, "anisotropy, ambient and light scale do not touch the maps");
   property->SetOctaveScattering(0.7);
   property->SetOctaveAnisotropy(0.2);
-  expect(false, "the octaves' scattering and anisotropy do not touch the maps");
+  property->SetOctaveBuildUp(2.0);
+  expect(false, "the octaves' scattering, anisotropy and build-up do not touch the maps");
   property->SetScatteringOctaves(3);
   expect(true, "more octaves extend the adaptive maps' range (rebuild)");
   property->SetOctaveExtinction(0.6);

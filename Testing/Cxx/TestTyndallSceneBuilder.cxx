@@ -88,7 +88,8 @@ int TestTyndallSceneBuilder(int, char*[])
       Check(p->GetScatteringOctaves() == fresh->GetScatteringOctaves() &&
           p->GetOctaveScattering() == fresh->GetOctaveScattering() &&
           p->GetOctaveExtinction() == fresh->GetOctaveExtinction() &&
-          p->GetOctaveAnisotropy() == fresh->GetOctaveAnisotropy(),
+          p->GetOctaveAnisotropy() == fresh->GetOctaveAnisotropy() &&
+          p->GetOctaveBuildUp() == fresh->GetOctaveBuildUp(),
         "the options' octave defaults are the property's");
       Check(m->GetTransmittanceMethod() == vtkTransmittanceVolumeMapper::ADAPTIVE_ETM &&
           m->GetNumberOfCoefficients() == 8 && m->GetTransmittanceMapSize() == 256 &&
@@ -110,9 +111,9 @@ int TestTyndallSceneBuilder(int, char*[])
       { "-r", "16", "--method", "tfm", "--coefficients", "5", "--map-size", "64", "--density-scale",
         "2", "--anisotropy", "-0.3", "--ambient", "0.1", "--light-scale", "3", "--no-jitter",
         "--octaves", "3", "--octave-scattering", "0.7", "--octave-extinction", "0.2",
-        "--octave-anisotropy", "0.1", "--model", "emission-absorption", "--light-direction", "0",
-        "-1", "0", "--light-position", "2", "2", "2", "--light-intensity", "0.5", "--background",
-        "1", "0", "0", "--view-angle", "45" });
+        "--octave-anisotropy", "0.1", "--octave-build-up", "2.5", "--model", "emission-absorption",
+        "--light-direction", "0", "-1", "0", "--light-position", "2", "2", "2", "--light-intensity",
+        "0.5", "--background", "1", "0", "0", "--view-angle", "45" });
     Check(renderer != nullptr, "a scene with every kind of option");
     if (renderer)
     {
@@ -126,6 +127,7 @@ int TestTyndallSceneBuilder(int, char*[])
           p->GetAmbientIntensity() == 0.1 && p->GetLightScale() == 3.0 &&
           p->GetScatteringOctaves() == 3 && p->GetOctaveScattering() == 0.7 &&
           p->GetOctaveExtinction() == 0.2 && p->GetOctaveAnisotropy() == 0.1 &&
+          p->GetOctaveBuildUp() == 2.5 &&
           p->GetScatteringModel() == vtkParticipatingMediumProperty::EMISSION_ABSORPTION,
         "the medium's options");
       Check(renderer->GetLights()->GetNumberOfItems() == 2 && !renderer->GetGradientBackground() &&

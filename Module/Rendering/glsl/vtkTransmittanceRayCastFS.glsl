@@ -205,7 +205,9 @@ vec3 tyndallArrayEmission(vec3 x)
 #endif
 
 #if TYNDALL_OCTAVES > 1
-uniform vec3 octaveFactors; // a (scattering), b (extinction), c (anisotropy)
+// a (scattering), b (extinction), c (anisotropy), s (build-up: the terms
+// i >= 1 are multiplied by 1 - T^s; 0: off).
+uniform vec4 octaveFactors;
 #endif
 
 #if TYNDALL_CHROMATIC
@@ -216,6 +218,7 @@ vec3 tyndallOctaves(float mu, vec3 T, vec3 albedo)
 #if TYNDALL_OCTAVES > 1
   vec3 live = vec3(greaterThan(T, vec3(0.0)));
   vec3 logT = log(clamp(T, 1e-30, 1.0));
+  vec3 buildUp = octaveFactors.w > 0.0 ? 1.0 - exp(octaveFactors.w * logT) : vec3(1.0);
   vec3 scale = vec3(1.0);
   float extinction = 1.0;
   float g = anisotropy;
@@ -224,7 +227,7 @@ vec3 tyndallOctaves(float mu, vec3 T, vec3 albedo)
     scale *= octaveFactors.x * albedo;
     extinction *= octaveFactors.y;
     g *= octaveFactors.z;
-    sum += live * scale * tyndallPhaseHG(g, mu) * exp(extinction * logT);
+    sum += live * buildUp * scale * tyndallPhaseHG(g, mu) * exp(extinction * logT);
   }
 #endif
   return sum;
@@ -232,7 +235,8 @@ vec3 tyndallOctaves(float mu, vec3 T, vec3 albedo)
 #endif
 
 // p(g, mu) T, or with TYNDALL_OCTAVES > 1 the octaves' sum
-// sum_i (a albedo)^i p(c^i g, mu) T^(b^i) (Documentation/rendering-model.md,
+// p(g, mu) T + (1 - T^s) sum_{i>=1} (a albedo)^i p(c^i g, mu) T^(b^i)
+// (Documentation/rendering-model.md,
 // "Multiple scattering"; CPU twin: vtkTransmittanceMapMath::OctaveScattering).
 // The octave loop has a constant trip count: it is unrolled, and costs no
 // loop iterations of llvmpipe's budget.
@@ -245,6 +249,7 @@ vec3 tyndallOctaves(float mu, float T, vec3 albedo)
     return vec3(0.0);
   }
   float logT = log(min(T, 1.0));
+  float buildUp = octaveFactors.w > 0.0 ? 1.0 - exp(octaveFactors.w * logT) : 1.0;
   vec3 scale = vec3(1.0);
   float extinction = 1.0;
   float g = anisotropy;
@@ -253,7 +258,7 @@ vec3 tyndallOctaves(float mu, float T, vec3 albedo)
     scale *= octaveFactors.x * albedo;
     extinction *= octaveFactors.y;
     g *= octaveFactors.z;
-    sum += scale * tyndallPhaseHG(g, mu) * exp(extinction * logT);
+    sum += buildUp * scale * tyndallPhaseHG(g, mu) * exp(extinction * logT);
   }
 #endif
   return sum;
