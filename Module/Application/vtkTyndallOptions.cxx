@@ -174,8 +174,8 @@ const Spec kOptions[] = {
     "extinction the light of each further octave sees (relative to the one before)" },
   { "octave-anisotropy", "", Kind::Number, 0, 1, false, "", "C", "0", "Scattering", Both,
     "anisotropy of each further octave (relative to the one before)" },
-  { "octave-build-up", "", Kind::Number, 0, 64, false, "", "S", "6", "Scattering", Both,
-    "build-up of the further octaves: times 1 - T^S (T the light's transmittance; 0 = off)" },
+  { "octave-build-up", "", Kind::Number, 0, 64, false, "", "K", "6", "Scattering", Both,
+    "build-up of the further octaves: times 1 - T^K (T the light's transmittance; 0 = off)" },
   { "emission-scale", "", Kind::Number, 0, Huge, false, "", "E", "0", "Scattering", Both,
     "emission strength (single scattering); the emission colour comes from the transfer "
     "function file's 'emission' lines, else its colour" },

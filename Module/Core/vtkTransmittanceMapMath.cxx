@@ -312,12 +312,12 @@ void vtkTransmittanceMapMath::OctaveScattering(int n, const double factors[4], d
   const double a = clamp(factors[0], 4.0);
   const double b = clamp(factors[1], 1.0);
   const double c = clamp(factors[2], 1.0);
-  const double s = clamp(factors[3], 64.0);
+  const double power = clamp(factors[3], 64.0);
   const double logT = std::log(T);
-  const double buildUp = s > 0.0 ? 1.0 - std::exp(s * logT) : 1.0; // 1 - T^s
-  double scale[3] = { 1.0, 1.0, 1.0 };                             // (a rho)^i
-  double extinction = 1.0;                                         // b^i
-  double anisotropy = g;                                           // c^i g
+  const double buildUp = power > 0.0 ? 1.0 - std::exp(power * logT) : 1.0; // 1 - T^k
+  double scale[3] = { 1.0, 1.0, 1.0 };                                     // (a rho)^i
+  double extinction = 1.0;                                                 // b^i
+  double anisotropy = g;                                                   // c^i g
   for (int i = 0; i < n; ++i)
   {
     const double term =

@@ -202,17 +202,17 @@ public:
    * irradiance and of its scattering albedo, with multiple scattering
    * approximated by octaves (Wrenninge, "Art-Directable Multiple Volumetric
    * Scattering", 2015; Documentation/rendering-model.md, "Multiple
-   * scattering") with a build-up term: for each channel k,
-   * \f[ w_k = p(g, \mu)\, T + (1 - T^{s}) \sum_{i=1}^{n-1} (a\,\rho_k)^i\,
+   * scattering") with a build-up term: for each channel j,
+   * \f[ w_j = p(g, \mu)\, T + (1 - T^{k}) \sum_{i=1}^{n-1} (a\,\rho_j)^i\,
    *     p(c^i g, \mu)\, T^{b^i}, \f]
-   * T the light transmittance, rho the albedo; factors = {a, b, c, s}: a
+   * T the light transmittance, rho the albedo; factors = {a, b, c, k}: a
    * the scattering, b the extinction and c the anisotropy factor of an
-   * octave, s the build-up (multiply scattered light grows over the first
-   * optical depths 1/s from the lit side, none where T = 1; s = 0 turns
+   * octave, k the build-up (multiply scattered light grows over the first
+   * optical depths 1/k from the lit side, none where T = 1; k = 0 turns
    * the term off: Wrenninge's octaves); p the Henyey-Greenstein phase
    * function (HenyeyGreenstein()). One octave (n = 1) is single scattering,
    * p(g, mu) T. T <= 0 (or NaN) gives 0; n is clamped to [1, 8], a to
-   * [0, 4], b and c to [0, 1], s to [0, 64] (NaN factors count as 0), T to
+   * [0, 4], b and c to [0, 1], k to [0, 64] (NaN factors count as 0), T to
    * at most 1. The CPU twin of the ray-cast shader's tyndallOctaves().
    */
   static void OctaveScattering(int n, const double factors[4], double g, double mu, double T,

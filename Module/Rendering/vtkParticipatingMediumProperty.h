@@ -105,8 +105,8 @@ public:
    * b^i times the extinction (b = OctaveExtinction: the map's
    * transmittance raised to b^i, so the octaves cost no extra map) and
    * scatters with anisotropy c^i g (c = OctaveAnisotropy); the terms i >= 1
-   * are multiplied by 1 - T^s (s = OctaveBuildUp: multiply scattered light
-   * builds up over the first optical depths 1/s from the lit side and is
+   * are multiplied by 1 - T^k (k = OctaveBuildUp: multiply scattered light
+   * builds up over the first optical depths 1/k from the lit side and is
    * absent where the light has crossed no medium; 0 turns it off, giving
    * Wrenninge's octaves). One octave is single scattering alone. The camera
    * rays and the maps are unchanged. Ranges: ScatteringOctaves [1, 8],

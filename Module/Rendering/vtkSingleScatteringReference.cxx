@@ -424,10 +424,13 @@ bool SetUpSteps(const vtkTyndallSceneReader& tyndall, double stepSize, double li
   scene.MaxOpticalDepth = threshold > 0.0 ? -std::log(threshold) : kInfinity;
   if (scene.Octaves > 1)
   {
-    // The last octave sees T^(b^(N-1)): march until that falls below the
-    // threshold (b = 0: it never does).
+    // The last octave sees w T^(b^(N-1)), w = max(1, a)^(N-1) at most: march
+    // until that falls below the threshold (b = 0: it never does).
     const double exponent = std::pow(scene.OctaveFactors[1], scene.Octaves - 1);
-    scene.MaxOpticalDepth = exponent > 0.0 ? scene.MaxOpticalDepth / exponent : kInfinity;
+    const double weight = std::pow(std::max(1.0, scene.OctaveFactors[0]), scene.Octaves - 1);
+    scene.MaxOpticalDepth = exponent > 0.0 && threshold > 0.0
+      ? (scene.MaxOpticalDepth + std::log(weight)) / exponent
+      : kInfinity;
   }
   // The faintest channel of a coloured extinction sees T^e.
   scene.MaxOpticalDepth /= medium.GetFaintestChannel();

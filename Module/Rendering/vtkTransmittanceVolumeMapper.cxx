@@ -41,23 +41,27 @@ vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 namespace
 {
 // The adaptive maps' threshold for the faintest transmittance a sample
-// reads: the last multiple-scattering octave sees T^(b^(N-1)) and the
-// faintest channel of a coloured extinction T^e (e its smallest positive
-// component; not where each channel has its own maps: `channelMaps`), so the
-// maps must resolve T down to threshold^(1 / (b^(N-1) e)) for those to fall
-// below the threshold (b = 0: the octave sees only whether T > 0, and the
-// maps keep their whole range).
+// reads: the last multiple-scattering octave sees w T^(b^(N-1)), w =
+// max(1, a)^(N-1) its largest weight relative to single scattering (the
+// albedo is at most 1), and the faintest channel of a coloured extinction
+// T^e (e its smallest positive component; not where each channel has its own
+// maps: `channelMaps`), so the maps must resolve T down to
+// (threshold / w)^(1 / (b^(N-1) e)) for those to fall below the threshold
+// (b = 0: the octave sees only whether T > 0, and the maps keep their whole
+// range).
 double LightThreshold(double threshold, const vtkTyndallGridMedium& medium, bool channelMaps)
 {
   const int octaves = medium.GetScatteringOctaves();
-  const double exponent =
-    (octaves > 1 ? std::pow(medium.GetOctaveFactors()[1], octaves - 1) : 1.0) *
+  const double* f = medium.GetOctaveFactors();
+  const double exponent = (octaves > 1 ? std::pow(f[1], octaves - 1) : 1.0) *
     (channelMaps ? 1.0 : medium.GetFaintestChannel());
+  const double weight = octaves > 1 ? std::pow(std::max(1.0, f[0]), octaves - 1) : 1.0;
+  const double faintest = threshold / weight;
   if (exponent == 1.0)
   {
-    return threshold;
+    return std::max(faintest, 1.0e-30);
   }
-  return std::max(exponent > 0.0 ? std::pow(threshold, 1.0 / exponent) : 0.0, 1.0e-30);
+  return std::max(exponent > 0.0 ? std::pow(faintest, 1.0 / exponent) : 0.0, 1.0e-30);
 }
 }
 

@@ -157,11 +157,12 @@ public:
    * Transmittance threshold of the adaptive methods' first march, in
    * [1e-6, 0.5]; default 0.01. With multiple-scattering octaves
    * (vtkParticipatingMediumProperty::ScatteringOctaves N, OctaveExtinction
-   * b) and a coloured extinction (vtkParticipatingMediumProperty::
-   * ExtinctionColor, its smallest positive component e relative to the
-   * largest) the maps are built to threshold^(1 / (b^(N-1) e)), so that the
-   * last octave's light and the faintest channel's are resolved as far as
-   * single scattering's grey light is.
+   * b, OctaveScattering a) and a coloured extinction
+   * (vtkParticipatingMediumProperty::ExtinctionColor, its smallest positive
+   * component e relative to the largest) the maps are built to
+   * (threshold / max(1, a)^(N-1))^(1 / (b^(N-1) e)), so that the last
+   * octave's light and the faintest channel's are resolved as far as single
+   * scattering's grey light is.
    */
   vtkSetClampMacro(AdaptiveThreshold, double, 1.0e-6, 0.5);
   vtkGetMacro(AdaptiveThreshold, double);

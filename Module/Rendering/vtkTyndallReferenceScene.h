@@ -86,7 +86,8 @@ public:
   bool SingleScattering = true;
   double G = 0.0;
   double Ambient = 0.0;
-  /// Multiple-scattering octaves (1: single scattering alone) and their factors a, b, c.
+  /// Multiple-scattering octaves (1: single scattering alone) and their factors a, b, c, k
+  /// (k: the build-up).
   int Octaves = 1;
   double OctaveFactors[4] = { 0.0, 0.0, 0.0, 0.0 };
   double EmissionScale = 0.0;

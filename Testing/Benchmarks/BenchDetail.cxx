@@ -308,7 +308,12 @@ vtkSmartPointer<vtkParticipatingMediumProperty> ExtinctionProperty(
   auto property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   property->DeepCopy(like);
   property->SetDetailNoise(nullptr);
-  const double unit = like->GetScalarOpacityUnitDistance();
+  // The scalars are the extinction, density scale included
+  // (vtkTyndallDetailMedium::Extinction): the table must not scale it again.
+  property->SetDensityScale(1.0);
+  // A unit distance 16x shorter than the cloud's keeps alpha below the
+  // table's 1 - 1e-6 clamp (sigma u < 13.8) for dense media (--density).
+  const double unit = like->GetScalarOpacityUnitDistance() / 16.0;
   vtkNew<vtkPiecewiseFunction> opacity;
   for (int i = 0; i <= 1024; ++i)
   {

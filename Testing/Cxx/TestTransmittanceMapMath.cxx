@@ -565,16 +565,21 @@ int TestTransmittanceMapMath(int, char*[])
       double clamped[3];
       const double wild[4] = { 9.0, -1.0, 2.0, 100.0 };
       const double limits[4] = { 4.0, 0.0, 1.0, 64.0 };
-      Math::OctaveScattering(20, wild, 0.3, 0.2, 0.5, albedo, w);
-      Math::OctaveScattering(8, limits, 0.3, 0.2, 0.5, albedo, clamped);
+      // T near 1, where 1 - T^64 and 1 - T^100 differ.
+      Math::OctaveScattering(20, wild, 0.3, 0.2, 0.999, albedo, w);
+      Math::OctaveScattering(8, limits, 0.3, 0.2, 0.999, albedo, clamped);
       Check(w[0] == clamped[0] && w[1] == clamped[1],
-        "n clamps to 8, a to [0, 4], b, c to [0, 1], "
-        "s to [0, 64]");
-      const double nans[4] = { std::nan(""), std::nan(""), std::nan(""), std::nan("") };
-      const double zeros[4] = { 0.0, 0.0, 0.0, 0.0 };
+        "n clamps to 8, a to [0, 4], b, c to [0, 1], k to [0, 64]");
+      const double nans[4] = { 1.3, std::nan(""), std::nan(""), std::nan("") };
+      const double zeros[4] = { 1.3, 0.0, 0.0, 0.0 };
       Math::OctaveScattering(3, nans, 0.3, 0.2, 0.5, albedo, w);
       Math::OctaveScattering(3, zeros, 0.3, 0.2, 0.5, albedo, clamped);
-      Check(w[0] == clamped[0], "NaN factors count as 0");
+      Check(w[0] == clamped[0] && w[0] > 1.5 * Math::HenyeyGreenstein(0.3, 0.2) * 0.5,
+        "NaN b, c, k count as 0 (the further octaves still there)");
+      const double nanA[4] = { std::nan(""), 0.3, 0.0, 0.0 };
+      Math::OctaveScattering(3, nanA, 0.3, 0.2, 0.5, albedo, w);
+      Check(std::abs(w[0] - Math::HenyeyGreenstein(0.3, 0.2) * 0.5) < 1e-15 * w[0],
+        "NaN a counts as 0 (the first octave alone)");
       Math::OctaveScattering(4, quarter, 0.3, 0.2, 1.0, albedo, w);
       Math::OctaveScattering(4, quarter, 0.3, 0.2, 0.9, albedo, clamped);
       Check(w[0] > clamped[0] && clamped[0] > single, "the octaves add light and fall with T");

@@ -97,14 +97,20 @@ int TestTransmittanceMapperCaching(int, char*[])
   property->SetAmbientIntensity(0.1);
   property->SetLightScale(10.0);
   expect(false, "anisotropy, ambient and light scale do not touch the maps");
-  property->SetOctaveScattering(0.7);
-  property->SetOctaveAnisotropy(0.2);
-  property->SetOctaveBuildUp(2.0);
-  expect(false, "the octaves' scattering, anisotropy and build-up do not touch the maps");
   property->SetScatteringOctaves(3);
   expect(true, "more octaves extend the adaptive maps' range (rebuild)");
   property->SetOctaveExtinction(0.6);
   expect(true, "the octaves' extinction moves the adaptive maps' range (rebuild)");
+  property->SetOctaveScattering(0.7);
+  expect(true,
+    "the octaves' scattering from 1.3 to 0.7 narrows the adaptive maps' range "
+    "(their weight above 1 widens it; rebuild)");
+  property->SetOctaveScattering(0.5);
+  property->SetOctaveAnisotropy(0.2);
+  property->SetOctaveBuildUp(2.0);
+  expect(false,
+    "the octaves' scattering (at most 1), anisotropy and build-up do not touch the "
+    "maps");
   sun->SetPosition(-1.0, 0.5, 0.2);
   expect(true, "moving the light rebuilds");
   sun->SetIntensity(2.0);

@@ -205,8 +205,8 @@ vec3 tyndallArrayEmission(vec3 x)
 #endif
 
 #if TYNDALL_OCTAVES > 1
-// a (scattering), b (extinction), c (anisotropy), s (build-up: the terms
-// i >= 1 are multiplied by 1 - T^s; 0: off).
+// a (scattering), b (extinction), c (anisotropy), k (build-up: the terms
+// i >= 1 are multiplied by 1 - T^k; 0: off).
 uniform vec4 octaveFactors;
 #endif
 
@@ -235,7 +235,7 @@ vec3 tyndallOctaves(float mu, vec3 T, vec3 albedo)
 #endif
 
 // p(g, mu) T, or with TYNDALL_OCTAVES > 1 the octaves' sum
-// p(g, mu) T + (1 - T^s) sum_{i>=1} (a albedo)^i p(c^i g, mu) T^(b^i)
+// p(g, mu) T + (1 - T^k) sum_{i>=1} (a albedo)^i p(c^i g, mu) T^(b^i)
 // (Documentation/rendering-model.md,
 // "Multiple scattering"; CPU twin: vtkTransmittanceMapMath::OctaveScattering).
 // The octave loop has a constant trip count: it is unrolled, and costs no
