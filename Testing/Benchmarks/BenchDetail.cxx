@@ -36,10 +36,21 @@
 // map passes do: time per ray and transmittance error (--projection-only:
 // only that).
 //
+// A fifth view, "surface", looks at the cloud's lit surface from just in
+// front of it: the point where the optical depth along a ray from the lit
+// side (from (1.7, 1.45, 2) towards the close-up's focus) reaches 0.5, seen
+// from 0.08 (world) before it (a 512^3 voxel
+// some 20 pixels wide at 256^2): where a dense medium's first mean free path
+// shows the finest octaves.
+//
 // Usage: BenchDetail [--voxels N] [--size W] [--output DIR] [--quick] [--sampling-only]
-//                    [--projection-only] [--no-sampling] [--density S]
+//                    [--projection-only] [--no-sampling] [--density S] [--gain G]
+//                    [--view NAME]
 // (--density S multiplies the medium's density: a denser cloud shows its
-// first mean free path, where the finest octaves are not averaged away)
+// first mean free path, where the finest octaves are not averaged away;
+// --gain G the noise's gain, default 0.65: each octave's amplitude over the
+// one before; --view NAME compares the voxelised medium in that view only:
+// far, close-up, closer, macro or surface)
 #include "vtkCamera.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
@@ -79,6 +90,8 @@ struct Options
   bool ProjectionOnly = false;
   bool NoSampling = false;
   double Density = 1.0; // multiplies the cloud property's density scale
+  double Gain = 0.65;
+  std::string ViewName;
 };
 
 double Seconds(std::chrono::steady_clock::time_point start)
@@ -337,6 +350,43 @@ void Write(const Options& options, const char* name, vtkImageData* image)
   writer->Write();
 }
 
+// The "surface" view: the point where the optical depth from `eye` towards
+// `focus` reaches 0.5 (world steps of 1e-3 through the detailed extinction),
+// and an eye 0.08 before it on that ray. False if the ray never gets there.
+bool SurfaceView(const vtkTyndallGridMedium& grid, const vtkTyndallDetailMedium& detail,
+  const double eye[3], const double focus[3], double surfaceEye[3], double surface[3])
+{
+  const double* m = grid.GetWorldToIndex();
+  double d[3] = { focus[0] - eye[0], focus[1] - eye[1], focus[2] - eye[2] };
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  for (double& c : d)
+  {
+    c /= length;
+  }
+  const double step = 1e-3;
+  double tau = 0.0;
+  for (double t = 0.0; t < 4.0; t += step)
+  {
+    const double x[3] = { eye[0] + t * d[0], eye[1] + t * d[1], eye[2] + t * d[2] };
+    double p[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      p[r] = m[4 * r] * x[0] + m[4 * r + 1] * x[1] + m[4 * r + 2] * x[2] + m[4 * r + 3];
+    }
+    tau += detail.Extinction(p) * step;
+    if (tau >= 0.5)
+    {
+      for (int r = 0; r < 3; ++r)
+      {
+        surface[r] = x[r];
+        surfaceEye[r] = x[r] - 0.08 * d[r];
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
 bool Parse(int argc, char* argv[], Options& options)
 {
   for (int i = 1; i < argc; ++i)
@@ -350,6 +400,14 @@ bool Parse(int argc, char* argv[], Options& options)
     else if (a == "--density" && i + 1 < argc)
     {
       options.Density = std::max(1e-3, std::atof(argv[++i]));
+    }
+    else if (a == "--gain" && i + 1 < argc)
+    {
+      options.Gain = std::min(1.0, std::max(0.05, std::atof(argv[++i])));
+    }
+    else if (a == "--view" && i + 1 < argc)
+    {
+      options.ViewName = argv[++i];
     }
     else if (a == "--no-sampling")
     {
@@ -378,7 +436,8 @@ bool Parse(int argc, char* argv[], Options& options)
     else
     {
       std::printf("Usage: BenchDetail [--voxels N] [--size W] [--output DIR] [--quick] "
-                  "[--sampling-only] [--projection-only] [--no-sampling] [--density S]\n");
+                  "[--sampling-only] [--projection-only] [--no-sampling] [--density S] "
+                  "[--gain G] [--view NAME]\n");
       return false;
     }
   }
@@ -401,7 +460,7 @@ int main(int argc, char* argv[])
   noise->SetNumberOfOctaves(6);
   noise->SetNumberOfDirections(24);
   noise->SetFrequency(64.0 / (2.0 * 2.0));
-  noise->SetGain(0.65); // the finer octaves stronger than the default 0.5
+  noise->SetGain(options.Gain); // 0.65: the finer octaves stronger than the default 0.5
   double power = 0.0;
   for (int i = 0; i < noise->GetNumberOfWaves(); ++i)
   {
@@ -428,11 +487,15 @@ int main(int argc, char* argv[])
   }
   // The macro view: 0.1 from the focus, about 0.054 across (14 voxels of
   // 512^3, each some 18 pixels at 256^2).
-  const double eyes[4][3] = { { 0.0, -0.6, 4.2 }, { 0.2, 0.5, 1.7 }, { 0.125, 0.3125, 0.425 },
-    { 0.1, 0.25, 0.1 } };
-  const double focus[4][3] = { { 0.0, 0.0, 0.0 }, { 0.1, 0.25, 0.0 }, { 0.1, 0.25, 0.0 },
-    { 0.1, 0.25, 0.0 } };
-  const char* names[4] = { "far", "close-up", "closer", "macro" };
+  double eyes[5][3] = { { 0.0, -0.6, 4.2 }, { 0.2, 0.5, 1.7 }, { 0.125, 0.3125, 0.425 },
+    { 0.1, 0.25, 0.1 }, { 0.0, 0.0, 0.0 } };
+  double focus[5][3] = { { 0.0, 0.0, 0.0 }, { 0.1, 0.25, 0.0 }, { 0.1, 0.25, 0.0 },
+    { 0.1, 0.25, 0.0 }, { 0.0, 0.0, 0.0 } };
+  const char* names[5] = { "far", "close-up", "closer", "macro", "surface" };
+  // The surface view approaches the lit side (the sun comes from +x), the
+  // light half-way between the camera's direction and the surface normal.
+  const double approach[3] = { 0.1 + 1.6, 0.25 + 1.2, 0.0 + 2.0 };
+  const int views = SurfaceView(grid, detail, approach, focus[1], eyes[4], focus[4]) ? 5 : 4;
   std::printf("BenchDetail: 64^3 shape x %d waves, %d^2, AdaptiveETM; camera rays sampled in "
               "closed form against marched\n",
     noise->GetNumberOfWaves(), options.Size);
@@ -466,8 +529,12 @@ int main(int argc, char* argv[])
     n * n * n * 4 / (2 * shapeBytes));
   std::printf(
     "voxelising (%d threads): %.1f s\n", vtkSMPTools::GetEstimatedNumberOfThreads(), voxeliseTime);
-  for (int e = 0; e < 4; ++e)
+  for (int e = 0; e < views; ++e)
   {
+    if (!options.ViewName.empty() && options.ViewName != names[e])
+    {
+      continue;
+    }
     double tp[2], tv[2], tc[2];
     auto a = procedural.Render(eyes[e], focus[e], tp);
     auto b = voxelised.Render(eyes[e], focus[e], tv);
@@ -480,7 +547,10 @@ int main(int argc, char* argv[])
       names[e], tyndall_test::PSNR(a, b), tyndall_test::PSNR(a, c));
     if (e > 0)
     {
-      const std::string view = e == 1 ? "closeup" : e == 2 ? "closer" : "macro";
+      const std::string view = e == 1 ? "closeup"
+        : e == 2                      ? "closer"
+        : e == 3                      ? "macro"
+                                      : "surface";
       Write(options, ("detail-" + view + "-procedural.png").c_str(), a);
       Write(options, ("detail-" + view + "-voxelised.png").c_str(), b);
       Write(options, ("detail-" + view + "-shape.png").c_str(), c);
