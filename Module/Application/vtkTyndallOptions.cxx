@@ -233,8 +233,9 @@ const Spec kOptions[] = {
   { "clip-origin", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping",
     Both, "a point of the clipping plane (default: the centre of the data)" },
   { "clip-offset", "", Kind::Number, -1, 1, false, "", "F", "0", "Clipping", Both,
-    "moves the clipping plane along its normal by F times the data's diagonal", KeyMode::Add, "p",
-    "o", 0.05 },
+    "moves the clipping plane along its normal by F times the data's diagonal (without "
+    "--clip-normal: a plane of normal +x through the centre)",
+    KeyMode::Add, "p", "o", 0.05 },
   { "crop-low", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping", Both,
     "crop the medium to the box from X Y Z (data coordinates) to --crop-high" },
   { "crop-high", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping",

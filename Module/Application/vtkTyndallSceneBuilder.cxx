@@ -693,12 +693,17 @@ void vtkTyndallSceneBuilder::ApplyClipping()
   mapper->RemoveAllClippingPlanes();
   double bounds[6];
   this->Image->GetBounds(bounds);
-  if (o->IsSet("clip-normal"))
+  // A plane from --clip-normal, or from --clip-offset alone (the viewer's
+  // p / o keys without a normal given): then the normal is +x.
+  if (o->IsSet("clip-normal") || o->IsSet("clip-offset"))
   {
-    double normal[3],
-      origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-        0.5 * (bounds[4] + bounds[5]) };
-    o->GetVector("clip-normal", normal);
+    double normal[3] = { 1.0, 0.0, 0.0 },
+           origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+             0.5 * (bounds[4] + bounds[5]) };
+    if (o->IsSet("clip-normal"))
+    {
+      o->GetVector("clip-normal", normal);
+    }
     if (o->IsSet("clip-origin"))
     {
       o->GetVector("clip-origin", origin);

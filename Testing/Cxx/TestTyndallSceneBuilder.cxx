@@ -189,6 +189,35 @@ int TestTyndallSceneBuilder(int, char*[])
     }
   }
 
+  // The viewer's clip keys without --clip-normal: a plane of normal +x
+  // through the centre, moved by the offset; none before a key is pressed.
+  {
+    vtkNew<vtkTyndallSceneBuilder> builder;
+    auto renderer = Build(builder, { "-r", "16" });
+    Check(renderer != nullptr, "a scene without clipping");
+    if (renderer)
+    {
+      vtkTransmittanceVolumeMapper* m = builder->GetMapper();
+      Check(!m->GetClippingPlanes() || m->GetClippingPlanes()->GetNumberOfItems() == 0,
+        "no clipping plane before a key");
+      // What the viewer's 'p' key does (vtkTyndallOptions::ApplyKey: 0 + 0.05;
+      // TestTyndallOptions checks the key itself).
+      builder->GetOptions()->SetNumber("clip-offset", 0.05);
+      builder->ApplyOptions();
+      vtkPlaneCollection* planes = m->GetClippingPlanes();
+      const double diagonal = 2.0 * std::sqrt(3.0);
+      bool plane = planes && planes->GetNumberOfItems() == 1;
+      if (plane)
+      {
+        const double* n = planes->GetItem(0)->GetNormal();
+        const double* o = planes->GetItem(0)->GetOrigin();
+        plane = n[0] == 1.0 && n[1] == 0.0 && n[2] == 0.0 &&
+          std::abs(o[0] - 0.05 * diagonal) < 1e-12 && o[1] == 0.0 && o[2] == 0.0;
+      }
+      Check(plane, "'p' alone: a plane of normal +x, 5 % of the diagonal past the centre");
+    }
+  }
+
   // A data volume: the guessed preset, the key light, a fitted camera.
   {
     vtkNew<vtkImageData> blob;

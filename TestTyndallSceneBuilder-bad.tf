@@ -1,0 +1,1 @@
+opacity 0 2
