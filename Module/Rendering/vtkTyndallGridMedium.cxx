@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <sstream>
 
 namespace
@@ -439,12 +440,47 @@ double vtkTyndallGridMedium::GetFaintestChannel() const
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// The property's numbers must be finite: VTK's clamp macros let NaN through,
+// which would draw a NaN picture on the GPU (and a different one on the CPU).
+bool FiniteSettings(vtkParticipatingMediumProperty* p, vtkObject* reporter)
+{
+  const double* c = p->GetExtinctionColor();
+  const std::pair<const char*, double> settings[] = { { "DensityScale", p->GetDensityScale() },
+    { "ScatteringAnisotropy", p->GetScatteringAnisotropy() }, { "LightScale", p->GetLightScale() },
+    { "AmbientIntensity", p->GetAmbientIntensity() }, { "ExtinctionColor (red)", c[0] },
+    { "ExtinctionColor (green)", c[1] }, { "ExtinctionColor (blue)", c[2] },
+    { "OctaveScattering", p->GetOctaveScattering() },
+    { "OctaveExtinction", p->GetOctaveExtinction() },
+    { "OctaveAnisotropy", p->GetOctaveAnisotropy() }, { "OctaveBuildUp", p->GetOctaveBuildUp() },
+    { "EmissionScale", p->GetEmissionScale() }, { "TemperatureScale", p->GetTemperatureScale() },
+    { "ScalarOpacityUnitDistance", p->GetScalarOpacityUnitDistance(0) } };
+  for (const auto& s : settings)
+  {
+    if (!std::isfinite(s.second))
+    {
+      vtkErrorWithObjectMacro(reporter, << "The medium's " << s.first << " is " << s.second
+                                        << ", not a finite number: nothing is drawn.");
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
 {
   vtkVolumeProperty* property = volume->GetProperty();
   auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
   vtkNew<vtkParticipatingMediumProperty> defaults;
   vtkParticipatingMediumProperty* source = medium ? medium : defaults.Get();
+  if (!FiniteSettings(source, reporter))
+  {
+    this->TableKey.clear();
+    return false;
+  }
   this->ScatteringModel = source->GetScatteringModel();
   // The densest channel's extinction scales the density; the channels are
   // relative to it.

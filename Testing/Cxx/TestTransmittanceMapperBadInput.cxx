@@ -8,6 +8,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
@@ -23,6 +24,7 @@
 #include "TyndallTestScene.h"
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -153,6 +155,43 @@ int TestTransmittanceMapperBadInput(int, char*[])
       image, "exceeds the GPU's 3-D texture size", "an oversized volume is downsampled", true);
     Check(!observer->GetError(), "an oversized volume is not an error");
     Check(CountForeground(window) > sphereOnly, "the downsampled volume is drawn");
+  }
+
+  // A NaN in the medium's settings (VTK's clamp macros let it through): an
+  // error naming the setting, nothing of the volume drawn, the rest intact.
+  {
+    auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
+    mapper->SetInputData(MakeImage(8, 8, 8, 1, 4.0));
+    volume->VisibilityOff();
+    window->Render();
+    const int withoutVolume = CountForeground(window); // with the lights as they are now
+    volume->VisibilityOn();
+    window->Render();
+    Check(CountForeground(window) > withoutVolume, "the valid volume is drawn");
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::pair<std::string, std::function<void(double)>> settings[] = {
+      { "ScatteringAnisotropy", [&](double v) { property->SetScatteringAnisotropy(v); } },
+      { "OctaveScattering", [&](double v) { property->SetOctaveScattering(v); } },
+      { "OctaveBuildUp", [&](double v) { property->SetOctaveBuildUp(v); } },
+      { "LightScale", [&](double v) { property->SetLightScale(v); } }
+    };
+    for (const auto& s : settings)
+    {
+      s.second(nan);
+      observer->Clear();
+      window->Render();
+      const std::string message = observer->GetErrorMessage();
+      Check(observer->GetError() && message.find(s.first) != std::string::npos &&
+          message.find("not a finite number") != std::string::npos,
+        "NaN " + s.first + ": an error naming it");
+      const int drawn = CountForeground(window);
+      Check(drawn == withoutVolume, "NaN " + s.first + ": nothing of the volume drawn");
+      vtkNew<vtkParticipatingMediumProperty> defaults;
+      s.second(s.first == "ScatteringAnisotropy" ? defaults->GetScatteringAnisotropy()
+          : s.first == "OctaveScattering"        ? defaults->GetOctaveScattering()
+          : s.first == "OctaveBuildUp"           ? defaults->GetOctaveBuildUp()
+                                                 : defaults->GetLightScale());
+    }
   }
 
   // No lights: ambient and emission only, no error; here the volume is dark.
