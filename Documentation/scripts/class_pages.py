@@ -28,7 +28,9 @@ def clean(comment):
 def page(header):
     text = open(header).read()
     name = os.path.splitext(os.path.basename(header))[0]
-    module = os.path.basename(os.path.dirname(header))
+    folder = os.path.relpath(os.path.dirname(header), os.path.join(ROOT, "Module"))
+    # Module/ParaView/Representation holds Tyndall::ParaViewRepresentation.
+    module = folder.replace(os.sep, "")
     head = re.search(r"/\*\*(.*?)\*/", text, re.S)
     internal = head and re.search(r"[Ii]nternal to\s+Tyndall::", re.sub(r"\s*\*\s*", " ", head.group(1)))
     if not head or "@class" not in head.group(1) or internal:
@@ -40,7 +42,7 @@ def page(header):
     body = body.replace("@sa", "See also:")
     out = ["# %s" % name, "",
            "*%s* — module `Tyndall::%s`, header `Module/%s/%s.h`." % (
-               brief.group(1).strip() if brief else "", module, module, name), "", body, "",
+               brief.group(1).strip() if brief else "", module, folder, name), "", body, "",
            "## Members", ""]
     public = text.split("public:", 1)[-1].split("protected:", 1)[0]
     for match in re.finditer(r"/\*\*(.*?)\*/\s*((?:[^;{]*?[;{]\s*){1,8}?)(?=\s*(?:///@}|/\*\*|$))",
@@ -68,7 +70,9 @@ def main():
     index = ["# Tyndall's classes", "",
              "One page per public class, generated from the headers' Doxygen comments by "
              "`Documentation/scripts/class_pages.py`.", ""]
-    for header in sorted(glob.glob(os.path.join(ROOT, "Module", "*", "vtk*.h"))):
+    headers = glob.glob(os.path.join(ROOT, "Module", "*", "vtk*.h")) + \
+        glob.glob(os.path.join(ROOT, "Module", "ParaView", "*", "vtk*.h"))
+    for header in sorted(headers):
         result = page(header)
         if not result:
             continue

@@ -59,7 +59,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   }
   this->SetScatteringModel(medium->ScatteringModel);
   this->SetDensityScale(medium->DensityScale);
-  this->SetScatteringAnisotropy(medium->ScatteringAnisotropy);
+  this->SetScatteringAnisotropy(medium->GetScatteringAnisotropy());
   this->SetLightScale(medium->LightScale);
   this->SetAmbientIntensity(medium->AmbientIntensity);
   this->SetExtinctionColor(medium->ExtinctionColor);
@@ -99,7 +99,7 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ScatteringModel: " << this->GetScatteringModelAsString() << "\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
-  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->GetScatteringAnisotropy() << "\n";
   os << indent << "LightScale: " << this->LightScale << "\n";
   os << indent << "AmbientIntensity: " << this->AmbientIntensity << "\n";
   os << indent << "ExtinctionColor: (" << this->ExtinctionColor[0] << ", "
@@ -120,3 +120,12 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SceneCompositing: " << (this->SceneCompositing ? "On" : "Off") << "\n";
   os << indent << "DetailNoise: " << this->DetailNoise << "\n";
 }
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+//------------------------------------------------------------------------------
+void vtkParticipatingMediumProperty::SetScatteringAnisotropy(float g)
+{
+  // NaN passes through, as it does VTK's clamp macros; the mapper refuses it.
+  this->Superclass::SetScatteringAnisotropy(g < -0.99f ? -0.99f : (g > 0.99f ? 0.99f : g));
+}
+#endif

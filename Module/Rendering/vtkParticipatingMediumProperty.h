@@ -35,6 +35,7 @@
 #define vtkParticipatingMediumProperty_h
 
 #include "TyndallRenderingModule.h" // For export macro
+#include "vtkVersionMacros.h"       // For VTK_VERSION_NUMBER
 #include "vtkVolumeProperty.h"
 
 class vtkColorTransferFunction;
@@ -80,9 +81,19 @@ public:
   /**
    * The Henyey-Greenstein asymmetry g, in [-0.99, 0.99]; default 0
    * (isotropic). g > 0 scatters forwards (bright when looking into a light).
+   *
+   * VTK 9.2 and later declare this setting in vtkVolumeProperty itself (a
+   * float in [-1, 1], for VTK's own volumetric scattering): built against
+   * such a VTK (ParaView 5.11's, for Tyndall's plugin) this class keeps
+   * vtkVolumeProperty's member and narrows its setter to [-0.99, 0.99], so
+   * code that sets it builds against either VTK and means the same.
    */
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  void SetScatteringAnisotropy(float g) override;
+#else
   vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
   vtkGetMacro(ScatteringAnisotropy, double);
+#endif
   ///@}
 
   ///@{
@@ -271,7 +282,9 @@ protected:
 
   int ScatteringModel = SINGLE_SCATTERING;
   double DensityScale = 1.0;
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 2, 0)
   double ScatteringAnisotropy = 0.0;
+#endif
   double LightScale;
   double AmbientIntensity = 0.0;
   double ExtinctionColor[3] = { 1.0, 1.0, 1.0 };

@@ -99,8 +99,8 @@ public:
     while (vtkVolume* other = volumes->GetNextVolume(it))
     {
       others = others ||
-        (other != volume && other->GetVisibility() && other->GetMapper() &&
-          other->GetMapper()->IsA("vtkTransmittanceVolumeMapper"));
+        (!vtkTyndallSceneReader::IsDrawnVolume(other, volume) && other->GetVisibility() &&
+          other->GetMapper() && other->GetMapper()->IsA("vtkTransmittanceVolumeMapper"));
     }
     bool sorted = false;
     vtkCullerCollection* cullers = renderer->GetCullers();

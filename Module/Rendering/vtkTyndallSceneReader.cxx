@@ -193,6 +193,13 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
 }
 
 //------------------------------------------------------------------------------
+bool vtkTyndallSceneReader::IsDrawnVolume(vtkVolume* entry, vtkVolume* volume)
+{
+  return entry == volume ||
+    (entry && volume && entry->GetMapper() && entry->GetMapper() == volume->GetMapper());
+}
+
+//------------------------------------------------------------------------------
 void vtkTyndallSceneReader::UpdateGuests(
   vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
 {
@@ -209,7 +216,7 @@ void vtkTyndallSceneReader::UpdateGuests(
            (!property || property->GetSceneShadows()) ? volumes->GetNextVolume(it) : nullptr)
   {
     ++index;
-    if (other == volume || !other->GetVisibility() || !other->GetMapper() ||
+    if (IsDrawnVolume(other, volume) || !other->GetVisibility() || !other->GetMapper() ||
       !other->GetMapper()->IsA("vtkTransmittanceVolumeMapper"))
     {
       continue;
@@ -307,10 +314,11 @@ void vtkTyndallSceneReader::UpdateCameraGroup(
   vtkVolumeCollection* collection = renderer->GetVolumes();
   vtkCollectionSimpleIterator it;
   collection->InitTraversal(it);
-  while (vtkVolume* v = static_cast<int>(volumes.size()) <= MaximumNumberOfGuests
+  while (vtkVolume* entry = static_cast<int>(volumes.size()) <= MaximumNumberOfGuests
       ? collection->GetNextVolume(it)
       : nullptr)
   {
+    vtkVolume* v = IsDrawnVolume(entry, volume) ? volume : entry;
     if (!v->GetVisibility() || !v->GetMapper() ||
       !v->GetMapper()->IsA("vtkTransmittanceVolumeMapper"))
     {

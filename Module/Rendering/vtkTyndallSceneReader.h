@@ -111,6 +111,16 @@ public:
    */
   static bool SameLighting(const vtkTyndallGridMedium& a, const vtkTyndallGridMedium& b);
 
+  /**
+   * Whether the renderer's volume `entry` is the volume being drawn. It is
+   * when it is the same object, and also when it shares the drawn volume's
+   * mapper: a level-of-detail prop such as ParaView's vtkPVLODVolume sits in
+   * the renderer's collection and draws an inner vtkVolume of its own with
+   * the same mapper, and the two are one medium (counting the entry as
+   * another volume would cast the medium's shadow twice).
+   */
+  static bool IsDrawnVolume(vtkVolume* entry, vtkVolume* volume);
+
 private:
   void UpdateLights(vtkRenderer* renderer, vtkObject* reporter);
   void UpdateGuests(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);

@@ -32,6 +32,8 @@ packages=(
   libopenexr-dev                      # tyndall-render --exr (linear float OpenEXR output)
   libglfw3-dev libglew-dev            # tyndall-viewer (GLFW window, GLEW)
   libgdcm-tools dcmtk                 # a DICOM test series made by Debian's tools
+  paraview-dev                        # the ParaView 5.11 plugin (Module/ParaView); its
+                                      # pvbatch comes with it (package paraview)
 )
 
 install_packages() {
@@ -52,11 +54,19 @@ install_packages() {
     apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 }
 
+# ParaView 5.11 for the plugin: Debian's paraview-dev needs files of
+# python3-paraview, which conflicts with python3-vtk9; paraview-prefix.sh
+# downloads and unpacks it into a prefix in the build tree (nothing is
+# installed or removed) and prints the ParaView_DIR to configure with.
+paraview_dir() {
+  bash "$root/Testing/Scripts/paraview-prefix.sh" "$build/paraview-prefix" | tail -n 1
+}
+
 build_tyndall() {
-  if [ ! -f "$build/CMakeCache.txt" ]; then
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-      -DPython3_EXECUTABLE=/usr/bin/python3 >&2
-  fi
+  local paraview
+  paraview="$(paraview_dir)"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+    -DPython3_EXECUTABLE=/usr/bin/python3 "-DParaView_DIR=$paraview" >&2
   cmake --build "$build" -j "$jobs" >&2
 }
 

@@ -1,0 +1,105 @@
+/**
+ * @class   vtkTyndallVolumeRepresentation
+ * @brief   ParaView's volume representation of image data, drawn by Tyndall
+ *
+ * vtkTyndallVolumeRepresentation is the "Tyndall Volume" entry of ParaView's
+ * Representation list for image data (Module/ParaView/Plugin/Tyndall.xml).
+ * It is ParaView's vtkImageVolumeRepresentation with two things swapped in,
+ * the way ParaView's NVIDIA IndeX plugin swaps in its own mapper:
+ *
+ * - the mapper is a vtkTransmittanceVolumeMapper (transmittance-map
+ *   shadows, single scattering, emission);
+ * - the volume's property is a vtkParticipatingMediumProperty that shares
+ *   the transfer functions ParaView edits (the colour map and the opacity
+ *   function of the coloured array, the scalar opacity unit distance, the
+ *   interpolation), so the colour map editor drives the medium.
+ *
+ * Everything else is ParaView's: the data delivery, the outline shown while
+ * interacting on ranks without data, the array selection, the volume's
+ * placement. The renderer's lights are the view's: the light kit's lights
+ * and those of ParaView's light inspector, up to
+ * vtkTransmittanceVolumeMapper::GetMaximumNumberOfLights().
+ *
+ * The settings below forward to the mapper and the medium; their ranges and
+ * defaults are those of vtkTransmittanceVolumeMapper and
+ * vtkParticipatingMediumProperty, which clamp them.
+ *
+ * @sa vtkTransmittanceVolumeMapper vtkParticipatingMediumProperty
+ */
+
+#ifndef vtkTyndallVolumeRepresentation_h
+#define vtkTyndallVolumeRepresentation_h
+
+#include "TyndallParaViewRepresentationModule.h" // For export macro
+#include "vtkImageVolumeRepresentation.h"
+#include "vtkNew.h" // For vtkNew
+
+class vtkParticipatingMediumProperty;
+class vtkTransmittanceVolumeMapper;
+
+class TYNDALLPARAVIEWREPRESENTATION_EXPORT vtkTyndallVolumeRepresentation
+  : public vtkImageVolumeRepresentation
+{
+public:
+  static vtkTyndallVolumeRepresentation* New();
+  vtkTypeMacro(vtkTyndallVolumeRepresentation, vtkImageVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The mapper's settings: the transmittance method
+   * (vtkTransmittanceVolumeMapper::NONE to ADAPTIVE_ETM; default
+   * ADAPTIVE_ETM), the number of map coefficients per light ([1, 16];
+   * default 8) and the maps' size in texels ([16, 4096]; default 256).
+   */
+  void SetTransmittanceMethod(int method);
+  int GetTransmittanceMethod();
+  void SetNumberOfCoefficients(int count);
+  int GetNumberOfCoefficients();
+  void SetTransmittanceMapSize(int size);
+  int GetTransmittanceMapSize();
+  ///@}
+
+  ///@{
+  /**
+   * The medium's settings (vtkParticipatingMediumProperty): the scattering
+   * model (EMISSION_ABSORPTION or SINGLE_SCATTERING), the density scale,
+   * the Henyey-Greenstein anisotropy ([-0.99, 0.99]), the light scale, the
+   * ambient intensity, the emission scale and the number of
+   * multiple-scattering octaves ([1, 8]).
+   */
+  void SetScatteringModel(int model);
+  void SetDensityScale(double scale);
+  void SetScatteringAnisotropy(double g);
+  void SetLightScale(double scale);
+  void SetAmbientIntensity(double intensity);
+  void SetEmissionScale(double scale);
+  void SetScatteringOctaves(int octaves);
+  ///@}
+
+  /**
+   * The mapper and the medium property, for settings the XML does not list
+   * and for tests.
+   */
+  vtkTransmittanceVolumeMapper* GetTyndallMapper();
+  vtkParticipatingMediumProperty* GetMediumProperty();
+
+protected:
+  vtkTyndallVolumeRepresentation();
+  ~vtkTyndallVolumeRepresentation() override;
+
+  /**
+   * ParaView's parameters, then the medium's share of the volume property's
+   * transfer functions, and the medium as the rendered volume's property.
+   */
+  void UpdateMapperParameters() override;
+
+private:
+  vtkTyndallVolumeRepresentation(const vtkTyndallVolumeRepresentation&) = delete;
+  void operator=(const vtkTyndallVolumeRepresentation&) = delete;
+
+  vtkNew<vtkTransmittanceVolumeMapper> TyndallMapper;
+  vtkNew<vtkParticipatingMediumProperty> Medium;
+};
+
+#endif

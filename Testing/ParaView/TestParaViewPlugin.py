@@ -1,0 +1,164 @@
+"""Tyndall's ParaView plugin in pvbatch: loads the plugin, reads smoke.vdb
+with the plugin's reader, shows it as "Tyndall Volume" with the scene of
+tyndall_paraview_scene.py, and checks
+
+1. the picture against the baseline the plain VTK pipeline is held to
+   (TestParaViewVTKPipeline.py): the plugin draws what the VTK pipeline
+   draws;
+2. that the representation's Tyndall properties reach the mapper (no
+   shadows, "None", changes the picture by more than the threshold);
+3. a state-file round trip: the state saved as .pvsm, the session reset,
+   the state loaded, the same picture;
+4. the cosine-noise source, shown as "Tyndall Volume", draws a cloud.
+
+Arguments: the plugin (Tyndall.so) and an output folder. Skips (exit 125)
+without ../shared/data/vdb/smoke.vdb.
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from paraview import simple  # noqa: E402
+
+import tyndall_paraview_images as images  # noqa: E402
+import tyndall_paraview_scene as scene  # noqa: E402
+
+if not os.path.exists(scene.SMOKE):
+    print("skip: %s is absent" % scene.SMOKE)
+    sys.exit(125)
+plugin, output = sys.argv[1], sys.argv[2]
+os.makedirs(output, exist_ok=True)
+failures = []
+
+
+def check(condition, message):
+    print(("ok: " if condition else "FAIL: ") + message)
+    if not condition:
+        failures.append(message)
+
+
+simple.LoadPlugin(plugin, remote=False)
+
+
+def make_view():
+    view = simple.CreateView("RenderView")
+    view.ViewSize = [scene.WIDTH, scene.HEIGHT]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.BackgroundColorMode = "Single Color"
+    view.Background = list(scene.BACKGROUND)
+    view.UseFXAA = 0
+    view.UseToneMapping = 0
+    # The light inspector's lights only: the light kit off, one scene light.
+    view.UseLight = 0
+    light = simple.AddLight(view=view)
+    light.Coords = "Scene"
+    light.Type = "Directional"
+    light.Position = list(scene.LIGHT_DIRECTION)
+    light.FocalPoint = [0.0, 0.0, 0.0]
+    light.Intensity = scene.LIGHT_INTENSITY
+    return view
+
+
+def place_camera(view, position, focal_point):
+    # After the view's first render: paraview.simple resets the camera of a
+    # view on its first render.
+    simple.Render(view)
+    view.CameraPosition = list(position)
+    view.CameraFocalPoint = list(focal_point)
+    view.CameraViewUp = list(scene.VIEW_UP)
+    view.CameraViewAngle = scene.VIEW_ANGLE
+    view.CameraParallelProjection = 0
+
+
+def transfer_functions(array):
+    lut = simple.GetColorTransferFunction(array)
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.ColorSpace = "RGB"
+    lut.RGBPoints = [v for point in scene.COLOR for v in point]
+    pwf = simple.GetOpacityTransferFunction(array)
+    pwf.AllowDuplicateScalars = 1
+    pwf.Points = [v for x, a in scene.OPACITY for v in (x, a, 0.5, 0.0)]
+    return lut, pwf
+
+
+def screenshot(view, name):
+    path = os.path.join(output, name)
+    simple.Render(view)
+    simple.SaveScreenshot(path, view, ImageResolution=[scene.WIDTH, scene.HEIGHT],
+                          TransparentBackground=0)
+    return images.rgb(path)
+
+
+# 1. smoke.vdb through the plugin's reader and representation.
+reader = simple.TyndallVolumeReader(FileName=scene.SMOKE)
+view = make_view()
+display = simple.Show(reader, view)
+available = display.GetProperty("Representation").Available
+check("Tyndall Volume" in available, "'Tyndall Volume' is in the Representation list")
+display.SetRepresentationType("Tyndall Volume")
+simple.ColorBy(display, ("POINTS", "density"))
+transfer_functions("density")
+display.ScalarOpacityUnitDistance = scene.UNIT_DISTANCE
+display.InterpolationType = "Linear"
+display.TyndallAmbient = scene.AMBIENT
+display.TyndallAnisotropy = scene.ANISOTROPY
+place_camera(view, scene.CAMERA_POSITION, scene.FOCAL_POINT)
+# The lights the mapper saw: the light inspector's one light, no light kit.
+renderer = view.GetClientSideObject().GetRenderer()
+picture, size = screenshot(view, "plugin-smoke.png")
+lights = [l for l in renderer.GetLights() if l.GetSwitch() and l.GetIntensity() > 0]
+check(len(lights) == 1, "one light reaches the renderer (%d)" % len(lights))
+baseline, baseline_size = images.rgb(scene.BASELINE)
+check(size == baseline_size, "picture size %s, baseline %s" % (size, baseline_size))
+value = scene.psnr(picture, baseline)
+check(value >= scene.PSNR_FLOOR,
+      "plugin against the VTK pipeline's baseline: %.1f dB (floor %.0f)" % (value, scene.PSNR_FLOOR))
+
+# 2. A Tyndall property reaches the mapper: no shadows is another picture.
+display.TyndallTransmittanceMethod = 0
+unshadowed, _ = screenshot(view, "plugin-smoke-unshadowed.png")
+value = scene.psnr(unshadowed, picture)
+check(value < scene.PSNR_FLOOR, "no shadows changes the picture: %.1f dB from it" % value)
+display.TyndallTransmittanceMethod = 5
+again, _ = screenshot(view, "plugin-smoke-again.png")
+check(scene.psnr(again, picture) >= scene.PSNR_FLOOR, "adaptive ETM again gives the first picture")
+
+# 3. A state-file round trip.
+state = os.path.join(output, "plugin-smoke.pvsm")
+simple.SaveState(state)
+simple.ResetSession()
+simple.LoadState(state)
+view = simple.GetActiveView() or simple.GetViews()[0]
+view.ViewSize = [scene.WIDTH, scene.HEIGHT]
+loaded, loaded_size = screenshot(view, "plugin-smoke-state.png")
+value = scene.psnr(loaded, picture)
+check(loaded_size == size and value >= scene.PSNR_FLOOR,
+      "the state file's picture against the saved one: %.1f dB" % value)
+display = simple.GetDisplayProperties(simple.FindSource("TyndallVolumeReader1"), view)
+check(display.Representation == "Tyndall Volume"
+      and abs(display.TyndallAnisotropy - scene.ANISOTROPY) < 1e-12,
+      "the state file keeps the representation and its Tyndall properties")
+
+# 4. The cosine-noise source as a Tyndall volume: a cloud on black.
+simple.ResetSession()
+noise = simple.CosineNoiseCloud(WholeExtent=[0, 47, 0, 47, 0, 47], Spacing=[2.0 / 47] * 3)
+noise.NumberOfOctaves = 4
+view = make_view()
+cloud = simple.Show(noise, view)
+cloud.SetRepresentationType("Tyndall Volume")
+simple.ColorBy(cloud, ("POINTS", "density"))
+lut, pwf = transfer_functions("density")
+pwf.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 0.5, 0.5, 0.0, 3.0, 0.9, 0.5, 0.0]
+cloud.TyndallDensityScale = 4.0
+place_camera(view, (0.0, 0.0, 5.0), (0.0, 0.0, 0.0))
+pixels, _ = screenshot(view, "plugin-noise.png")
+lit = sum(1 for v in pixels[0::3] if v > 20) / float(len(pixels) // 3)
+check(0.05 < lit < 0.9, "the noise cloud covers %.0f%% of the picture" % (100 * lit))
+
+if failures:
+    print("%d checks failed" % len(failures))
+    sys.exit(1)
+print("all checks passed")
