@@ -33,44 +33,16 @@ def run():
 
     import tyndall_paraview_images as images
     import tyndall_paraview_scene as scene
+    import tyndall_paraview_setup as setup
 
     if not os.path.exists(scene.SMOKE):
         return "skipped"
     simple.LoadPlugin(plugin, remote=False)
     reader = simple.TyndallVolumeReader(FileName=scene.SMOKE)
-    view = simple.GetActiveViewOrCreate("RenderView")
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.BackgroundColorMode = "Single Color"
-    view.Background = list(scene.BACKGROUND)
-    view.UseLight = 0
-    light = simple.AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Directional"
-    light.Position = list(scene.LIGHT_DIRECTION)
-    light.FocalPoint = [0.0, 0.0, 0.0]
-    light.Intensity = scene.LIGHT_INTENSITY
-    display = simple.Show(reader, view)
-    display.SetRepresentationType("Tyndall Volume")
-    simple.ColorBy(display, ("POINTS", "density"))
-    lut = simple.GetColorTransferFunction("density")
-    lut.AutomaticRescaleRangeMode = "Never"
-    lut.ColorSpace = "RGB"
-    lut.RGBPoints = [v for point in scene.COLOR for v in point]
-    pwf = simple.GetOpacityTransferFunction("density")
-    pwf.Points = [v for x, a in scene.OPACITY for v in (x, a, 0.5, 0.0)]
-    display.ScalarOpacityUnitDistance = scene.UNIT_DISTANCE
-    display.InterpolationType = "Linear"
-    display.TyndallAmbient = scene.AMBIENT
-    display.TyndallAnisotropy = scene.ANISOTROPY
-    simple.Render(view)
-    view.CameraPosition = list(scene.CAMERA_POSITION)
-    view.CameraFocalPoint = list(scene.FOCAL_POINT)
-    view.CameraViewUp = list(scene.VIEW_UP)
-    view.CameraViewAngle = scene.VIEW_ANGLE
+    view = setup.prepare_view(simple.GetActiveViewOrCreate("RenderView"))
+    setup.show_smoke(reader, view)
     path = os.path.join(output, "gui-smoke.png")
-    simple.SaveScreenshot(path, view, ImageResolution=[scene.WIDTH, scene.HEIGHT],
-                          TransparentBackground=0)
+    setup.screenshot(view, path)
     picture, size = images.rgb(path)
     baseline, baseline_size = images.rgb(scene.BASELINE)
     if size != baseline_size:

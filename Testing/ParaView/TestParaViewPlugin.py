@@ -24,6 +24,7 @@ from paraview import simple  # noqa: E402
 
 import tyndall_paraview_images as images  # noqa: E402
 import tyndall_paraview_scene as scene  # noqa: E402
+import tyndall_paraview_setup as setup  # noqa: E402
 
 if not os.path.exists(scene.SMOKE):
     print("skip: %s is absent" % scene.SMOKE)
@@ -45,67 +46,21 @@ simple.LoadPlugin(plugin, remote=False)
 def make_view():
     view = simple.CreateView("RenderView")
     view.ViewSize = [scene.WIDTH, scene.HEIGHT]
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.BackgroundColorMode = "Single Color"
-    view.Background = list(scene.BACKGROUND)
-    view.UseFXAA = 0
-    view.UseToneMapping = 0
-    # The light inspector's lights only: the light kit off, one scene light.
-    view.UseLight = 0
-    light = simple.AddLight(view=view)
-    light.Coords = "Scene"
-    light.Type = "Directional"
-    light.Position = list(scene.LIGHT_DIRECTION)
-    light.FocalPoint = [0.0, 0.0, 0.0]
-    light.Intensity = scene.LIGHT_INTENSITY
-    return view
-
-
-def place_camera(view, position, focal_point):
-    # After the view's first render: paraview.simple resets the camera of a
-    # view on its first render.
-    simple.Render(view)
-    view.CameraPosition = list(position)
-    view.CameraFocalPoint = list(focal_point)
-    view.CameraViewUp = list(scene.VIEW_UP)
-    view.CameraViewAngle = scene.VIEW_ANGLE
-    view.CameraParallelProjection = 0
-
-
-def transfer_functions(array):
-    lut = simple.GetColorTransferFunction(array)
-    lut.AutomaticRescaleRangeMode = "Never"
-    lut.ColorSpace = "RGB"
-    lut.RGBPoints = [v for point in scene.COLOR for v in point]
-    pwf = simple.GetOpacityTransferFunction(array)
-    pwf.AllowDuplicateScalars = 1
-    pwf.Points = [v for x, a in scene.OPACITY for v in (x, a, 0.5, 0.0)]
-    return lut, pwf
+    return setup.prepare_view(view)
 
 
 def screenshot(view, name):
     path = os.path.join(output, name)
-    simple.Render(view)
-    simple.SaveScreenshot(path, view, ImageResolution=[scene.WIDTH, scene.HEIGHT],
-                          TransparentBackground=0)
+    setup.screenshot(view, path)
     return images.rgb(path)
 
 
 # 1. smoke.vdb through the plugin's reader and representation.
 reader = simple.TyndallVolumeReader(FileName=scene.SMOKE)
 view = make_view()
-display = simple.Show(reader, view)
+display = setup.show_smoke(reader, view)
 available = display.GetProperty("Representation").Available
 check("Tyndall Volume" in available, "'Tyndall Volume' is in the Representation list")
-display.SetRepresentationType("Tyndall Volume")
-simple.ColorBy(display, ("POINTS", "density"))
-transfer_functions("density")
-display.ScalarOpacityUnitDistance = scene.UNIT_DISTANCE
-display.InterpolationType = "Linear"
-display.TyndallAmbient = scene.AMBIENT
-display.TyndallAnisotropy = scene.ANISOTROPY
-place_camera(view, scene.CAMERA_POSITION, scene.FOCAL_POINT)
 # The lights the mapper saw: the light inspector's one light, no light kit.
 renderer = view.GetClientSideObject().GetRenderer()
 picture, size = screenshot(view, "plugin-smoke.png")
@@ -150,10 +105,10 @@ view = make_view()
 cloud = simple.Show(noise, view)
 cloud.SetRepresentationType("Tyndall Volume")
 simple.ColorBy(cloud, ("POINTS", "density"))
-lut, pwf = transfer_functions("density")
+lut, pwf = setup.transfer_functions("density")
 pwf.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 0.5, 0.5, 0.0, 3.0, 0.9, 0.5, 0.0]
 cloud.TyndallDensityScale = 4.0
-place_camera(view, (0.0, 0.0, 5.0), (0.0, 0.0, 0.0))
+setup.place_camera(view, (0.0, 0.0, 5.0), (0.0, 0.0, 0.0))
 pixels, _ = screenshot(view, "plugin-noise.png")
 lit = sum(1 for v in pixels[0::3] if v > 20) / float(len(pixels) // 3)
 check(0.05 < lit < 0.9, "the noise cloud covers %.0f%% of the picture" % (100 * lit))
