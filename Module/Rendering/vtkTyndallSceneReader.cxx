@@ -195,8 +195,31 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
 //------------------------------------------------------------------------------
 bool vtkTyndallSceneReader::IsDrawnVolume(vtkVolume* entry, vtkVolume* volume)
 {
-  return entry == volume ||
-    (entry && volume && entry->GetMapper() && entry->GetMapper() == volume->GetMapper());
+  if (entry == volume)
+  {
+    return true;
+  }
+  if (!entry || !volume || !entry->GetMapper() || entry->GetMapper() != volume->GetMapper() ||
+    entry->GetProperty() != volume->GetProperty())
+  {
+    return false;
+  }
+  // The same placement (a level-of-detail prop copies its matrix into the
+  // volume it draws): volumes that merely share a mapper are two media.
+  vtkMatrix4x4* a = entry->GetMatrix();
+  vtkMatrix4x4* b = volume->GetMatrix();
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      const double x = a->GetElement(i, j);
+      if (std::abs(x - b->GetElement(i, j)) > 1e-9 * (1.0 + std::abs(x)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

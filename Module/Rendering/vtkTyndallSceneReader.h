@@ -114,10 +114,13 @@ public:
   /**
    * Whether the renderer's volume `entry` is the volume being drawn. It is
    * when it is the same object, and also when it shares the drawn volume's
-   * mapper: a level-of-detail prop such as ParaView's vtkPVLODVolume sits in
-   * the renderer's collection and draws an inner vtkVolume of its own with
-   * the same mapper, and the two are one medium (counting the entry as
-   * another volume would cast the medium's shadow twice).
+   * mapper, property and placement (matrix): a level-of-detail prop such as
+   * ParaView's vtkPVLODVolume sits in the renderer's collection and draws an
+   * inner vtkVolume of its own with the same mapper, property and matrix,
+   * and the two are one medium (counted as another volume, the entry made
+   * the mapper read its own medium as a guest, re-entering its own scene
+   * update, and warn about several volumes). Volumes that share only a
+   * mapper are two media.
    */
   static bool IsDrawnVolume(vtkVolume* entry, vtkVolume* volume);
 
