@@ -12,6 +12,24 @@ if (NOT ParaView_DIR AND EXISTS "${_tyndall_paraview_default}/paraview-config.cm
     "ParaView 5.11's CMake package, for Tyndall's plugin (Documentation/paraview.md)")
 endif ()
 
+# The install prefix that ParaView's imported targets resolve against: as
+# many folders above ParaView_DIR as its targets file climbs (4 in Debian's
+# lib/x86_64-linux-gnu/cmake/paraview-5.11, 3 in a lib/cmake/paraview-5.11).
+function (_tyndall_paraview_prefix out)
+  set(prefix "${ParaView_DIR}")
+  set(targets "${ParaView_DIR}/ParaView-targets.cmake")
+  if (EXISTS "${targets}")
+    file(STRINGS "${targets}" climbs
+      REGEX "get_filename_component\\(_IMPORT_PREFIX \"\\\${_IMPORT_PREFIX}\" PATH\\)")
+  else ()
+    set(climbs 1 2 3 4)
+  endif ()
+  foreach (climb IN LISTS climbs)
+    get_filename_component(prefix "${prefix}" DIRECTORY)
+  endforeach ()
+  set("${out}" "${prefix}" PARENT_SCOPE)
+endfunction ()
+
 # Why the plugin cannot be built here, or nothing.
 function (_tyndall_paraview_blocker out)
   set(reason "")
@@ -31,7 +49,7 @@ function (_tyndall_paraview_blocker out)
       list(GET _targets 0 _targets)
       file(STRINGS "${_targets}" _line REGEX "IMPORTED_LOCATION_[A-Z]+ \"" LIMIT_COUNT 1)
       string(REGEX REPLACE ".*\"\\\${_IMPORT_PREFIX}/([^\"]*)\".*" "\\1" _file "${_line}")
-      get_filename_component(_prefix "${ParaView_DIR}/../../../.." ABSOLUTE)
+      _tyndall_paraview_prefix(_prefix)
       if (_file AND NOT EXISTS "${_prefix}/${_file}")
         set(reason "ParaView's CMake package in ${ParaView_DIR} names ${_prefix}/${_file}, which is missing (Debian's paraview-dev without python3-paraview: make a prefix with Testing/Scripts/paraview-prefix.sh PREFIX and pass -DParaView_DIR=<what it prints>)")
       endif ()
@@ -55,6 +73,8 @@ ExternalProject_Add(TyndallParaViewPlugin
   CMAKE_ARGS
     "-DParaView_DIR=${ParaView_DIR}"
     "-DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}"
+    "-DCMAKE_INSTALL_PREFIX=${CMAKE_INSTALL_PREFIX}"
+    "-DCMAKE_INSTALL_LIBDIR=${CMAKE_INSTALL_LIBDIR}"
     "-DCMAKE_C_COMPILER=${CMAKE_C_COMPILER}"
     "-DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}"
   INSTALL_COMMAND ""
@@ -67,10 +87,10 @@ install(DIRECTORY "${_tyndall_paraview_build}/${CMAKE_INSTALL_LIBDIR}/tyndall-pa
   USE_SOURCE_PERMISSIONS
   COMPONENT paraview)
 
-get_filename_component(_prefix "${ParaView_DIR}/../../../.." ABSOLUTE)
+_tyndall_paraview_prefix(_prefix)
 find_program(TYNDALL_PVBATCH NAMES pvbatch HINTS "${_prefix}/bin"
   DOC "ParaView's pvbatch, for the plugin's tests")
-# Where ParaView's Python modules are (Debian's layout; the prefix of
-# Testing/Scripts/paraview-prefix.sh holds them there too).
+# Where ParaView's Python modules are (Debian's layout, which the prefix of
+# Testing/Scripts/paraview-prefix.sh has too; set it for another layout).
 set(TYNDALL_PARAVIEW_PYTHONPATH "${_prefix}/lib/python3/dist-packages" CACHE PATH
   "ParaView's Python modules, put first on pvbatch's PYTHONPATH by the plugin's tests")

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Runs TestParaViewGUI.py in ParaView's GUI and turns the verdict it writes
-# into an exit code (0 passed, 125 skipped, 1 otherwise): the GUI's own exit
-# code does not say whether its script failed.
+# into an exit code (0 passed and the GUI exited cleanly, 125 skipped, 1
+# otherwise): the GUI's own exit code does not say whether its script failed.
 #   run-gui-test.sh PARAVIEW PLUGIN OUTPUT_FOLDER
 set -u
 paraview="$1"
@@ -19,7 +19,13 @@ if [ ! -f "$TYNDALL_PARAVIEW_GUI_RESULT" ]; then
 fi
 cat "$TYNDALL_PARAVIEW_GUI_RESULT"
 case "$(cat "$TYNDALL_PARAVIEW_GUI_RESULT")" in
-  passed*) exit 0 ;;
+  passed*)
+    # A crash while the GUI closes fails the test too.
+    if [ "$status" -ne 0 ]; then
+      echo "the GUI exited with code $status after its script passed" >&2
+      exit 1
+    fi
+    exit 0 ;;
   skipped*) exit 125 ;;
   *) exit 1 ;;
 esac

@@ -36,20 +36,40 @@ if [ -f "$stamp" ]; then
   echo "$paraview_dir"
   exit 0
 fi
+# The script replaces PREFIX/usr: it works only in a folder of its own.
+marker="$prefix/.tyndall-paraview-prefix"
+if [ "$prefix" = / ] || [ "$prefix" = /usr ]; then
+  echo "paraview-prefix: refusing to use $prefix as the prefix" >&2
+  exit 1
+fi
+if [ ! -f "$marker" ] && [ -n "$(ls -A "$prefix")" ]; then
+  echo "paraview-prefix: $prefix is not empty and was not made by this script: choose another folder" >&2
+  exit 1
+fi
+touch "$marker"
 if [ ! -f "$pv_cmake/paraview-config.cmake" ]; then
   echo "paraview-prefix: $pv_cmake/paraview-config.cmake is missing: install paraview-dev" >&2
   exit 1
 fi
 
-# 1. python3-paraview, downloaded and unpacked (never installed).
+# 1. python3-paraview of the installed paraview-dev's version, downloaded
+# and unpacked (never installed).
+version="$(dpkg-query -W -f='${Version}' paraview-dev 2>/dev/null || true)"
+if [ -z "$version" ]; then
+  echo "paraview-prefix: paraview-dev is not installed" >&2
+  exit 1
+fi
 deb_dir="$prefix/deb"
 unpacked="$prefix/unpacked"
 mkdir -p "$deb_dir"
-if ! ls "$deb_dir"/python3-paraview_*.deb >/dev/null 2>&1; then
-  (cd "$deb_dir" && apt-get download python3-paraview >&2)
+deb="$(ls "$deb_dir"/python3-paraview_"${version#*:}"_*.deb 2>/dev/null | head -n 1 || true)"
+if [ -z "$deb" ]; then
+  rm -f "$deb_dir"/*.deb
+  (cd "$deb_dir" && apt-get download "python3-paraview=$version" >&2)
+  deb="$(ls "$deb_dir"/python3-paraview_*.deb | head -n 1)"
 fi
 rm -rf "$unpacked"
-dpkg-deb -x "$deb_dir"/python3-paraview_*.deb "$unpacked"
+dpkg-deb -x "$deb" "$unpacked"
 
 # 2. PREFIX/usr: links to /usr's entries, with real folders where the
 # unpacked package or the CMake copy must go.

@@ -58,8 +58,16 @@ install_packages() {
 # python3-paraview, which conflicts with python3-vtk9; paraview-prefix.sh
 # downloads and unpacks it into a prefix in the build tree (nothing is
 # installed or removed) and prints the ParaView_DIR to configure with.
+# A failure here (no network for the download, say) is not fatal: the
+# build goes on without the plugin, and the configure log says why.
 paraview_dir() {
-  bash "$root/Testing/Scripts/paraview-prefix.sh" "$build/paraview-prefix" | tail -n 1
+  local dir
+  if dir="$(bash "$root/Testing/Scripts/paraview-prefix.sh" "$build/paraview-prefix" | tail -n 1)" &&
+    [ -n "$dir" ]; then
+    echo "$dir"
+  else
+    echo "setup: WARNING: the ParaView prefix could not be made; the ParaView plugin is skipped" >&2
+  fi
 }
 
 build_tyndall() {

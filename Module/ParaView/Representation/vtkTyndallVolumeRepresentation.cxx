@@ -27,6 +27,8 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   // ParaView edits a function.
   vtkVolumeProperty* paraview = this->Property;
   this->Medium->SetColor(paraview->GetRGBTransferFunction(0));
+  // Emission (EmissionScale > 0) is coloured by the same colour map.
+  this->Medium->SetEmissionColor(paraview->GetRGBTransferFunction(0));
   this->Medium->SetScalarOpacity(paraview->GetScalarOpacity(0));
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
@@ -41,7 +43,6 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
 void vtkTyndallVolumeRepresentation::SetTransmittanceMethod(int method)
 {
   this->TyndallMapper->SetTransmittanceMethod(method);
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -54,7 +55,6 @@ int vtkTyndallVolumeRepresentation::GetTransmittanceMethod()
 void vtkTyndallVolumeRepresentation::SetNumberOfCoefficients(int count)
 {
   this->TyndallMapper->SetNumberOfCoefficients(count);
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -67,7 +67,6 @@ int vtkTyndallVolumeRepresentation::GetNumberOfCoefficients()
 void vtkTyndallVolumeRepresentation::SetTransmittanceMapSize(int size)
 {
   this->TyndallMapper->SetTransmittanceMapSize(size);
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -12,7 +12,9 @@
  * - the volume's property is a vtkParticipatingMediumProperty that shares
  *   the transfer functions ParaView edits (the colour map and the opacity
  *   function of the coloured array, the scalar opacity unit distance, the
- *   interpolation), so the colour map editor drives the medium.
+ *   interpolation), so the colour map editor drives the medium. The colour
+ *   map is the medium's albedo and, with an EmissionScale above 0, the
+ *   colour of its emission.
  *
  * Everything else is ParaView's: the data delivery, the outline shown while
  * interacting on ranks without data, the array selection, the volume's
@@ -62,11 +64,14 @@ public:
 
   ///@{
   /**
-   * The medium's settings (vtkParticipatingMediumProperty): the scattering
-   * model (EMISSION_ABSORPTION or SINGLE_SCATTERING), the density scale,
-   * the Henyey-Greenstein anisotropy ([-0.99, 0.99]), the light scale, the
-   * ambient intensity, the emission scale and the number of
-   * multiple-scattering octaves ([1, 8]).
+   * The medium's settings (vtkParticipatingMediumProperty, which clamps
+   * them): the scattering model (EMISSION_ABSORPTION or SINGLE_SCATTERING;
+   * default SINGLE_SCATTERING), the density scale ([0, 1e6]; default 1),
+   * the Henyey-Greenstein anisotropy ([-0.99, 0.99]; default 0), the light
+   * scale ([0, 1e6]; default 4 pi), the ambient intensity ([0, 1e6];
+   * default 0), the emission scale ([0, 1e6]; default 0; the emission's
+   * colour is the colour map's) and the number of multiple-scattering
+   * octaves ([1, 8]; default 2).
    */
   void SetScatteringModel(int model);
   void SetDensityScale(double scale);
@@ -78,8 +83,9 @@ public:
   ///@}
 
   /**
-   * The mapper and the medium property, for settings the XML does not list
-   * and for tests.
+   * The mapper and the medium property, for C++ code that needs settings
+   * the XML does not list (the plugin wraps this class for ParaView's
+   * client-server layer only, not for Python).
    */
   vtkTransmittanceVolumeMapper* GetTyndallMapper();
   vtkParticipatingMediumProperty* GetMediumProperty();
