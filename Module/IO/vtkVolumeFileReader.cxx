@@ -213,6 +213,8 @@ int vtkVolumeFileReader::RequestInformation(
   info->Set(vtkDataObject::SPACING(), this->Image->GetSpacing(), 3);
   info->Set(vtkDataObject::ORIGIN(), this->Image->GetOrigin(), 3);
   info->Set(vtkDataObject::DIRECTION(), this->Image->GetDirectionMatrix()->GetData(), 9);
+  // Pieces are parts of the extent (RequestData crops to them).
+  info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   return 1;
 }
 
@@ -226,6 +228,15 @@ int vtkVolumeFileReader::RequestData(
     return 0;
   }
   output->ShallowCopy(this->Image);
+  // A piece of a parallel pipeline (ParaView under MPI, streaming): the
+  // requested extent only. The file is read whole, once, by every piece.
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    int extent[6];
+    info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+    output->Crop(extent);
+  }
   return 1;
 }
 

@@ -59,6 +59,10 @@
  * empty. The inner reader's progress is forwarded (ProgressEvent).
  * Documentation/io.md lists the bad inputs that are tested.
  *
+ * A request for part of the extent (a piece of a parallel pipeline, such
+ * as ParaView's under MPI, or streaming) gets that part only: the file is
+ * still read whole, once per reader.
+ *
  * Usable from Python: `from tyndall import vtkVolumeFileReader`.
  *
  * @sa vtkOpenVDBImageReader vtkTransferFunctionPresets

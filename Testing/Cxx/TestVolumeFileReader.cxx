@@ -292,6 +292,52 @@ void CheckError(const std::string& path, const std::string& text, const std::str
   }
   Check(ok, what);
 }
+
+// Pieces of a parallel pipeline: piece p of 3 is a part of the extent with
+// the whole image's values there, and the pieces cover the whole extent.
+void CheckPieces(const std::string& path)
+{
+  vtkNew<vtkVolumeFileReader> whole;
+  whole->SetFileName(path.c_str());
+  whole->Update();
+  vtkImageData* all = whole->GetOutput();
+  int wholeExtent[6];
+  all->GetExtent(wholeExtent);
+  vtkIdType covered = 0;
+  for (int piece = 0; piece < 3; ++piece)
+  {
+    vtkNew<vtkVolumeFileReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->UpdatePiece(piece, 3, 0);
+    vtkImageData* part = reader->GetOutput();
+    int e[6];
+    part->GetExtent(e);
+    bool inside = true;
+    for (int a = 0; a < 3; ++a)
+    {
+      inside = inside && e[2 * a] >= wholeExtent[2 * a] && e[2 * a + 1] <= wholeExtent[2 * a + 1];
+    }
+    Check(inside && part->GetNumberOfPoints() < all->GetNumberOfPoints(),
+      "piece " + std::to_string(piece) + " of 3 is a part of the extent");
+    bool same = part->GetPointData()->GetScalars() != nullptr;
+    for (int k = e[4]; same && k <= e[5]; ++k)
+    {
+      for (int j = e[2]; same && j <= e[3]; ++j)
+      {
+        for (int i = e[0]; same && i <= e[1]; ++i)
+        {
+          same = part->GetScalarComponentAsDouble(i, j, k, 0) ==
+            all->GetScalarComponentAsDouble(i, j, k, 0);
+        }
+      }
+    }
+    Check(same, "piece " + std::to_string(piece) + " holds the whole image's values");
+    covered += (e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1);
+  }
+  // Pieces split by points share their boundary planes: they cover at least
+  // every point.
+  Check(covered >= all->GetNumberOfPoints(), "the pieces cover the whole extent");
+}
 }
 
 int TestVolumeFileReader(int, char*[])
@@ -370,6 +416,7 @@ int TestVolumeFileReader(int, char*[])
   }
   CheckError(dir + "/flat.vti", "at least 2 points along each axis", "a flat image");
 
+  CheckPieces(dir + "/volume.vti");
   CheckNifti(dir);
   CheckNiftiPlacement(dir);
   CheckClaims(dir);
