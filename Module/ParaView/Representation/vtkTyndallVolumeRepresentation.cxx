@@ -33,10 +33,6 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
   this->Medium->SetIndependentComponents(paraview->GetIndependentComponents());
-  if (this->Actor->GetProperty() != this->Medium.Get())
-  {
-    this->Actor->SetProperty(this->Medium);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -46,33 +42,15 @@ void vtkTyndallVolumeRepresentation::SetTransmittanceMethod(int method)
 }
 
 //------------------------------------------------------------------------------
-int vtkTyndallVolumeRepresentation::GetTransmittanceMethod()
-{
-  return this->TyndallMapper->GetTransmittanceMethod();
-}
-
-//------------------------------------------------------------------------------
 void vtkTyndallVolumeRepresentation::SetNumberOfCoefficients(int count)
 {
   this->TyndallMapper->SetNumberOfCoefficients(count);
 }
 
 //------------------------------------------------------------------------------
-int vtkTyndallVolumeRepresentation::GetNumberOfCoefficients()
-{
-  return this->TyndallMapper->GetNumberOfCoefficients();
-}
-
-//------------------------------------------------------------------------------
 void vtkTyndallVolumeRepresentation::SetTransmittanceMapSize(int size)
 {
   this->TyndallMapper->SetTransmittanceMapSize(size);
-}
-
-//------------------------------------------------------------------------------
-int vtkTyndallVolumeRepresentation::GetTransmittanceMapSize()
-{
-  return this->TyndallMapper->GetTransmittanceMapSize();
 }
 
 //------------------------------------------------------------------------------

@@ -55,11 +55,8 @@ public:
    * default 8) and the maps' size in texels ([16, 4096]; default 256).
    */
   void SetTransmittanceMethod(int method);
-  int GetTransmittanceMethod();
   void SetNumberOfCoefficients(int count);
-  int GetNumberOfCoefficients();
   void SetTransmittanceMapSize(int size);
-  int GetTransmittanceMapSize();
   ///@}
 
   ///@{
@@ -83,8 +80,8 @@ public:
   ///@}
 
   /**
-   * The mapper and the medium property, for C++ code that needs settings
-   * the XML does not list (the plugin wraps this class for ParaView's
+   * The mapper and the medium property, for C++ code that reads these
+   * settings or needs others the XML does not list (the plugin wraps this class for ParaView's
    * client-server layer only, not for Python).
    */
   vtkTransmittanceVolumeMapper* GetTyndallMapper();
@@ -96,7 +93,8 @@ protected:
 
   /**
    * ParaView's parameters, then the medium's share of the volume property's
-   * transfer functions, and the medium as the rendered volume's property.
+   * transfer functions (the medium is the rendered volume's property from
+   * the constructor on).
    */
   void UpdateMapperParameters() override;
 
