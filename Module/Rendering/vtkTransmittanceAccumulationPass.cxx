@@ -133,6 +133,7 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
   {
     vtkTransmittanceScopedTextures bind({ image });
     program->SetUniformi("accumulated", image->GetTextureUnit());
+    program->SetUniformi("opacityCoversRadiance", 0); // an image, not the picture
     this->Quad.Render();
   }
   glBlendColor(0.0f, 0.0f, 0.0f, 0.0f); // GL's default; VTK does not track it
@@ -223,10 +224,12 @@ bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& fr
       texture->SetMagnificationFilter(filter);
     }
   }
+  const int covers = frame.Integrator.OpacityCoversRadiance ? 1 : 0;
   if (!opacity)
   {
     vtkTransmittanceScopedTextures bind({ image });
     program->SetUniformi("accumulated", image->GetTextureUnit());
+    program->SetUniformi("opacityCoversRadiance", covers);
     this->Quad.RenderOver(frame.State);
     return true;
   }
@@ -234,11 +237,13 @@ bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& fr
   {
     vtkTransmittanceScopedTextures bind({ opacity });
     program->SetUniformi("accumulated", opacity->GetTextureUnit());
+    program->SetUniformi("opacityCoversRadiance", 0);
     this->Quad.RenderOver(
       frame.State, GL_ZERO, GL_ONE_MINUS_SRC_COLOR, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
   }
   vtkTransmittanceScopedTextures bind({ image });
   program->SetUniformi("accumulated", image->GetTextureUnit());
+  program->SetUniformi("opacityCoversRadiance", covers);
   this->Quad.RenderOver(frame.State, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   return true;
 }

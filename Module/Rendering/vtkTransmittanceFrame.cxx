@@ -141,7 +141,7 @@ void vtkTransmittanceFrame::PrepareMapBox()
   std::copy(this->WorldToBox, this->WorldToBox + 16, this->WorldToCameraBox);
   std::copy(this->BoxToWorld, this->BoxToWorld + 16, this->CameraBoxToWorld);
   std::copy(this->BoxExtents, this->BoxExtents + 3, this->CameraBoxExtents);
-  if (!this->Guests.empty())
+  if (!this->Guests.empty() || this->Integrator.HasMapBounds)
   {
     double extents[3];
     float boxToWorld[16];
@@ -246,6 +246,14 @@ void vtkTransmittanceFrame::FitAxisBox(bool cameraGuestsOnly, double corners[24]
     }
   };
   extend(this->Corners);
+  if (!cameraGuestsOnly && this->Integrator.HasMapBounds)
+  {
+    // The whole medium of several processes (vtkTransmittanceMapReducer).
+    const double* b = this->Integrator.MapBounds;
+    const double whole[24] = { b[0], b[2], b[4], b[1], b[3], b[5], b[0], b[2], b[4], b[1], b[3],
+      b[5], b[0], b[2], b[4], b[1], b[3], b[5], b[0], b[2], b[4], b[1], b[3], b[5] };
+    extend(whole);
+  }
   for (const Guest& guest : this->Guests)
   {
     if (guest.Camera || !cameraGuestsOnly)
@@ -309,6 +317,8 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
   variant.Chromatic = this->Medium && this->Medium->GetChromatic();
   variant.Guests = static_cast<int>(this->Guests.size());
+  variant.MapBeyondMedium = this->Integrator.HasMapBounds;
+  variant.OpacityCoversRadiance = this->Integrator.OpacityCoversRadiance;
   variant.CameraGuests = this->HasCameraGuests();
   if (variant.CameraGuests)
   {

@@ -28,6 +28,7 @@ class vtkOpenGLState;
 class vtkRenderer;
 class vtkShaderProgram;
 class vtkTransmittanceLightFrustum;
+class vtkTransmittanceMapReducer;
 class vtkTransmittanceMediumTextures;
 class vtkTextureObject;
 class vtkTyndallDetailMedium;
@@ -61,6 +62,17 @@ public:
     bool SkipEmptySpace = true;
     /// Longest side of the transmittance cache's lattice; 0: no cache.
     int CacheSize = 0;
+    /**
+     * Several processes draw the picture (vtkTransmittanceMapReducer): the
+     * reducer, and the world box of the whole medium (xmin, xmax, ymin,
+     * ymax, zmin, zmax) that every process fits its maps to. Null and
+     * unused in one process.
+     */
+    vtkTransmittanceMapReducer* Reducer = nullptr;
+    /// Composited by an 8-bit compositor (ShaderSource's OpacityCoversRadiance).
+    bool OpacityCoversRadiance = false;
+    bool HasMapBounds = false;
+    double MapBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   };
 
   /// A guest (vtkTyndallSceneReader::GetGuests()): another medium the light crosses.

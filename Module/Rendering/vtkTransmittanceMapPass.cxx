@@ -17,6 +17,7 @@
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMapReducer.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTransmittanceScopedTextures.h"
@@ -129,29 +130,122 @@ bool vtkTransmittanceMapPass::IsBuiltFor(const vtkTransmittanceFrame& frame) con
 //------------------------------------------------------------------------------
 bool vtkTransmittanceMapPass::Render(const vtkTransmittanceFrame& frame, vtkObject* reporter)
 {
+  vtkTransmittanceMapReducer* reducer = frame.Integrator.Reducer;
   if (!frame.NeedsMaps())
   {
-    return true;
+    return reducer ? this->SkipReduction(reducer, reporter) : true;
   }
   const std::vector<double> key = this->Key(frame);
-  if (key == this->BuiltKey && this->MapTexture)
+  // With a reducer, maps that were built from this piece alone are rebuilt
+  // and added (vtkTransmittanceVolumeMapper's fallback in Render()).
+  bool build = key != this->BuiltKey || !this->MapTexture || (reducer && !this->BuiltAdded);
+  vtkIdType count = 4 * static_cast<vtkIdType>(frame.Integrator.MapSize) *
+    frame.Integrator.MapSize * static_cast<vtkIdType>(frame.Lights.size()) * frame.Layers *
+    frame.MapSets;
+  if (reducer && !this->Agree(reducer, build, count, reporter))
+  {
+    return false;
+  }
+  if (!build)
   {
     return true;
   }
   this->BuiltKey.clear();
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  if (!this->Allocate(frame, reporter) || !this->Build(frame, reporter))
+  bool built = this->Allocate(frame, reporter) && this->Build(frame, reporter);
+  if (reducer)
+  {
+    // Every process adds its maps, built or (on failure) zeros.
+    built = this->Reduce(reducer, built, count, reporter) && built;
+  }
+  if (!built)
   {
     return false;
   }
   glFinish();
   timer->StopTimer();
   this->BuiltKey = key;
+  this->BuiltAdded = reducer != nullptr;
   this->LastBuildTime = timer->GetElapsedTime();
   ++this->BuildCount;
   this->BuildTime.Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::Agree(
+  vtkTransmittanceMapReducer* reducer, bool& build, vtkIdType& count, vtkObject* reporter) const
+{
+  double agreed[2] = { build ? 1.0 : 0.0, static_cast<double>(count) };
+  if (!reducer->AllReduceMax(agreed, 2))
+  {
+    vtkErrorWithObjectMacro(reporter, << "The processes could not agree on the maps.");
+    return false;
+  }
+  build = agreed[0] > 0.0;
+  if (build && count != 0 && static_cast<vtkIdType>(agreed[1]) != count)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The processes' maps differ in size (" << count
+                                      << " floats here, " << agreed[1]
+                                      << " elsewhere): their lights or map settings differ.");
+  }
+  count = static_cast<vtkIdType>(agreed[1]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::SkipReduction(
+  vtkTransmittanceMapReducer* reducer, vtkObject* reporter)
+{
+  bool build = false;
+  vtkIdType count = 0;
+  if (!this->Agree(reducer, build, count, reporter))
+  {
+    return false;
+  }
+  return !build || this->Reduce(reducer, false, count, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::Reduce(
+  vtkTransmittanceMapReducer* reducer, bool built, vtkIdType count, vtkObject* reporter)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  const vtkIdType mine =
+    built ? 4 * static_cast<vtkIdType>(this->Size) * this->Size * this->Slices : 0;
+  bool readable = built && mine == count;
+  std::vector<float> values(static_cast<size_t>(count), 0.0f);
+  vtkOpenGLClearErrorMacro();
+  if (readable)
+  {
+    // RGBA floats: rows are 4-byte aligned whatever GL's pack alignment.
+    vtkTransmittanceScopedTextures bound({ this->MapTexture });
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, values.data());
+    if (glGetError() != GL_NO_ERROR)
+    {
+      vtkErrorWithObjectMacro(reporter, << "The maps could not be read back: zeros are added.");
+      std::fill(values.begin(), values.end(), 0.0f);
+      readable = false;
+    }
+  }
+  const bool summed = reducer->AllReduceSum(values.data(), count);
+  if (readable && summed)
+  {
+    vtkTransmittanceScopedTextures bound({ this->MapTexture });
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, this->Size, this->Size, this->Slices, GL_RGBA,
+      GL_FLOAT, values.data());
+  }
+  timer->StopTimer();
+  reducer->SetLastReductionTime(timer->GetElapsedTime());
+  reducer->SetLastReductionSize(count);
+  if (!summed)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The processes could not add their maps.");
+    return false;
+  }
+  return !built || readable;
 }
 
 //------------------------------------------------------------------------------

@@ -43,6 +43,7 @@ class vtkImageData;
 class vtkOpenGLFramebufferObject;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
+class vtkTransmittanceMapReducer;
 class vtkWindow;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceMapPass : public vtkObject
@@ -54,9 +55,21 @@ public:
 
   /**
    * Builds the maps when the frame needs them and something changed.
-   * Errors go through `reporter`; false on error.
+   * Errors go through `reporter`; false on error. With several processes
+   * (the frame's Integrator.Reducer) the processes agree whether any must
+   * rebuild, and the rebuilt maps are the sum of every process's
+   * (vtkTransmittanceMapReducer); with a reducer this is collective, so
+   * every process calls it once per frame
+   * (vtkTransmittanceVolumeMapper::PrepareDistributedMaps()).
    */
   bool Render(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+
+  /**
+   * A process with nothing to draw this frame takes part in the
+   * reductions of Render() with zeros (collective). False on a
+   * communication error.
+   */
+  bool SkipReduction(vtkTransmittanceMapReducer* reducer, vtkObject* reporter);
 
   /// The maps (null before the first build) and their number of slices.
   vtkTextureObject* GetTexture() const { return this->MapTexture; }
@@ -106,12 +119,17 @@ private:
   bool Allocate(const vtkTransmittanceFrame& frame, vtkObject* reporter);
   vtkShaderProgram* ReadyProgram(const vtkTransmittanceFrame& frame);
   bool Build(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+  bool Agree(
+    vtkTransmittanceMapReducer* reducer, bool& build, vtkIdType& count, vtkObject* reporter) const;
+  bool Reduce(
+    vtkTransmittanceMapReducer* reducer, bool built, vtkIdType count, vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> MapTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTransmittanceShaderQuad Quad;
   vtkNew<vtkTransmittanceSplatPass> Splats;
   std::vector<double> BuiltKey;
+  bool BuiltAdded = false; // the maps are the sum over the processes
   int Slices = 0;
   int Size = 0;
   int BuildCount = 0;

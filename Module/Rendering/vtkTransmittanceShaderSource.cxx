@@ -78,6 +78,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   os << "\n";
   // Guests: the other media the light crosses, and the loop over them.
   define("GUESTS", variant.Guests);
+  define("MAP_BEYOND_MEDIUM", variant.MapBeyondMedium ? 1 : 0);
+  define("OPACITY_COVERS_RADIANCE", variant.OpacityCoversRadiance ? 1 : 0);
   define("CAMERA_GUESTS", variant.Guests > 0 && variant.CameraGuests ? 1 : 0);
   define("GUEST_COLORS", variant.Guests > 0 && variant.CameraGuests && variant.GuestColors ? 1 : 0);
   os << "#define TYNDALL_FOR_GUESTS(X)";

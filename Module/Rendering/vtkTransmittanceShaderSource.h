@@ -102,6 +102,19 @@ public:
      * at most vtkTyndallSceneReader::MaximumNumberOfGuests; 0: none.
      */
     int Guests = 0;
+    /**
+     * The maps' box reaches beyond the medium's own (several processes'
+     * pieces, vtkTransmittanceMapReducer): the medium is empty outside its
+     * box, as guests are.
+     */
+    bool MapBeyondMedium = false;
+    /**
+     * The picture is composited by a compositor that blends 8-bit
+     * premultiplied colours without clamping (IceT, ParaView under MPI): a
+     * ray's opacity is raised to its radiance, so that no colour exceeds
+     * its alpha and the blend cannot wrap around.
+     */
+    bool OpacityCoversRadiance = false;
     /// The camera rays sample some guests too (vtkTransmittanceFrame::Guest::Camera).
     bool CameraGuests = false;
     /// Some camera guest is a coloured particle cloud (its albedo from its scattering grid).

@@ -1,5 +1,6 @@
 #include "vtkTransmittanceVolumeMapper.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCullerCollection.h"
 #include "vtkFrustumCoverageCuller.h"
@@ -21,6 +22,7 @@
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMapPass.h"
+#include "vtkTransmittanceMapReducer.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOcclusionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
@@ -119,6 +121,115 @@ public:
            "front (SetSortingStyleToBackToFront()).");
     }
     this->WarnedDrawOrder = warn;
+  }
+  // Several processes (vtkTransmittanceMapReducer): the reducer, the whole
+  // medium's world box agreed at the start of each frame, and whether the
+  // method change was said.
+  vtkSmartPointer<vtkTransmittanceMapReducer> Reducer;
+  bool HasWholeBounds = false;
+  double WholeBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  bool WarnedDistributedMethod = false;
+  vtkTransmittanceMapReducer* Distributed() const
+  {
+    return this->Reducer && this->Reducer->GetNumberOfProcesses() > 1 ? this->Reducer.Get()
+                                                                      : nullptr;
+  }
+  // Collective: the box around every process's pieces of every Tyndall
+  // volume of the renderer (the drawn one and the guests its light crosses;
+  // an empty piece adds nothing). False on a communication error.
+  bool AgreeWholeBounds(vtkRenderer* renderer, vtkVolume* volume)
+  {
+    vtkBoundingBox box;
+    auto add = [&box](vtkVolume* v)
+    {
+      const double* b = v ? v->GetBounds() : nullptr;
+      if (b && b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5])
+      {
+        box.AddBounds(b);
+      }
+    };
+    add(volume);
+    if (vtkVolumeCollection* volumes = renderer ? renderer->GetVolumes() : nullptr)
+    {
+      vtkCollectionSimpleIterator it;
+      volumes->InitTraversal(it);
+      while (vtkVolume* v = volumes->GetNextVolume(it))
+      {
+        if (v->GetVisibility() && vtkTransmittanceVolumeMapper::SafeDownCast(v->GetMapper()))
+        {
+          add(v);
+        }
+      }
+    }
+    double values[6];
+    for (int a = 0; a < 3; ++a)
+    {
+      values[a] = box.IsValid() ? -box.GetMinPoint()[a] : -VTK_DOUBLE_MAX;
+      values[3 + a] = box.IsValid() ? box.GetMaxPoint()[a] : -VTK_DOUBLE_MAX;
+    }
+    const bool agreed = this->Reducer->AllReduceMax(values, 6);
+    this->HasWholeBounds = agreed && values[3] >= -values[0];
+    for (int a = 0; a < 3; ++a)
+    {
+      this->WholeBounds[2 * a] = -values[a];
+      this->WholeBounds[2 * a + 1] = values[3 + a];
+    }
+    return agreed;
+  }
+  // A light that falls back to marching (a positional light inside the
+  // box) sees this process's piece alone: said once.
+  bool WarnedDistributedLight = false;
+  void WarnDistributedLights(vtkTransmittanceVolumeMapper* self)
+  {
+    for (const vtkTransmittanceFrame::Light& light : this->Frame.Lights)
+    {
+      if (light.Method == BRUTE_FORCE && !this->WarnedDistributedLight)
+      {
+        vtkWarningWithObjectMacro(
+          self, << "Several processes draw this picture, but a light inside the medium's box is "
+                   "marched (brute force): its shadows see this process's piece alone.");
+        this->WarnedDistributedLight = true;
+      }
+    }
+  }
+  // While PrepareDistributedMaps() builds: the frame carries the reducer.
+  bool Reducing = false;
+  bool WarnedUnreducedMaps = false;
+  // The maps of a frame drawn by several processes. Collective while
+  // reducing; in Render() (where ParaView's compositor may skip a process)
+  // the maps PrepareDistributedMaps() added, or this piece's alone, said once.
+  vtkTransmittanceMapPass* UpdateDistributedMaps(vtkTransmittanceVolumeMapper* self)
+  {
+    if (this->Reducing || !this->Frame.NeedsMaps() || this->Maps->IsBuiltFor(this->Frame))
+    {
+      return this->Maps->Render(this->Frame, self) ? this->Maps.GetPointer() : nullptr;
+    }
+    if (!this->WarnedUnreducedMaps)
+    {
+      vtkWarningWithObjectMacro(self,
+        << "Several processes draw this picture, but its maps were not added over them before "
+           "the render (PrepareDistributedMaps()): the light sees this process's piece alone.");
+      this->WarnedUnreducedMaps = true;
+    }
+    return this->Maps->Render(this->Frame, self) ? this->Maps.GetPointer() : nullptr;
+  }
+  // With several processes only ETM adds across them: the others are drawn
+  // as ETM, said once.
+  int DistributedMethod(vtkTransmittanceVolumeMapper* self, int method)
+  {
+    if (method == NONE || method == ETM)
+    {
+      return method;
+    }
+    if (!this->WarnedDistributedMethod)
+    {
+      vtkWarningWithObjectMacro(
+        self, << "Several processes draw this picture: " << self->GetTransmittanceMethodAsString()
+              << " is drawn as ETM, whose maps add across the processes (see "
+                 "vtkTransmittanceMapReducer).");
+      this->WarnedDistributedMethod = true;
+    }
+    return ETM;
   }
   vtkTransmittanceFrame Frame;
   vtkNew<vtkTransmittanceMediumTextures> Textures;
@@ -446,6 +557,10 @@ vtkTransmittanceMapPass* vtkTransmittanceVolumeMapper::vtkInternals::UpdateMaps(
   vtkTransmittanceVolumeMapper* self)
 {
   this->UsedMaps = this->Maps.GetPointer();
+  if (this->Distributed())
+  {
+    return this->UpdateDistributedMaps(self);
+  }
   if (!this->Frame.NeedsMaps())
   {
     return this->Maps;
@@ -488,6 +603,14 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVo
   settings.Jitter = self->Jitter;
   settings.SkipEmptySpace = self->EmptySpaceSkipping;
   settings.CacheSize = self->TransmittanceCache ? self->TransmittanceCacheSize : 0;
+  if (vtkTransmittanceMapReducer* reducer = this->Distributed())
+  {
+    settings.Reducer = this->Reducing ? reducer : nullptr;
+    settings.Method = this->DistributedMethod(self, settings.Method);
+    settings.HasMapBounds = this->HasWholeBounds;
+    settings.OpacityCoversRadiance = true; // IceT blends 8-bit colours unclamped
+    std::copy(this->WholeBounds, this->WholeBounds + 6, settings.MapBounds);
+  }
   this->Frame.Prepare(
     renderer, window, this->Scene, *this->Textures, this->GuestTextures, settings);
   return true;
@@ -569,6 +692,65 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   {
     in.StillKey = in.StillFrameKey(this, renderer, volume, inputs);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::SetMapReducer(vtkTransmittanceMapReducer* reducer)
+{
+  if (this->Internals->Reducer != reducer)
+  {
+    this->Internals->Reducer = reducer;
+    this->Internals->WarnedDistributedMethod = false;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceMapReducer* vtkTransmittanceVolumeMapper::GetMapReducer()
+{
+  return this->Internals->Reducer;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::PrepareDistributedMaps(vtkRenderer* renderer, vtkVolume* volume)
+{
+  vtkInternals& in = *this->Internals;
+  vtkTransmittanceMapReducer* reducer = in.Distributed();
+  if (!reducer)
+  {
+    return true;
+  }
+  auto* window =
+    renderer ? vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()) : nullptr;
+  if (window)
+  {
+    window->Initialize(); // before the first render: makes the context
+    window->MakeCurrent();
+    renderer->UpdateLightsGeometryToFollowCamera();
+  }
+  if (!in.AgreeWholeBounds(renderer, volume)) // collective
+  {
+    vtkErrorMacro(<< "The processes could not agree on the medium's box.");
+  }
+  in.Reducing = true;
+  bool built = false;
+  if (window && window->IsCurrent() && volume && in.PrepareFrame(this, renderer, volume, window))
+  {
+    vtkTransmittanceScopedTextures medium = in.BindMedium();
+    built = in.UpdateMaps(this) != nullptr;
+    in.WarnDistributedLights(this);
+  }
+  else
+  {
+    if (!window || !volume)
+    {
+      vtkErrorMacro(<< "PrepareDistributedMaps() needs a renderer with an OpenGL render window "
+                       "and a volume.");
+    }
+    in.Maps->SkipReduction(reducer, this); // the others still reduce
+  }
+  in.Reducing = false;
+  return built;
 }
 
 //------------------------------------------------------------------------------
@@ -678,6 +860,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AdaptiveThreshold: " << this->AdaptiveThreshold << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "LightSampleCount: " << this->LightSampleCount << "\n";
+  os << indent << "MapReducer: " << this->Internals->Reducer.Get() << "\n";
   os << indent << "Jitter: " << (this->Jitter ? "On" : "Off") << "\n";
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "InteractiveAdjustment: " << (this->InteractiveAdjustment ? "On" : "Off") << "\n";

@@ -100,6 +100,7 @@ class vtkImageData;
 class vtkTextureObject;
 class vtkTransmittanceFrame;
 class vtkTransmittanceLightFrustum;
+class vtkTransmittanceMapReducer;
 class vtkTyndallParticleMedium;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceVolumeMapper : public vtkVolumeMapper
@@ -370,9 +371,41 @@ public:
 
   /**
    * Wall-clock seconds of the last map build (with glFinish, so it measures
-   * the GPU work).
+   * the GPU work); with several processes it includes the addition of the
+   * maps over them (vtkTransmittanceMapReducer::GetLastReductionTime()).
    */
   double GetLastMapBuildTime();
+
+  ///@{
+  /**
+   * Several processes drawing one picture, each with a piece of the medium
+   * (ParaView under MPI; Tyndall's ParaView plugin sets one): with a
+   * reducer of more than one process the maps are fitted to the whole
+   * medium's box and are the sum of every process's, so the light crosses
+   * every piece (vtkTransmittanceMapReducer says how, and which methods add:
+   * others are drawn as ETM). The rays' alpha is then raised to their
+   * colour, since the compositor's (IceT's) 8-bit blend does not clamp.
+   * Default none: one process.
+   */
+  void SetMapReducer(vtkTransmittanceMapReducer* reducer);
+  vtkTransmittanceMapReducer* GetMapReducer();
+  ///@}
+
+  /**
+   * With a reducer of more than one process: builds this frame's maps from
+   * this process's piece, fitted to the box of every piece, and adds them
+   * over the processes. Collective: every process calls it once per frame
+   * before the render window renders, at a point where the processes are in
+   * step (Tyndall's ParaView representation calls it in its REQUEST_RENDER
+   * pass). Not from Render(): ParaView's compositor (IceT) does not draw a
+   * process whose piece is off-screen, so collectives there would hang.
+   * Render() then shades with the added maps; if they no longer fit the
+   * frame (the lights or the medium changed in between) it builds this
+   * piece's maps alone and warns once. A process without a piece takes part
+   * with zeros. Returns false on error or with nothing to build here; true
+   * without a reducer (nothing to do).
+   */
+  bool PrepareDistributedMaps(vtkRenderer* renderer, vtkVolume* volume);
 
   /**
    * The most lights used; further lights are ignored with a warning.

@@ -33,7 +33,8 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperGeometry.cxx
   TestTransmittanceMapperManyLights.cxx
   TestTransmittanceMapperMaps.cxx
-  TestTransmittanceMapperSceneRules.cxx)
+  TestTransmittanceMapperSceneRules.cxx
+  TestTransmittanceMapReducer.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperEmissionAbsorption.cxx
   TestTransmittanceMapperScenes.cxx

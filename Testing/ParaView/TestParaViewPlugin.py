@@ -128,16 +128,8 @@ check(display.Representation == "Tyndall Volume"
 
 # 4. The cosine-noise source as a Tyndall volume: a cloud on black.
 simple.ResetSession()
-noise = simple.CosineNoiseCloud(WholeExtent=[0, 47, 0, 47, 0, 47], Spacing=[2.0 / 47] * 3)
-noise.NumberOfOctaves = 4
 view = make_view()
-cloud = simple.Show(noise, view)
-cloud.SetRepresentationType("Tyndall Volume")
-simple.ColorBy(cloud, ("POINTS", "density"))
-lut, pwf = setup.transfer_functions("density")
-pwf.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 0.5, 0.5, 0.0, 3.0, 0.9, 0.5, 0.0]
-cloud.TyndallDensityScale = 4.0
-setup.place_camera(view, (0.0, 0.0, 5.0), (0.0, 0.0, 0.0))
+setup.show_noise_cloud(view, 48, 5.0)
 pixels, _ = screenshot(view, "plugin-noise.png")
 lit = sum(1 for v in pixels[0::3] if v > 20) / float(len(pixels) // 3)
 check(0.05 < lit < 0.9, "the noise cloud covers %.0f%% of the picture" % (100 * lit))

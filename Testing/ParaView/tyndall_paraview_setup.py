@@ -50,9 +50,10 @@ def transfer_functions(array):
     return lut, pwf
 
 
-def show_smoke(source, view):
+def show_smoke(source, view, method=None):
     """`source` (smoke.vdb) shown as a Tyndall Volume with the scene's
-    transfer functions and medium settings, under the scene's camera."""
+    transfer functions and medium settings, under the scene's camera; with
+    `method`, that transmittance method from the first render on."""
     display = simple.Show(source, view)
     display.SetRepresentationType("Tyndall Volume")
     simple.ColorBy(display, ("POINTS", "density"))
@@ -61,7 +62,28 @@ def show_smoke(source, view):
     display.InterpolationType = "Linear"
     display.TyndallAmbient = scene.AMBIENT
     display.TyndallAnisotropy = scene.ANISOTROPY
+    if method is not None:
+        display.TyndallTransmittanceMethod = method
     place_camera(view)
+    return display
+
+
+def show_noise_cloud(view, size, distance, method=None):
+    """The plugin's Cosine Noise Cloud source (size^3 points over [-1, 1]^3,
+    four octaves) shown as a Tyndall Volume, seen from `distance` along +z;
+    with `method`, that transmittance method from the first render on."""
+    noise = simple.CosineNoiseCloud(WholeExtent=[0, size - 1] * 3,
+                                    Spacing=[2.0 / (size - 1)] * 3)
+    noise.NumberOfOctaves = 4
+    display = simple.Show(noise, view)
+    display.SetRepresentationType("Tyndall Volume")
+    simple.ColorBy(display, ("POINTS", "density"))
+    _, pwf = transfer_functions("density")
+    pwf.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 0.5, 0.5, 0.0, 3.0, 0.9, 0.5, 0.0]
+    display.TyndallDensityScale = 4.0
+    if method is not None:
+        display.TyndallTransmittanceMethod = method
+    place_camera(view, (0.0, 0.0, distance), (0.0, 0.0, 0.0))
     return display
 
 

@@ -34,6 +34,7 @@ packages=(
   libgdcm-tools dcmtk                 # a DICOM test series made by Debian's tools
   paraview-dev                        # the ParaView 5.11 plugin (Module/ParaView); its
                                       # pvbatch comes with it (package paraview)
+  openmpi-bin                         # mpirun, for the plugin's distributed-rendering test
 )
 
 install_packages() {

@@ -1,9 +1,14 @@
 #include "vtkTyndallVolumeRepresentation.h"
 
+#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
+#include "vtkPVProcessWindow.h"
+#include "vtkPVRenderView.h"
 #include "vtkParticipatingMediumProperty.h"
+#include "vtkTransmittanceMapReducer.h"
 #include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallMPIMapReducer.h"
 #include "vtkVolumeProperty.h"
 
 vtkStandardNewMacro(vtkTyndallVolumeRepresentation);
@@ -13,6 +18,31 @@ vtkTyndallVolumeRepresentation::vtkTyndallVolumeRepresentation()
 {
   this->VolumeMapper = this->TyndallMapper.Get();
   this->Actor->SetProperty(this->Medium);
+  // Under MPI every rank draws its piece: the light crosses the ranks
+  // through maps added over them.
+  vtkNew<vtkTyndallMPIMapReducer> reducer;
+  if (reducer->GetNumberOfProcesses() > 1)
+  {
+    this->TyndallMapper->SetMapReducer(reducer);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallVolumeRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  if (result && request == vtkPVView::REQUEST_RENDER() && this->TyndallMapper->GetMapReducer())
+  {
+    // Every rank renders the view, but IceT draws only the ranks whose piece
+    // is on screen: the maps are added here, before the window renders.
+    vtkPVRenderView* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+    // The view's window borrows the process window's context, which exists
+    // from the first render on: make it now.
+    vtkPVProcessWindow::PrepareForRendering();
+    this->TyndallMapper->PrepareDistributedMaps(view ? view->GetRenderer() : nullptr, this->Actor);
+  }
+  return result;
 }
 
 //------------------------------------------------------------------------------
@@ -115,4 +145,18 @@ void vtkTyndallVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->TyndallMapper->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Medium:\n";
   this->Medium->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallVolumeRepresentation::GetLastMapReductionTime()
+{
+  vtkTransmittanceMapReducer* reducer = this->TyndallMapper->GetMapReducer();
+  return reducer ? reducer->GetLastReductionTime() : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallVolumeRepresentation::GetLastMapReductionSize()
+{
+  vtkTransmittanceMapReducer* reducer = this->TyndallMapper->GetMapReducer();
+  return reducer ? static_cast<double>(reducer->GetLastReductionSize()) : 0.0;
 }

@@ -79,6 +79,26 @@ public:
   void SetScatteringOctaves(int octaves);
   ///@}
 
+  ///@{
+  /**
+   * Under MPI (more than one process in VTK's global controller) the mapper
+   * gets a vtkTyndallMPIMapReducer and the maps are added over the
+   * processes in ProcessViewRequest(REQUEST_RENDER), where ParaView's ranks
+   * are in step. The last reduction's seconds (read back, add, upload) and
+   * its size in floats on this process; 0 in one process or before the first.
+   */
+  double GetLastMapReductionTime();
+  double GetLastMapReductionSize();
+  ///@}
+
+  /**
+   * ParaView's requests; REQUEST_RENDER under MPI also builds the maps and
+   * adds them over the processes (collective, see
+   * vtkTransmittanceVolumeMapper::PrepareDistributedMaps()).
+   */
+  int ProcessViewRequest(
+    vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
+
   /**
    * The mapper and the medium property, for C++ code that reads these
    * settings or needs others the XML does not list (the plugin wraps this class for ParaView's

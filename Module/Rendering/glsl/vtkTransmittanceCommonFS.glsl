@@ -214,7 +214,7 @@ float tyndallGuestExtinction(sampler3D volume, sampler2D table, int g, vec3 x)
 // brute-force light march integrate it.
 float tyndallSceneExtinction(vec3 x)
 {
-#if TYNDALL_GUESTS > 0
+#if TYNDALL_GUESTS > 0 || TYNDALL_MAP_BEYOND_MEDIUM
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   bool inside = all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(1.0)));
   return (inside ? tyndallExtinction(x) : 0.0)TYNDALL_FOR_GUESTS(TYNDALL_GUEST_EXTINCTION);

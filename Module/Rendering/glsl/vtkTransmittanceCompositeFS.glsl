@@ -3,11 +3,19 @@
 // alpha = 1 - view transmittance) over the renderer's viewport, upscaled
 // with linear filtering when it was rendered at a reduced size
 // (vtkTransmittanceAccumulationPass). Blended ONE, ONE_MINUS_SRC_ALPHA.
+// With opacityCoversRadiance 1 (the picture goes to an 8-bit compositor that
+// blends without clamping, IceT under MPI) the alpha is raised to the colour.
 in vec2 texCoord;
 uniform sampler2D accumulated;
+uniform int opacityCoversRadiance;
 //VTK::Output::Dec
 
 void main()
 {
-  gl_FragData[0] = texture(accumulated, texCoord);
+  vec4 value = texture(accumulated, texCoord);
+  if (opacityCoversRadiance == 1)
+  {
+    value.a = max(value.a, min(max(value.r, max(value.g, value.b)), 1.0));
+  }
+  gl_FragData[0] = value;
 }

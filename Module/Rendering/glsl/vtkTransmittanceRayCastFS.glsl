@@ -60,14 +60,28 @@ vec3 tyndallAttenuatedLength(vec3 sigma, float dt)
 // The pass's output: the rays' premultiplied radiance and 1 - their view
 // transmittance (per channel in a second image with a coloured extinction;
 // the first image's alpha is then 1 - the channels' mean).
+// With TYNDALL_OPACITY_COVERS_RADIANCE the opacity of a ray drawn straight
+// into the picture is at least its radiance (clamped to 1): an 8-bit
+// compositor's unclamped "over" cannot wrap around. Accumulated images keep
+// theirs (the next pass reads the view transmittance back; the composite
+// raises it, vtkTransmittanceCompositeFS.glsl).
+float tyndallOutputOpacity(vec3 radiance, float opacity)
+{
+#if TYNDALL_OPACITY_COVERS_RADIANCE && !TYNDALL_ACCUMULATE
+  return max(opacity, min(max(radiance.r, max(radiance.g, radiance.b)), 1.0));
+#else
+  return opacity;
+#endif
+}
+
 void tyndallWrite(vec3 radiance, TyndallTransmittance Tv)
 {
 #if TYNDALL_CHROMATIC
-  float opacity = 1.0 - (Tv.r + Tv.g + Tv.b) / 3.0;
+  float opacity = tyndallOutputOpacity(radiance, 1.0 - (Tv.r + Tv.g + Tv.b) / 3.0);
   gl_FragData[0] = vec4(radiance, opacity);
   gl_FragData[1] = vec4(1.0 - Tv, opacity);
 #else
-  gl_FragData[0] = vec4(radiance, 1.0 - Tv);
+  gl_FragData[0] = vec4(radiance, tyndallOutputOpacity(radiance, 1.0 - Tv));
 #endif
 }
 
