@@ -208,6 +208,23 @@ bool vtkTransmittanceMapPass::SkipReduction(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMapPass::ReadBack(std::vector<float>& values) const
+{
+  if (!this->MapTexture ||
+    values.size() != static_cast<size_t>(4) * this->Size * this->Size * this->Slices)
+  {
+    return false;
+  }
+  vtkOpenGLClearErrorMacro();
+  {
+    // RGBA floats: rows are 4-byte aligned whatever GL's pack alignment.
+    vtkTransmittanceScopedTextures bound({ this->MapTexture });
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, values.data());
+  }
+  return glGetError() == GL_NO_ERROR;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceMapPass::Reduce(
   vtkTransmittanceMapReducer* reducer, bool built, vtkIdType count, vtkObject* reporter)
 {
@@ -217,18 +234,11 @@ bool vtkTransmittanceMapPass::Reduce(
     built ? 4 * static_cast<vtkIdType>(this->Size) * this->Size * this->Slices : 0;
   bool readable = built && mine == count;
   std::vector<float> values(static_cast<size_t>(count), 0.0f);
-  vtkOpenGLClearErrorMacro();
-  if (readable)
+  if (readable && !this->ReadBack(values))
   {
-    // RGBA floats: rows are 4-byte aligned whatever GL's pack alignment.
-    vtkTransmittanceScopedTextures bound({ this->MapTexture });
-    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, values.data());
-    if (glGetError() != GL_NO_ERROR)
-    {
-      vtkErrorWithObjectMacro(reporter, << "The maps could not be read back: zeros are added.");
-      std::fill(values.begin(), values.end(), 0.0f);
-      readable = false;
-    }
+    vtkErrorWithObjectMacro(reporter, << "The maps could not be read back: zeros are added.");
+    std::fill(values.begin(), values.end(), 0.0f);
+    readable = false;
   }
   const bool summed = reducer->AllReduceSum(values.data(), count);
   if (readable && summed)
@@ -379,13 +389,7 @@ bool vtkTransmittanceMapPass::GetMap(
   }
   const size_t texels = static_cast<size_t>(this->Size) * this->Size;
   std::vector<float> all(4 * texels * this->Slices);
-  vtkOpenGLClearErrorMacro();
-  {
-    vtkTransmittanceScopedTextures bound({ this->MapTexture });
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, all.data());
-  }
-  if (glGetError() != GL_NO_ERROR)
+  if (!this->ReadBack(all))
   {
     return false;
   }

@@ -123,6 +123,9 @@ private:
     vtkTransmittanceMapReducer* reducer, bool& build, vtkIdType& count, vtkObject* reporter) const;
   bool Reduce(
     vtkTransmittanceMapReducer* reducer, bool built, vtkIdType count, vtkObject* reporter);
+  // The whole map texture (4 x Size^2 x Slices floats, `values` sized so);
+  // false on a GL error.
+  bool ReadBack(std::vector<float>& values) const;
 
   vtkSmartPointer<vtkTextureObject> MapTexture;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
