@@ -34,12 +34,6 @@ void AddScaled(double acc[4], const double p[4], double f)
   }
 }
 
-// The integral of P(s) over [0, s].
-double PolynomialIntegral(const double c[4], double s)
-{
-  return s * (c[0] + s * (c[1] / 2.0 + s * (c[2] / 3.0 + s * c[3] / 4.0)));
-}
-
 double Evaluate(const double c[4], double s)
 {
   return c[0] + s * (c[1] + s * (c[2] + s * c[3]));
@@ -316,6 +310,13 @@ void vtkTyndallDetailMedium::WalkCells(
       Segment s;
       s.Ta = t;
       s.Tb = tNext;
+      for (int a = 0; a < 3; ++a)
+      {
+        const int plane = d[a] > 0.0 ? region[a] + 1 : region[a];
+        const bool crossed = tNext < t1 && d[a] != 0.0 && plane >= 0 &&
+          plane <= this->Dimensions[a] - 1 && (plane - o[a]) / d[a] <= tNext;
+        s.Plane[a] = crossed ? plane : NoPlane;
+      }
       const double pa[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
       this->CellPolynomial(region, pa, d, s.C);
       if (!visit(s, pa))
@@ -341,21 +342,6 @@ void vtkTyndallDetailMedium::WalkCells(
 }
 
 //------------------------------------------------------------------------------
-double vtkTyndallDetailMedium::SegmentIntegral(
-  const double pa[3], const double d[3], const double c[4], double length) const
-{
-  // The integral of P(s) phi(pa + s d), s in [0, length], unclamped, unscaled.
-  double sum = this->Offset * PolynomialIntegral(c, length);
-  for (const Wave& w : this->Waves)
-  {
-    const double alpha = w.K[0] * pa[0] + w.K[1] * pa[1] + w.K[2] * pa[2] + w.Phase;
-    const double beta = w.K[0] * d[0] + w.K[1] * d[1] + w.K[2] * d[2];
-    sum += w.Amplitude * vtkCosineNoise::PolynomialWaveIntegral(c, length, alpha, beta);
-  }
-  return sum;
-}
-
-//------------------------------------------------------------------------------
 // The waves' phases along one ray, carried from cell to cell: the phase at
 // a cell's end is its start's plus theta, so e^{i alpha} is advanced by a
 // complex product with e^{i theta} (needed anyway) instead of a new sincos.
@@ -367,7 +353,12 @@ public:
     , Beta(medium.Waves.size())
     , Cos(medium.Waves.size())
     , Sin(medium.Waves.size())
+    , CosStep(medium.Waves.size())
+    , SinStep(medium.Waves.size())
+    , StartCos(medium.Waves.size())
+    , StartSin(medium.Waves.size())
   {
+    std::copy(d, d + 3, this->D);
     for (size_t i = 0; i < this->Beta.size(); ++i)
     {
       const double* k = medium.Waves[i].K;
@@ -375,19 +366,31 @@ public:
     }
   }
 
-  // The integral of P(s) phi over the cell [0, length] starting at pa (not
+  // The integral of P(s) phi over the cell `seg` starting at pa (not
   // clamped, not scaled); the phases move on to the cell's end.
-  double Integrate(const double pa[3], const double c[4], double length)
+  //
+  // The phase at the end is the start's times e^{i theta}, theta = beta x
+  // length: a sincos per wave. But the cells of a grid end on sample
+  // planes, and an axis's planes are crossed at times 1 / |d_a| apart, so
+  // the phases at its consecutive crossings form a geometric sequence: from
+  // an axis's second crossing on, the end phase is the phase at its last
+  // crossing times e^{i beta / |d_a|} (computed once per ray), and
+  // e^{i theta} is the end's over the start's. No trigonometry then.
+  double Integrate(const Segment& seg, const double pa[3])
   {
+    const double* c = seg.C;
+    const double length = seg.Tb - seg.Ta;
     if (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0 && c[3] == 0.0)
     {
       this->Valid = false; // an empty cell: no wave is evaluated
+      std::fill(this->AxisPlane, this->AxisPlane + 3, NoPlane);
       return 0.0;
     }
     const std::vector<Wave>& waves = this->Medium.Waves;
+    const size_t count = waves.size();
     if (!this->Valid)
     {
-      for (size_t i = 0; i < waves.size(); ++i)
+      for (size_t i = 0; i < count; ++i)
       {
         const Wave& w = waves[i];
         const double alpha = w.K[0] * pa[0] + w.K[1] * pa[1] + w.K[2] * pa[2] + w.Phase;
@@ -396,29 +399,173 @@ public:
       }
       this->Valid = true;
     }
+    const int axis = this->SequenceAxis(seg);
+    const double* stepCos = axis >= 0 ? this->AxisStepCos[axis].data() : nullptr;
+    const double* stepSin = axis >= 0 ? this->AxisStepSin[axis].data() : nullptr;
+    const double* lastCos = axis >= 0 ? this->AxisCos[axis].data() : nullptr;
+    const double* lastSin = axis >= 0 ? this->AxisSin[axis].data() : nullptr;
     const double e[4] = { c[0], c[1] * length, c[2] * length * length,
       c[3] * length * length * length };
     double sum = this->Medium.Offset * (e[0] + e[1] / 2.0 + e[2] / 3.0 + e[3] / 4.0);
-    for (size_t i = 0; i < waves.size(); ++i)
+    for (size_t i = 0; i < count; ++i)
     {
       const double theta = this->Beta[i] * length;
-      const double cosT = std::cos(theta);
-      const double sinT = std::sin(theta);
+      const double ca = this->Cos[i], sa = this->Sin[i];
+      double endCos, endSin, cosT, sinT;
+      if (axis >= 0)
+      {
+        endCos = lastCos[i] * stepCos[i] - lastSin[i] * stepSin[i];
+        endSin = lastSin[i] * stepCos[i] + lastCos[i] * stepSin[i];
+        cosT = endCos * ca + endSin * sa; // end x conj(start)
+        sinT = endSin * ca - endCos * sa;
+      }
+      else
+      {
+        cosT = std::cos(theta);
+        sinT = std::sin(theta);
+        endCos = ca * cosT - sa * sinT;
+        endSin = sa * cosT + ca * sinT;
+      }
       double re, im;
       vtkCosineNoise::PolynomialWaveMoments(e, theta, cosT, sinT, re, im);
-      const double ca = this->Cos[i], sa = this->Sin[i];
       sum += waves[i].Amplitude * (ca * re - sa * im);
-      this->Cos[i] = ca * cosT - sa * sinT;
-      this->Sin[i] = sa * cosT + ca * sinT;
+      this->Cos[i] = endCos;
+      this->Sin[i] = endSin;
+      this->CosStep[i] = cosT;
+      this->SinStep[i] = sinT;
     }
+    this->RecordCrossings(seg);
     return length * sum;
   }
 
+  // After Integrate() over a cell whose integral `whole` reaches `goal`
+  // (0 < goal <= whole): the s in [0, length] at which the integral from
+  // the cell's start reaches goal. Safeguarded Halley iteration (I' = P phi,
+  // I'' = P' phi + P phi'), from the guess of a homogeneous cell; the
+  // phases at s are the cell's start's times e^{i beta s}, one sincos per
+  // wave and step gives I, phi and phi' together.
+  double Solve(const double c[4], double length, double goal, double whole)
+  {
+    const std::vector<Wave>& waves = this->Medium.Waves;
+    const size_t count = waves.size();
+    for (size_t i = 0; i < count; ++i)
+    {
+      // Back from the cell's end to its start: times e^{-i theta}.
+      const double ce = this->Cos[i], se = this->Sin[i];
+      this->StartCos[i] = ce * this->CosStep[i] + se * this->SinStep[i];
+      this->StartSin[i] = se * this->CosStep[i] - ce * this->SinStep[i];
+    }
+    const double offset = this->Medium.Offset;
+    double lo = 0.0, hi = length;
+    double s = whole > 0.0 ? length * std::min(1.0, goal / whole) : 0.5 * length;
+    for (int iteration = 0; iteration < 100; ++iteration)
+    {
+      const double e[4] = { c[0], c[1] * s, c[2] * s * s, c[3] * s * s * s };
+      double integral = offset * (e[0] + e[1] / 2.0 + e[2] / 3.0 + e[3] / 4.0);
+      double phi = offset, slope = 0.0;
+      for (size_t i = 0; i < count; ++i)
+      {
+        const double theta = this->Beta[i] * s;
+        const double cosT = std::cos(theta);
+        const double sinT = std::sin(theta);
+        double re, im;
+        vtkCosineNoise::PolynomialWaveMoments(e, theta, cosT, sinT, re, im);
+        const double ca = this->StartCos[i], sa = this->StartSin[i];
+        const double a = waves[i].Amplitude;
+        integral += a * (ca * re - sa * im);
+        phi += a * (ca * cosT - sa * sinT);
+        slope -= a * this->Beta[i] * (sa * cosT + ca * sinT);
+      }
+      const double value = s * integral - goal;
+      if (std::abs(value) <= 1e-13 * goal)
+      {
+        break;
+      }
+      (value < 0.0 ? lo : hi) = s;
+      if (hi - lo <= 1e-14 * length)
+      {
+        break;
+      }
+      const double p = Evaluate(c, s);
+      const double first = p * phi;
+      const double second = (c[1] + s * (2.0 * c[2] + 3.0 * s * c[3])) * phi + p * slope;
+      const double denominator = 2.0 * first * first - value * second;
+      const bool halley = first > 0.0 && denominator > 0.0;
+      double next =
+        halley ? s - 2.0 * value * first / denominator : (first > 0.0 ? s - value / first : -1.0);
+      if (!(next > lo && next < hi))
+      {
+        next = 0.5 * (lo + hi);
+      }
+      else if (halley && std::abs(next - s) <= 1e-8 * length)
+      {
+        // Halley converges cubically: after a step this small the error is
+        // of the order of its cube, below the tolerance; no check needed.
+        return next;
+      }
+      s = next;
+    }
+    return s;
+  }
+
 private:
+  // The axis whose sequence gives this cell's end phase: one whose plane
+  // is crossed at the end, right after the plane of its last recorded
+  // crossing; -1 if none. Computes that axis's step once per ray.
+  int SequenceAxis(const Segment& seg)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (seg.Plane[a] == NoPlane || this->AxisPlane[a] == NoPlane ||
+        seg.Plane[a] != this->AxisPlane[a] + (this->D[a] > 0.0 ? 1 : -1))
+      {
+        continue;
+      }
+      if (this->AxisStepCos[a].empty())
+      {
+        const size_t count = this->Beta.size();
+        this->AxisStepCos[a].resize(count);
+        this->AxisStepSin[a].resize(count);
+        for (size_t i = 0; i < count; ++i)
+        {
+          const double angle = this->Beta[i] / std::abs(this->D[a]);
+          this->AxisStepCos[a][i] = std::cos(angle);
+          this->AxisStepSin[a][i] = std::sin(angle);
+        }
+      }
+      return a;
+    }
+    return -1;
+  }
+
+  // The phases at the cell's end are those at each plane crossed there.
+  void RecordCrossings(const Segment& seg)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      this->AxisPlane[a] = seg.Plane[a];
+      if (seg.Plane[a] != NoPlane)
+      {
+        this->AxisCos[a] = this->Cos;
+        this->AxisSin[a] = this->Sin;
+      }
+    }
+  }
+
   const vtkTyndallDetailMedium& Medium;
+  double D[3];
+  int AxisPlane[3] = { NoPlane, NoPlane, NoPlane };
+  std::vector<double> AxisCos[3]; // the phases at each axis's last crossing
+  std::vector<double> AxisSin[3];
+  std::vector<double> AxisStepCos[3]; // e^{i beta / |d_a|}, once needed
+  std::vector<double> AxisStepSin[3];
   std::vector<double> Beta;
   std::vector<double> Cos;
   std::vector<double> Sin;
+  std::vector<double> CosStep; // e^{i theta} of the last cell
+  std::vector<double> SinStep;
+  std::vector<double> StartCos; // the phases at the solved cell's start
+  std::vector<double> StartSin;
   bool Valid = false;
 };
 
@@ -431,7 +578,7 @@ double vtkTyndallDetailMedium::OpticalDepth(
   this->WalkCells(o, d, t0, t1,
     [&](const Segment& s, const double pa[3])
     {
-      tau += std::max(0.0, phases.Integrate(pa, s.C, s.Tb - s.Ta));
+      tau += std::max(0.0, phases.Integrate(s, pa));
       return true;
     });
   return this->Scale * tau;
@@ -459,50 +606,17 @@ bool vtkTyndallDetailMedium::SampleDistance(
     [&](const Segment& s, const double pa[3])
     {
       const double length = s.Tb - s.Ta;
-      const double cell = std::max(0.0, phases.Integrate(pa, s.C, length));
+      const double cell = std::max(0.0, phases.Integrate(s, pa));
       if (accumulated + cell < goal)
       {
         accumulated += cell;
         return true;
       }
-      t = s.Ta + this->SolveInCell(pa, d, s.C, length, goal - accumulated, cell);
+      t = s.Ta + phases.Solve(s.C, length, goal - accumulated, cell);
       found = true;
       return false;
     });
   return found;
-}
-
-//------------------------------------------------------------------------------
-double vtkTyndallDetailMedium::SolveInCell(const double pa[3], const double d[3], const double c[4],
-  double length, double goal, double whole) const
-{
-  // I(s) = SegmentIntegral over [0, s]; find I(s) = goal with I(0) = 0 <=
-  // goal <= I(length) = whole: safeguarded Newton (I' = P phi, the
-  // extinction), from the guess of a homogeneous cell.
-  double lo = 0.0, hi = length;
-  double s = whole > 0.0 ? length * std::min(1.0, goal / whole) : 0.5 * length;
-  for (int iteration = 0; iteration < 100; ++iteration)
-  {
-    const double value = this->SegmentIntegral(pa, d, c, s) - goal;
-    if (std::abs(value) <= 1e-13 * goal)
-    {
-      break;
-    }
-    (value < 0.0 ? lo : hi) = s;
-    if (hi - lo <= 1e-14 * length)
-    {
-      break;
-    }
-    const double p[3] = { pa[0] + s * d[0], pa[1] + s * d[1], pa[2] + s * d[2] };
-    const double slope = Evaluate(c, s) * this->Noise(p);
-    double next = slope > 0.0 ? s - value / slope : -1.0;
-    if (!(next > lo && next < hi))
-    {
-      next = 0.5 * (lo + hi);
-    }
-    s = next;
-  }
-  return s;
 }
 
 //------------------------------------------------------------------------------

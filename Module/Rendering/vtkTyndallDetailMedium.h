@@ -32,7 +32,10 @@
  * cubic polynomial P(t), and the integral of P times each wave
  * a cos(alpha + beta t) is elemental (vtkTransmittanceMapMath has the
  * stable form). The ray is walked cell by cell (a 3-D DDA) and the cells'
- * integrals are summed. What is clamped: each cell's integral of
+ * integrals are summed. The waves' phases are carried along the ray by
+ * complex products: from cell to cell, and from one crossing of an axis's
+ * sample planes to the next (a geometric sequence), so a cell needs
+ * trigonometry only where the ray enters the medium. What is clamped: each cell's integral of
  * shape x phi is clamped at 0 before the sum, while a camera sample sees
  * max(0, phi). The two agree exactly when the noise is non-negative
  * everywhere (vtkCosineNoise::GetMinimumValue() >= 0); otherwise a cell
@@ -41,7 +44,8 @@
  *
  * SampleDistance() inverts the closed form (the paper's Algorithm 2): it
  * walks the cells until the cumulative depth passes the target, then solves
- * within that cell by safeguarded Newton iteration.
+ * within that cell by safeguarded Halley iteration (one sincos per wave
+ * and step gives the integral, the noise and its derivative).
  *
  * Coordinates: p is in field index coordinates (vtkTyndallGridMedium), and
  * t is a world distance when d is the field index image of a unit world
@@ -169,7 +173,11 @@ private:
     double Ta;
     double Tb;
     double C[4];
+    // Per axis, the index of the sample plane the ray crosses at Tb, or
+    // NoPlane (the cell ends on another axis's plane or at the ray's end).
+    int Plane[3];
   };
+  static constexpr int NoPlane = -1000000;
   // Calls visit(segment, p(Ta)) for each cell the clipped ray crosses, in
   // order, while it returns true.
   template <typename F>
@@ -177,11 +185,6 @@ private:
   // The shape polynomial of the cell `region` from pa along d.
   void CellPolynomial(
     const int region[3], const double pa[3], const double d[3], double c[4]) const;
-  // The integral of P(s) phi(pa + s d) for s in [0, length] (not clamped, not scaled).
-  double SegmentIntegral(
-    const double pa[3], const double d[3], const double c[4], double length) const;
-  double SolveInCell(const double pa[3], const double d[3], const double c[4], double length,
-    double goal, double whole) const;
   void BuildShape(const vtkTyndallGridMedium& grid);
   class RayWaves;
   double ShapeAt(int i, int j, int k) const;
