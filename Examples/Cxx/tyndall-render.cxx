@@ -69,8 +69,10 @@ std::string Description()
     "renders through GLX): run under xvfb-run -a -s \"-screen 0 1280x1024x24\" on\n"
     "machines without one. See Documentation/cli.md.\n"
     "\n"
-    "Without INPUT: the built-in default scene, a procedural cosine-noise cloud lit\n"
-    "by a low sun (single scattering, adaptive ETM shadows) under a sky gradient.\n"
+    "Without INPUT: the built-in default scene, a procedural cloud (a 128^3\n"
+    "cosine-noise shape times cosine-noise detail evaluated in the shader, never\n"
+    "voxelised; --no-detail: the shape alone) lit by a low sun (single scattering,\n"
+    "adaptive ETM shadows) under a sky gradient.\n"
     "With INPUT, a volume file or a DICOM directory:\n";
   text += vtkVolumeFileReader::GetFormatsDescription();
   text += "Data inputs get a camera fitted to the data, a white directional key light\n"

@@ -202,7 +202,11 @@ const Spec kOptions[] = {
   { "detail", "", Kind::Flag, 0, 0, false, "", "", "", "Procedural detail", Both,
     "multiply the medium's extinction by cosine noise evaluated in the shader, never voxelised "
     "(the volume becomes the coarse shape); light transmittance through it is exact with "
-    "--method brute-force (closed form per sample), approximate with the maps" },
+    "--method brute-force (closed form per sample), approximate with the maps. On by default "
+    "in the built-in scene, off for data" },
+  { "no-detail", "", Kind::Flag, 0, 0, false, "", "", "", "Procedural detail", Both,
+    "the built-in scene without its procedural detail: the voxelised cloud alone (faster, "
+    "blurred close up)" },
   { "detail-octaves", "", Kind::Integer, 1, 16, false, "", "N", "4", "Procedural detail", Both,
     "octaves of the noise (directions x octaves <= 256)" },
   { "detail-directions", "", Kind::Integer, 1, 256, false, "", "N", "24", "Procedural detail", Both,
@@ -210,7 +214,8 @@ const Spec kOptions[] = {
   { "detail-frequency", "", Kind::Number, 0, Huge, false, "", "F", "0", "Procedural detail", Both,
     "cycles of the first octave per data unit; 0 = one cycle per 8 samples of the volume along "
     "its smallest side (the last octaves are then finer than its voxels)" },
-  { "detail-contrast", "", Kind::Number, 0, 10, false, "", "C", "0.3", "Procedural detail", Both,
+  { "detail-contrast", "", Kind::Number, 0, 10, false, "", "C", "0.5 / 0.3", "Procedural detail",
+    Both,
     "standard deviation of the noise factor, whose mean is 1 (the shape's density is kept); "
     "above about 0.3 it dips below 0 in places, where it is clamped (see the rendering model)" },
   { "detail-samples", "", Kind::Integer, 0, 64, false, "", "N", "0", "Procedural detail", Both,
@@ -697,6 +702,14 @@ public:
     if (!input.empty() && set("resolution"))
     {
       return "--resolution applies to the built-in cloud only, not to an input file";
+    }
+    if (set("detail") && set("no-detail"))
+    {
+      return "give either --detail or --no-detail, not both";
+    }
+    if (!input.empty() && set("no-detail"))
+    {
+      return "--no-detail applies to the built-in cloud only (data has detail only with --detail)";
     }
     if (set("preset") && set("transfer-function"))
     {

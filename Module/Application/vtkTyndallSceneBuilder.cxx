@@ -150,6 +150,16 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   {
     this->Options->SetNumber("ambient", this->DefaultScene ? 0.25 : 0.2);
   }
+  // The built-in cloud is procedural: its grid is the shape of cosine-noise
+  // detail, which stays sharp close up (unless --no-detail).
+  if (this->DefaultScene && !this->Options->GetFlag("no-detail"))
+  {
+    this->Options->SetFlag("detail", true);
+  }
+  if (!this->Options->IsSet("detail-contrast"))
+  {
+    this->Options->SetNumber("detail-contrast", this->DefaultScene ? 0.5 : 0.3);
+  }
   this->Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
   this->Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   this->Volume = vtkSmartPointer<vtkVolume>::New();
@@ -779,14 +789,8 @@ void vtkTyndallSceneBuilder::ApplyDetail()
   // Offset 1, and the amplitudes scaled so that the factor's standard
   // deviation (random phases: sqrt(sum a^2 / 2)) is the contrast.
   noise->SetAmplitude(1.0);
-  double power = 0.0;
-  for (int i = 0; i < noise->GetNumberOfWaves(); ++i)
-  {
-    double k[3], phase, amplitude;
-    noise->GetWave(i, k, phase, amplitude);
-    power += 0.5 * amplitude * amplitude;
-  }
-  noise->SetAmplitude(power > 0.0 ? o->GetNumber("detail-contrast") / std::sqrt(power) : 0.0);
+  const double deviation = noise->GetStandardDeviation();
+  noise->SetAmplitude(deviation > 0.0 ? o->GetNumber("detail-contrast") / deviation : 0.0);
   noise->SetOffset(1.0);
   noise->SetExtinctionScale(1.0);
   this->Property->SetDetailNoise(noise);

@@ -8,8 +8,10 @@
  *
  * - the medium: without an input the built-in default scene, a procedural
  *   cosine-noise cloud (vtkCosineNoiseSource, Resolution^3 voxels over
- *   [-1, 1]^3); with one, the volume read by vtkVolumeFileReader; placed by
- *   --position and --scale (its vtkVolume's matrix);
+ *   [-1, 1]^3) as the shape of cosine-noise detail evaluated in the shader
+ *   (--detail is on, contrast 0.5, unless --no-detail); with one, the volume
+ *   read by vtkVolumeFileReader; placed by --position and --scale (its
+ *   vtkVolume's matrix);
  * - further volumes (--add-volume, each with its --volume-* placement,
  *   transfer function and density scale), each drawn by its own mapper with
  *   the same settings, lit through the others (their maps shared), the

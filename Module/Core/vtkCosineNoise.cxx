@@ -345,6 +345,18 @@ double vtkCosineNoise::GetMaximumValue()
 }
 
 //------------------------------------------------------------------------------
+double vtkCosineNoise::GetStandardDeviation()
+{
+  const vtkInternals& w = this->GetWaves();
+  double power = 0.0;
+  for (double a : w.Amp)
+  {
+    power += 0.5 * a * a;
+  }
+  return std::sqrt(power);
+}
+
+//------------------------------------------------------------------------------
 bool vtkCosineNoise::CheckRay(
   const double origin[3], const double direction[3], double w[3], const char* who)
 {

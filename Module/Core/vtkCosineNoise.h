@@ -219,6 +219,15 @@ public:
   ///@}
 
   /**
+   * The noise's standard deviation over space, sqrt(sum_i a_i^2 / 2): the
+   * products of different waves average out (exact when no two waves share
+   * a wave vector). Its ratio to the Offset (the mean) is the noise's
+   * contrast; with many waves the noise is close to normal, so an offset of
+   * 2 standard deviations leaves about 2 % of space below 0.
+   */
+  double GetStandardDeviation();
+
+  /**
    * Exact integral of the signed noise along o + t w over [t0, t1] (w is
    * normalised; t is a distance). Not scaled, not clamped. Returns 0 and
    * reports an error for a zero or non-finite direction or non-finite

@@ -12,8 +12,9 @@
 // The offset sets how loose delta tracking's majorant (offset + the sum of
 // the amplitudes) is; below about 2 sigma the noise dips under 0, where the
 // closed form (clamping each cell's integral) and delta tracking (clamping
-// each sample) see slightly different media: the clamped share is printed. A sun and the camera of the tests; HG g = 0.6, albedo 0.95,
-// MaximumBounces 4. Each mode renders W x W pixels at S samples per pixel.
+// each sample) see slightly different media: the clamped share is printed. A sun and the camera of
+// the tests; HG g = 0.6, albedo 0.95, MaximumBounces 4. Each mode renders W x W pixels at S samples
+// per pixel.
 //
 // Reported per mode, per sample per pixel (one full-image sample pass):
 // - transmittance + distance sampling: CPU time inside the free-flight and
@@ -120,20 +121,6 @@ bool Parse(int argc, char* argv[], Options& options)
   return true;
 }
 
-// The noise's standard deviation over space, sqrt(sum a^2 / 2) (distinct
-// wave vectors: the cross terms average out).
-double StandardDeviation(vtkCosineNoise* noise)
-{
-  double power = 0.0;
-  for (int i = 0; i < noise->GetNumberOfWaves(); ++i)
-  {
-    double k[3], phase, amplitude;
-    noise->GetWave(i, k, phase, amplitude);
-    power += 0.5 * amplitude * amplitude;
-  }
-  return std::sqrt(power);
-}
-
 // The share of the noise's mass that its clamp at 0 removes,
 // E[max(0, -phi)] / E[phi], over random points of [-1, 1]^3.
 double ClampedShare(vtkCosineNoise* noise)
@@ -196,7 +183,7 @@ struct CloudScene
     this->Detail->SetNumberOfDirections(24);
     this->Detail->SetFrequency(2.0);
     this->Detail->SetOffset(0.0);
-    this->Detail->SetOffset(offsetSigmas > 0.0 ? offsetSigmas * StandardDeviation(this->Detail)
+    this->Detail->SetOffset(offsetSigmas > 0.0 ? offsetSigmas * this->Detail->GetStandardDeviation()
                                                : -this->Detail->GetMinimumValue() + 0.05);
     this->Detail->SetExtinctionScale(1.0 / this->Detail->GetOffset());
     if (box)
@@ -303,7 +290,7 @@ int main(int argc, char* argv[])
               "8 across)"
             : (std::to_string(options.Shape) + "^3 cloud shape").c_str(),
         noise->GetNumberOfWaves(), offsetName.c_str(),
-        StandardDeviation(noise) / noise->GetOffset(), majorant, clamped, options.Size,
+        noise->GetStandardDeviation() / noise->GetOffset(), majorant, clamped, options.Size,
         options.Size, options.Samples);
       Result cf, dt;
       if (!Run(scene, vtkVolumetricPathTracer::CLOSED_FORM, options, cf) ||

@@ -17,6 +17,9 @@
 //   nonempty PNG MIN_FRACTION [--skip-unless PATH]...
 //     At least MIN_FRACTION of the pixels differ from the corner pixel by
 //     more than 2 levels (something was drawn on the background).
+//   sharper A B RATIO
+//     A's detail finer than 5 pixels (RMS of the luminance minus its 5 x 5
+//     box blur) is at least RATIO times B's.
 //   make-data DIR
 //     Writes the synthetic inputs of the loader tests into DIR.
 //   make-bad-inputs DIR [VDB]
@@ -72,7 +75,8 @@ constexpr int Skip = 125;
 
 int Usage()
 {
-  std::cerr << "usage: TyndallCLICheck run|psnr|exr|nonempty|make-data ... (see the source)\n";
+  std::cerr
+    << "usage: TyndallCLICheck run|psnr|exr|nonempty|sharper|make-data ... (see the source)\n";
   return Fail;
 }
 
@@ -464,6 +468,58 @@ int NonEmpty(const std::vector<std::string>& args)
   return fraction >= minFraction ? Pass : Fail;
 }
 
+// The picture's detail finer than 5 pixels: the RMS of its luminance minus
+// the luminance's 5 x 5 box blur, over the pixels 2 or more from the edge.
+double FineDetail(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  auto luminance = [image](int x, int y)
+  { return (Pixel(image, x, y, 0) + Pixel(image, x, y, 1) + Pixel(image, x, y, 2)) / 3.0; };
+  double sum = 0.0;
+  long count = 0;
+  for (int y = 2; y < dims[1] - 2; ++y)
+  {
+    for (int x = 2; x < dims[0] - 2; ++x)
+    {
+      double blur = 0.0;
+      for (int j = -2; j <= 2; ++j)
+      {
+        for (int i = -2; i <= 2; ++i)
+        {
+          blur += luminance(x + i, y + j) / 25.0;
+        }
+      }
+      const double d = luminance(x, y) - blur;
+      sum += d * d;
+      ++count;
+    }
+  }
+  return count > 0 ? std::sqrt(sum / count) : 0.0;
+}
+
+// sharper A.png B.png RATIO: A's fine detail (FineDetail) is at least RATIO
+// times B's.
+int Sharper(const std::vector<std::string>& args)
+{
+  if (args.size() != 3)
+  {
+    return Usage();
+  }
+  auto a = ReadPNG(args[0]);
+  auto b = ReadPNG(args[1]);
+  if (!a || !b)
+  {
+    return Fail;
+  }
+  const double ratio = std::atof(args[2].c_str());
+  const double da = FineDetail(a), db = FineDetail(b);
+  std::cout << "detail finer than 5 pixels (RMS, 8-bit): " << args[0] << " " << da << ", "
+            << args[1] << " " << db << ": " << (db > 0.0 ? da / db : 0.0) << "x (minimum " << ratio
+            << "x)\n";
+  return da > 0.0 && da >= ratio * db ? Pass : Fail;
+}
+
 // An asymmetric CT-like volume (HU): a soft-tissue ball with a bone lump off
 // its centre on every axis, 32 x 28 x 12 at spacing (1.25, 1.5, 2).
 int16_t CtValue(int i, int j, int k)
@@ -740,6 +796,8 @@ int main(int argc, char* argv[])
     return Exr(args);
   if (mode == "nonempty")
     return NonEmpty(args);
+  if (mode == "sharper")
+    return Sharper(args);
   if (mode == "make-data")
     return MakeData(args);
   if (mode == "make-bad-inputs" && (args.size() == 1 || args.size() == 2))

@@ -110,6 +110,32 @@ int TestCosineNoiseClosedForm(int, char*[])
     Check(err < 1e-9, "closed form matches quadrature (non-negative noise) to 1e-9");
   }
 
+  // 1b. GetStandardDeviation() is the noise's spread over space: against
+  // the sample standard deviation at 20 000 random points (1 % sampling
+  // error; the bound sum |a| would be 5x off).
+  {
+    vtkNew<vtkCosineNoise> noise;
+    noise->SetFrequency(3.0);
+    noise->SetOffset(0.7);
+    std::uniform_real_distribution<double> u(-4.0, 4.0);
+    double sum = 0.0, squares = 0.0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i)
+    {
+      double p[3] = { u(rng), u(rng), u(rng) };
+      const double v = noise->EvaluateFunction(p);
+      sum += v;
+      squares += v * v;
+    }
+    const double mean = sum / n;
+    const double sampled = std::sqrt(squares / n - mean * mean);
+    const double exact = noise->GetStandardDeviation();
+    std::cout << "standard deviation: " << exact << ", sampled " << sampled << ", mean " << mean
+              << "\n";
+    Check(std::abs(sampled / exact - 1.0) < 0.03 && std::abs(mean - 0.7) < 0.1 * exact,
+      "GetStandardDeviation() matches the sampled spread, the offset the mean");
+  }
+
   // 2. Signed noise (offset 0): error relative to the integral of |noise|.
   {
     vtkNew<vtkCosineNoise> noise;

@@ -9,6 +9,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkCosineNoise.h"
 #include "vtkCullerCollection.h"
 #include "vtkFloatArray.h"
 #include "vtkFrustumCoverageCuller.h"
@@ -101,7 +102,18 @@ int TestTyndallSceneBuilder(int, char*[])
       double position[3];
       renderer->GetActiveCamera()->GetPosition(position);
       Check(position[1] == -0.6 && position[2] == 4.2, "the fixed view of the cloud");
+      vtkCosineNoise* detail = p->GetDetailNoise();
+      Check(detail && detail->GetNumberOfOctaves() == 4 && detail->GetOffset() == 1.0 &&
+          std::abs(detail->GetStandardDeviation() - 0.5) < 1e-12,
+        "the default scene is procedural: 4 octaves of detail, mean 1, contrast 0.5");
     }
+  }
+
+  // --no-detail: the voxelised cloud alone.
+  {
+    vtkNew<vtkTyndallSceneBuilder> builder;
+    auto renderer = Build(builder, { "-r", "16", "--no-detail" });
+    Check(renderer && !builder->GetProperty()->GetDetailNoise(), "--no-detail: no detail");
   }
 
   // The options reach the medium and the mapper; a viewer key is applied again.
