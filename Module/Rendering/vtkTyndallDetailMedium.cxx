@@ -348,8 +348,10 @@ void vtkTyndallDetailMedium::WalkCells(
 class vtkTyndallDetailMedium::RayWaves
 {
 public:
-  RayWaves(const vtkTyndallDetailMedium& medium, const double d[3])
+  RayWaves(
+    const vtkTyndallDetailMedium& medium, const double d[3], const PointPhases* start = nullptr)
     : Medium(medium)
+    , Start(start)
     , Beta(medium.Waves.size())
     , Cos(medium.Waves.size())
     , Sin(medium.Waves.size())
@@ -388,7 +390,7 @@ public:
     }
     const std::vector<Wave>& waves = this->Medium.Waves;
     const size_t count = waves.size();
-    if (!this->Valid)
+    if (!this->Valid && !this->TakeStart(pa))
     {
       for (size_t i = 0; i < count; ++i)
       {
@@ -397,8 +399,8 @@ public:
         this->Cos[i] = std::cos(alpha);
         this->Sin[i] = std::sin(alpha);
       }
-      this->Valid = true;
     }
+    this->Valid = true;
     const int axis = this->SequenceAxis(seg);
     const double* stepCos = axis >= 0 ? this->AxisStepCos[axis].data() : nullptr;
     const double* stepSin = axis >= 0 ? this->AxisStepSin[axis].data() : nullptr;
@@ -444,7 +446,8 @@ public:
   // I'' = P' phi + P phi'), from the guess of a homogeneous cell; the
   // phases at s are the cell's start's times e^{i beta s}, one sincos per
   // wave and step gives I, phi and phi' together.
-  double Solve(const double c[4], double length, double goal, double whole)
+  double Solve(const double pa[3], const double c[4], double length, double goal, double whole,
+    PointPhases* collision)
   {
     const std::vector<Wave>& waves = this->Medium.Waves;
     const size_t count = waves.size();
@@ -458,6 +461,13 @@ public:
     const double offset = this->Medium.Offset;
     double lo = 0.0, hi = length;
     double s = whole > 0.0 ? length * std::min(1.0, goal / whole) : 0.5 * length;
+    double evaluated = -1.0; // where the phases of `collision` are
+    if (collision)
+    {
+      collision->Valid = false; // it may be the start, read by now
+      collision->Cos.resize(count);
+      collision->Sin.resize(count);
+    }
     for (int iteration = 0; iteration < 100; ++iteration)
     {
       const double e[4] = { c[0], c[1] * s, c[2] * s * s, c[3] * s * s * s };
@@ -472,10 +482,17 @@ public:
         vtkCosineNoise::PolynomialWaveMoments(e, theta, cosT, sinT, re, im);
         const double ca = this->StartCos[i], sa = this->StartSin[i];
         const double a = waves[i].Amplitude;
+        const double cs = ca * cosT - sa * sinT, ss = sa * cosT + ca * sinT; // e^{i alpha(s)}
         integral += a * (ca * re - sa * im);
-        phi += a * (ca * cosT - sa * sinT);
-        slope -= a * this->Beta[i] * (sa * cosT + ca * sinT);
+        phi += a * cs;
+        slope -= a * this->Beta[i] * ss;
+        if (collision)
+        {
+          collision->Cos[i] = cs;
+          collision->Sin[i] = ss;
+        }
       }
+      evaluated = s;
       const double value = s * integral - goal;
       if (std::abs(value) <= 1e-13 * goal)
       {
@@ -501,14 +518,62 @@ public:
       {
         // Halley converges cubically: after a step this small the error is
         // of the order of its cube, below the tolerance; no check needed.
+        this->Record(collision, pa, evaluated);
         return next;
       }
       s = next;
     }
+    this->Record(collision, pa, evaluated);
     return s;
   }
 
 private:
+  // Uses the start phases (once, for the ray's first cell) when they are at
+  // pa but for rounding: turned by k . (pa - point), each below 1e-4 rad,
+  // whose sine and cosine to fifth order are exact to rounding.
+  bool TakeStart(const double pa[3])
+  {
+    const PointPhases* start = this->Start;
+    this->Start = nullptr;
+    const std::vector<Wave>& waves = this->Medium.Waves;
+    if (!start || !start->Valid || start->Cos.size() != waves.size())
+    {
+      return false;
+    }
+    const double delta[3] = { pa[0] - start->Point[0], pa[1] - start->Point[1],
+      pa[2] - start->Point[2] };
+    for (size_t i = 0; i < waves.size(); ++i)
+    {
+      this->Cos[i] = waves[i].K[0] * delta[0] + waves[i].K[1] * delta[1] + waves[i].K[2] * delta[2];
+      if (!(std::abs(this->Cos[i]) <= 1e-4))
+      {
+        return false;
+      }
+    }
+    for (size_t i = 0; i < waves.size(); ++i)
+    {
+      const double x = this->Cos[i], x2 = x * x;
+      const double cosX = 1.0 - x2 / 2.0 * (1.0 - x2 / 12.0);
+      const double sinX = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0));
+      this->Cos[i] = start->Cos[i] * cosX - start->Sin[i] * sinX;
+      this->Sin[i] = start->Sin[i] * cosX + start->Cos[i] * sinX;
+    }
+    return true;
+  }
+
+  // The phases written by Solve() are at pa + evaluated d.
+  void Record(PointPhases* collision, const double pa[3], double evaluated) const
+  {
+    if (collision && evaluated >= 0.0)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        collision->Point[a] = pa[a] + evaluated * this->D[a];
+      }
+      collision->Valid = true;
+    }
+  }
+
   // The axis whose sequence gives this cell's end phase: one whose plane
   // is crossed at the end, right after the plane of its last recorded
   // crossing; -1 if none. Computes that axis's step once per ray.
@@ -553,6 +618,7 @@ private:
   }
 
   const vtkTyndallDetailMedium& Medium;
+  const PointPhases* Start;
   double D[3];
   int AxisPlane[3] = { NoPlane, NoPlane, NoPlane };
   std::vector<double> AxisCos[3]; // the phases at each axis's last crossing
@@ -571,10 +637,10 @@ private:
 
 //------------------------------------------------------------------------------
 double vtkTyndallDetailMedium::OpticalDepth(
-  const double o[3], const double d[3], double t0, double t1) const
+  const double o[3], const double d[3], double t0, double t1, const PointPhases* start) const
 {
   double tau = 0.0;
-  RayWaves phases(*this, d);
+  RayWaves phases(*this, d, start);
   this->WalkCells(o, d, t0, t1,
     [&](const Segment& s, const double pa[3])
     {
@@ -585,8 +651,8 @@ double vtkTyndallDetailMedium::OpticalDepth(
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallDetailMedium::SampleDistance(
-  const double o[3], const double d[3], double t0, double t1, double target, double& t) const
+bool vtkTyndallDetailMedium::SampleDistance(const double o[3], const double d[3], double t0,
+  double t1, double target, double& t, const PointPhases* start, PointPhases* collision) const
 {
   if (target == 0.0)
   {
@@ -601,7 +667,7 @@ bool vtkTyndallDetailMedium::SampleDistance(
   const double goal = target / this->Scale; // in units of the unscaled integral
   double accumulated = 0.0;
   bool found = false;
-  RayWaves phases(*this, d);
+  RayWaves phases(*this, d, start);
   this->WalkCells(o, d, t0, t1,
     [&](const Segment& s, const double pa[3])
     {
@@ -612,7 +678,7 @@ bool vtkTyndallDetailMedium::SampleDistance(
         accumulated += cell;
         return true;
       }
-      t = s.Ta + phases.Solve(s.C, length, goal - accumulated, cell);
+      t = s.Ta + phases.Solve(pa, s.C, length, goal - accumulated, cell, collision);
       found = true;
       return false;
     });

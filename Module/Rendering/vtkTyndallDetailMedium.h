@@ -136,20 +136,40 @@ public:
   double GetShortestWavelength(const double worldToIndex[16]) const;
 
   /**
+   * The waves' phases (cos and sin of k . p + phase) at one point, which a
+   * ray that starts there reuses instead of a sincos per wave: a path's
+   * collision point starts its shadow rays and its next flight.
+   * SampleDistance() fills it at the collision; OpticalDepth() and
+   * SampleDistance() read it when their ray starts close to the point (the
+   * phases are turned by the small difference, to rounding; farther, they
+   * compute their own).
+   */
+  struct PointPhases
+  {
+    double Point[3] = { 0.0, 0.0, 0.0 };
+    std::vector<double> Cos;
+    std::vector<double> Sin;
+    bool Valid = false;
+  };
+
+  /**
    * The optical depth along p(t) = o + t d for t in [t0, t1], in closed form
    * (see the class description; each cell's integral clamped at 0). The
    * segment is clipped to the box [boxLow, boxHigh] of the grid medium.
    */
-  double OpticalDepth(const double o[3], const double d[3], double t0, double t1) const;
+  double OpticalDepth(const double o[3], const double d[3], double t0, double t1,
+    const PointPhases* start = nullptr) const;
 
   /**
    * Distance sampling: the t in [t0, t1] at which OpticalDepth(o, d, t0, t)
    * reaches `target` (>= 0). Returns true and sets t when it does, false
    * (t = t1) when the whole segment's depth is below the target (or the
-   * target is negative or NaN). A target of 0 gives t = t0.
+   * target is negative or NaN). A target of 0 gives t = t0. `start`: the
+   * phases at the ray's start, if known; `collision` (may be `start`)
+   * receives those at the collision when one is found.
    */
-  bool SampleDistance(
-    const double o[3], const double d[3], double t0, double t1, double target, double& t) const;
+  bool SampleDistance(const double o[3], const double d[3], double t0, double t1, double target,
+    double& t, const PointPhases* start = nullptr, PointPhases* collision = nullptr) const;
 
   /**
    * The extinction coefficients (ETM's DCT, vtkTransmittanceMapMath) of

@@ -41,6 +41,7 @@ constexpr double kRouletteThreshold = 0.25;
 constexpr double kRatioRouletteThreshold = 0.1;
 
 using Clock = std::chrono::steady_clock;
+using Phases = vtkTyndallDetailMedium::PointPhases;
 
 double Seconds(Clock::time_point a, Clock::time_point b)
 {
@@ -201,13 +202,16 @@ private:
 
   // A free flight along the clipped ray: true and t at a real collision,
   // false when the ray leaves [T0, T1] first.
-  bool FreeFlight(const Ray& ray, Random& rng, double& t, Timing& timing) const
+  // The closed form reuses the waves' phases at the ray's start when it is
+  // the last collision (`phases`), and leaves those at the new collision.
+  bool FreeFlight(const Ray& ray, Random& rng, double& t, Timing& timing, Phases& phases) const
   {
     const auto start = Clock::now();
     bool hit;
     if (this->S->ClosedForm)
     {
-      hit = this->S->Detail->SampleDistance(ray.O, ray.D, ray.T0, ray.T1, rng.Exponential(), t);
+      hit = this->S->Detail->SampleDistance(
+        ray.O, ray.D, ray.T0, ray.T1, rng.Exponential(), t, &phases, &phases);
     }
     else
     {
@@ -243,16 +247,17 @@ private:
 
   // T_l from p along dl (index image of a unit world direction) to the box's
   // exit or the world distance tMax.
-  double LightTransmittance(
-    const double p[3], const double dl[3], double tMax, Random& rng, Timing& timing) const
+  double LightTransmittance(const double p[3], const double dl[3], double tMax, Random& rng,
+    Timing& timing, const Phases& phases) const
   {
     const auto start = Clock::now();
     double t0 = 0.0, t1 = tMax;
     double transmittance = 1.0;
     if (Scene::ClipToBox(p, dl, this->S->BoxLow, this->S->BoxHigh, t0, t1))
     {
-      transmittance = this->S->ClosedForm ? std::exp(-this->S->Detail->OpticalDepth(p, dl, t0, t1))
-                                          : this->RatioTrack(p, dl, t0, t1, rng);
+      transmittance = this->S->ClosedForm
+        ? std::exp(-this->S->Detail->OpticalDepth(p, dl, t0, t1, &phases))
+        : this->RatioTrack(p, dl, t0, t1, rng);
     }
     timing.Tracking += Seconds(start, Clock::now());
     return transmittance;
@@ -289,7 +294,7 @@ private:
   // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision at the
   // world point x (index point p) reached along w.
   void Source(const double x[3], const double p[3], const double w[3], const double color[3],
-    const double emission[3], Random& rng, Timing& timing, double J[3]) const
+    const double emission[3], Random& rng, Timing& timing, const Phases& phases, double J[3]) const
   {
     const Scene& s = *this->S;
     double in[3] = { s.Ambient, s.Ambient, s.Ambient };
@@ -298,7 +303,7 @@ private:
       s.AddInScattering(
         x, w, color,
         [&](const double dl[3], double tMax)
-        { return this->LightTransmittance(p, dl, tMax, rng, timing); },
+        { return this->LightTransmittance(p, dl, tMax, rng, timing, phases); },
         in);
     }
     for (int c = 0; c < 3; ++c)
@@ -332,14 +337,14 @@ private:
 
   // One path from the camera ray; adds its radiance to L. Returns whether the
   // first free flight left the medium.
-  bool TracePath(Ray ray, Random& rng, Timing& timing, double L[3]) const
+  bool TracePath(Ray ray, Random& rng, Timing& timing, Phases& phases, double L[3]) const
   {
     const Scene& s = *this->S;
     double beta[3] = { 1.0, 1.0, 1.0 };
     for (int bounce = 0;; ++bounce)
     {
       double t;
-      if (!ray.Clip(s) || !this->FreeFlight(ray, rng, t, timing))
+      if (!ray.Clip(s) || !this->FreeFlight(ray, rng, t, timing, phases))
       {
         return bounce == 0;
       }
@@ -355,7 +360,7 @@ private:
       }
       else
       {
-        this->Source(x, p, ray.W, color, emission, rng, timing, J);
+        this->Source(x, p, ray.W, color, emission, rng, timing, phases, J);
       }
       for (int c = 0; c < 3; ++c)
       {
@@ -397,11 +402,12 @@ private:
     if (valid)
     {
       Random rng(s.Seed, static_cast<std::uint64_t>(pixel));
+      Phases phases; // the closed form's at the last collision
       escapes = 0;
       for (int n = 0; n < s.Samples; ++n)
       {
         double L[3] = { 0.0, 0.0, 0.0 };
-        escapes += this->TracePath(camera, rng, timing, L) ? 1 : 0;
+        escapes += this->TracePath(camera, rng, timing, phases, L) ? 1 : 0;
         for (int c = 0; c < 3; ++c)
         {
           sum[c] += L[c];

@@ -374,6 +374,56 @@ void TestSampleDistance(Scene& scene, Random& random)
   Check(found > 200 && worst < 1e-10, "SampleDistance inverts the closed form");
 }
 
+// The phases at a collision (PointPhases) start the rays from it as a path
+// tracer does: a shadow ray and the next flight in new directions, from
+// the collision point recomputed by the caller. The depths and distances
+// must equal those computed without them; phases of another point must
+// not be used.
+void TestCollisionPhases(Scene& scene, Random& random)
+{
+  double worst = 0.0;
+  int reused = 0;
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    double o[3], d[3], t0, t1;
+    RandomRay(random, trial, o, d, t0, t1);
+    const double total = scene.Detail.OpticalDepth(o, d, t0, t1);
+    vtkTyndallDetailMedium::PointPhases phases;
+    double t;
+    if (!scene.Detail.SampleDistance(
+          o, d, t0, t1, random.Uniform(0.0, 1.0) * total, t, nullptr, &phases) ||
+      !phases.Valid)
+    {
+      continue;
+    }
+    const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+    double e[3] = { random.Uniform(-1.0, 1.0), random.Uniform(-1.0, 1.0),
+      random.Uniform(-1.0, 1.0) }; // a new direction
+    const double plain = scene.Detail.OpticalDepth(p, e, 0.0, 1e30);
+    const double with = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &phases);
+    worst = std::max(worst, std::abs(with - plain) / std::max(plain, 1e-300));
+    double ta, tb;
+    const double target = 0.5 * plain;
+    const bool a = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, ta);
+    const bool b = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, tb, &phases, &phases);
+    worst = std::max(worst, a == b ? std::abs(ta - tb) / std::max(std::abs(ta), 1.0) : 1.0);
+    reused += plain > 0.0 ? 1 : 0;
+    // Phases of a point 0.01 away are turned by up to |k| x 0.01 (far above
+    // the 1e-4 rad the reuse takes): they must be ignored.
+    vtkTyndallDetailMedium::PointPhases moved = phases;
+    moved.Point[0] += 0.01;
+    if (moved.Valid)
+    {
+      const double ignored = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &moved);
+      worst = std::max(worst, std::abs(ignored - plain) / std::max(plain, 1e-300));
+    }
+  }
+  std::cout << "rays from a collision with its phases: worst relative difference " << worst
+            << " over " << reused << " rays\n";
+  Check(
+    reused > 100 && worst < 1e-12, "the phases at a collision give the same depths and flights");
+}
+
 void TestNegativeNoise(Scene& scene, Random& random)
 {
   scene.Noise->SetOffset(0.2); // the noise now dips below zero
@@ -406,6 +456,7 @@ int TestTyndallDetailMedium(int, char*[])
   TestOpticalDepth(scene, random);
   TestNoisePlacement(scene, random);
   TestSampleDistance(scene, random);
+  TestCollisionPhases(scene, random);
   TestProjection(scene, random);
   TestNegativeNoise(scene, random);
 
