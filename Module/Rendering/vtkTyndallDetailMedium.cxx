@@ -514,10 +514,11 @@ public:
       {
         next = 0.5 * (lo + hi);
       }
-      else if (halley && std::abs(next - s) <= 1e-8 * length)
+      else if (halley && std::abs(next - s) <= 1e-8 * length && std::abs(value) <= 1e-6 * goal)
       {
-        // Halley converges cubically: after a step this small the error is
-        // of the order of its cube, below the tolerance; no check needed.
+        // Halley converges cubically: after a step this small (from a
+        // residual this small: not a step shrunk by an extinction near 0)
+        // the error is of the order of its cube, below the tolerance.
         this->Record(collision, pa, evaluated);
         return next;
       }
@@ -603,14 +604,16 @@ private:
     return -1;
   }
 
-  // The phases at the cell's end are those at each plane crossed there.
+  // The phases at the cell's end are those at each plane crossed there;
+  // an axis not crossed keeps its last crossing (its next one is then the
+  // plane after it, whatever the other axes crossed in between).
   void RecordCrossings(const Segment& seg)
   {
     for (int a = 0; a < 3; ++a)
     {
-      this->AxisPlane[a] = seg.Plane[a];
       if (seg.Plane[a] != NoPlane)
       {
+        this->AxisPlane[a] = seg.Plane[a];
         this->AxisCos[a] = this->Cos;
         this->AxisSin[a] = this->Sin;
       }
@@ -654,6 +657,10 @@ double vtkTyndallDetailMedium::OpticalDepth(
 bool vtkTyndallDetailMedium::SampleDistance(const double o[3], const double d[3], double t0,
   double t1, double target, double& t, const PointPhases* start, PointPhases* collision) const
 {
+  if (collision && collision != start)
+  {
+    collision->Valid = false; // until a solve fills it
+  }
   if (target == 0.0)
   {
     t = t0;

@@ -166,7 +166,8 @@ public:
    * (t = t1) when the whole segment's depth is below the target (or the
    * target is negative or NaN). A target of 0 gives t = t0. `start`: the
    * phases at the ray's start, if known; `collision` (may be `start`)
-   * receives those at the collision when one is found.
+   * receives those at the collision when one is found by the solve (not
+   * for a target of 0; its Point says where they are, Valid whether any).
    */
   bool SampleDistance(const double o[3], const double d[3], double t0, double t1, double target,
     double& t, const PointPhases* start = nullptr, PointPhases* collision = nullptr) const;

@@ -402,26 +402,43 @@ void TestCollisionPhases(Scene& scene, Random& random)
     const double plain = scene.Detail.OpticalDepth(p, e, 0.0, 1e30);
     const double with = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &phases);
     worst = std::max(worst, std::abs(with - plain) / std::max(plain, 1e-300));
-    double ta, tb;
-    const double target = 0.5 * plain;
-    const bool a = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, ta);
-    const bool b = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, tb, &phases, &phases);
-    worst = std::max(worst, a == b ? std::abs(ta - tb) / std::max(std::abs(ta), 1.0) : 1.0);
-    reused += plain > 0.0 ? 1 : 0;
+    // The phases are really used: the same point's phases turned by pi
+    // (negated) must change the depth.
+    vtkTyndallDetailMedium::PointPhases negated = phases;
+    for (size_t i = 0; i < negated.Cos.size(); ++i)
+    {
+      negated.Cos[i] = -negated.Cos[i];
+      negated.Sin[i] = -negated.Sin[i];
+    }
+    const double wrong = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &negated);
+    reused += std::abs(wrong - plain) > 1e-6 * plain ? 1 : 0;
     // Phases of a point 0.01 away are turned by up to |k| x 0.01 (far above
     // the 1e-4 rad the reuse takes): they must be ignored.
     vtkTyndallDetailMedium::PointPhases moved = phases;
     moved.Point[0] += 0.01;
-    if (moved.Valid)
+    const double ignored = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &moved);
+    worst = std::max(worst, std::abs(ignored - plain) / std::max(plain, 1e-300));
+    // The next flight from the collision, the phases both its start and
+    // where the new collision's go (as the path tracer passes them).
+    double ta, tb;
+    const double target = 0.5 * plain;
+    const bool hitA = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, ta);
+    const bool hitB = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, tb, &phases, &phases);
+    worst = std::max(worst, hitA == hitB ? std::abs(ta - tb) / std::max(std::abs(ta), 1.0) : 1.0);
+    const double q[3] = { p[0] + tb * e[0], p[1] + tb * e[1], p[2] + tb * e[2] };
+    if (hitB && phases.Valid)
     {
-      const double ignored = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &moved);
-      worst = std::max(worst, std::abs(ignored - plain) / std::max(plain, 1e-300));
+      // ...and the phases left are those at the new collision.
+      const double from = scene.Detail.OpticalDepth(q, d, 0.0, 1e30);
+      const double reusing = scene.Detail.OpticalDepth(q, d, 0.0, 1e30, &phases);
+      worst = std::max(worst, std::abs(reusing - from) / std::max(from, 1e-300));
     }
   }
   std::cout << "rays from a collision with its phases: worst relative difference " << worst
-            << " over " << reused << " rays\n";
-  Check(
-    reused > 100 && worst < 1e-12, "the phases at a collision give the same depths and flights");
+            << "; the phases were used (negating them changed the depth) on " << reused
+            << " rays\n";
+  Check(reused > 100 && worst < 1e-12,
+    "the phases at a collision are used and give the same depths and flights");
 }
 
 void TestNegativeNoise(Scene& scene, Random& random)
