@@ -461,6 +461,51 @@ void TestNegativeNoise(Scene& scene, Random& random)
   Check(bounded, "per-cell clamping never exceeds the clamped extinction's depth");
   Check(below > 0, "with negative noise the per-cell clamp is visible (documented)");
 }
+
+// Rays whose cells end on two or three axes' planes at once (diagonals
+// through sample points), along an axis, backwards, and across empty cells
+// between occupied ones (two planes of zero samples): the phase sequences
+// and their resets against quadrature.
+void TestTiesAndGaps(Scene& scene)
+{
+  scene.Noise->SetOffset(-scene.Noise->GetMinimumValue()); // non-negative again
+  auto* values = vtkFloatArray::SafeDownCast(scene.Image->GetPointData()->GetScalars());
+  int dims[3];
+  scene.Image->GetDimensions(dims);
+  for (int k = 0; k < dims[2]; ++k)
+  {
+    for (int j = 3; j <= 4; ++j)
+    {
+      for (int i = 0; i < dims[0]; ++i)
+      {
+        values->SetValue((k * dims[1] + j) * dims[0] + i, 0.0f);
+      }
+    }
+  }
+  values->Modified();
+  Check(scene.Update(), "the shape with a gap updates");
+  const double directions[][3] = { { 1, 1, 1 }, { 1, 1, 0 }, { -1, 1, 1 }, { 1, -1, -1 },
+    { 2, 1, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 1, 2, 2 } };
+  double worst = 0.0;
+  int crossing = 0;
+  for (const auto& d : directions)
+  {
+    for (int start = 0; start < 4; ++start)
+    {
+      // From a sample point (or a cell centre) before the box.
+      const double shift = start < 2 ? 0.0 : 0.5;
+      const double o[3] = { (d[0] > 0 ? -1.0 : dims[0]) + shift + start,
+        (d[1] > 0 ? -1.0 : dims[1]) + shift, (d[2] > 0 ? -1.0 : dims[2]) + shift + start % 2 };
+      const double closed = scene.Detail.OpticalDepth(o, d, 0.0, 40.0);
+      const double exact = QuadratureDepth(scene.Detail, scene.Grid, o, d, 0.0, 40.0, true);
+      crossing += exact > 0.0 ? 1 : 0;
+      worst = std::max(worst, std::abs(closed - exact) / std::max(exact, 1e-300));
+    }
+  }
+  std::cout << "ties and gaps: worst relative error " << worst << " over " << crossing
+            << " rays through the medium\n";
+  Check(crossing > 10 && worst < 1e-9, "rays through plane ties and empty cells match quadrature");
+}
 }
 
 int TestTyndallDetailMedium(int, char*[])
@@ -476,6 +521,7 @@ int TestTyndallDetailMedium(int, char*[])
   TestCollisionPhases(scene, random);
   TestProjection(scene, random);
   TestNegativeNoise(scene, random);
+  TestTiesAndGaps(scene);
 
   vtkNew<vtkCosineNoise> huge;
   huge->SetNumberOfDirections(100);
