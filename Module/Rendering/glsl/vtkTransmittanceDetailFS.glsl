@@ -201,8 +201,9 @@ float tyndallDetailDepth(vec3 x, vec3 w, float tEnd)
 // goal <= whole, the integral over the whole cell): safeguarded Newton from
 // the guess of a homogeneous cell, the derivative being the unscaled
 // extinction c(s) noise(pa + s d); bisection where Newton leaves the
-// bracket. The GLSL twin of vtkTyndallDetailMedium::SolveInCell, to single
-// precision.
+// bracket. The GLSL twin of the CPU's cell solve (vtkTyndallDetailMedium's
+// RayWaves::Solve, which takes Halley steps from the same guess within the
+// same bracket and finds the same root), to single precision.
 float tyndallDetailSolve(vec3 pa, vec3 d, vec4 c, float len, float goal, float whole)
 {
   float lo = 0.0, hi = len;
