@@ -626,7 +626,10 @@ bool vtkTransmittanceVolumeMapper::UpdateShadowMaps(vtkRenderer* renderer, vtkVo
     return false;
   }
   vtkTransmittanceScopedTextures medium = in.BindMedium();
-  return in.UpdateMaps(this) != nullptr;
+  // The lights and maps are reported (GetTransmittanceMap()) also when the
+  // volume itself is out of view and only its shadow is drawn.
+  in.Lit = in.UpdateMaps(this) != nullptr;
+  return in.Lit;
 }
 
 //------------------------------------------------------------------------------

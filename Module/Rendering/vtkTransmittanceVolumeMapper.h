@@ -415,7 +415,9 @@ public:
   ///@{
   /**
    * The lights of the last Render() (none when it failed or after
-   * ReleaseGraphicsResources()), in the renderer's order (switched-on
+   * ReleaseGraphicsResources()), or of the last UpdateShadowMaps() when the
+   * volume was not drawn after it (out of view, its shadow drawn by
+   * vtkVolumeShadowReceiverPass), in the renderer's order (switched-on
    * lights with a positive intensity, at most GetMaximumNumberOfLights();
    * none in the emission-absorption model): their number, the method each
    * used (the mapper's, or BRUTE_FORCE for a light without a map; -1 for an

@@ -23,7 +23,6 @@
 #include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
-#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -143,31 +142,8 @@ struct Scene
   /// The ground point under pixel (i, j), false when the pixel's ray misses it.
   bool GroundPoint(int i, int j, double x[3])
   {
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    vtkNew<vtkMatrix4x4> inverse;
-    vtkMatrix4x4::Invert(camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0), inverse);
-    double ends[2][4];
-    for (int e = 0; e < 2; ++e)
-    {
-      const double ndc[4] = { 2.0 * (i + 0.5) / kSize - 1.0, 2.0 * (j + 0.5) / kSize - 1.0,
-        e == 0 ? -1.0 : 1.0, 1.0 };
-      inverse->MultiplyPoint(ndc, ends[e]);
-      for (int c = 0; c < 3; ++c)
-      {
-        ends[e][c] /= ends[e][3];
-      }
-    }
-    const double dy = ends[1][1] - ends[0][1];
-    if (!(dy < 0.0))
-    {
-      return false;
-    }
-    const double t = (kGround - ends[0][1]) / dy;
-    for (int c = 0; c < 3; ++c)
-    {
-      x[c] = ends[0][c] + t * (ends[1][c] - ends[0][c]);
-    }
-    return t > 0.0 && t < 1.0 && x[0] > -6.0 && x[0] < 4.0 && x[2] > -6.0 && x[2] < 4.0;
+    return tyndall_test::PixelOnPlaneY(this->Renderer, kSize, i, j, kGround, x) && x[0] > -6.0 &&
+      x[0] < 4.0 && x[2] > -6.0 && x[2] < 4.0;
   }
 
   /**

@@ -63,8 +63,6 @@ inline double PSNR(vtkImageData* a, vtkImageData* b)
                     : 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
-// VTK's regression test plus a PSNR floor against the same baseline.
-// Returns vtkRegressionTester's result codes (FAILED, PASSED, DO_INTERACTOR).
 // The window's back buffer as a new 8-bit image.
 inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
 {
@@ -92,6 +90,8 @@ inline int MaxDifference(vtkImageData* a, vtkImageData* b)
   return worst;
 }
 
+// VTK's regression test plus a PSNR floor against the same baseline.
+// Returns vtkRegressionTester's result codes (FAILED, PASSED, DO_INTERACTOR).
 inline int RegressionTestWithPSNR(int argc, char* argv[], vtkRenderWindow* window, double minPSNR)
 {
   const int vtkResult = vtkRegressionTestImage(window);

@@ -9,6 +9,7 @@
 #include "vtkCosineNoiseSource.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
@@ -123,6 +124,38 @@ inline void SetTestCamera(vtkRenderer* renderer, double viewAngle = 30.0)
   camera->SetViewUp(0.0, 1.0, 0.0);
   camera->SetViewAngle(viewAngle);
   renderer->ResetCameraClippingRange();
+}
+
+// The point x where pixel (i, j) of a size x size picture of `renderer`
+// sees the horizontal plane y = height: false where the pixel's ray, between
+// the near and far planes, goes up or misses it.
+inline bool PixelOnPlaneY(vtkRenderer* renderer, int size, int i, int j, double height, double x[3])
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0), inverse);
+  double ends[2][4];
+  for (int e = 0; e < 2; ++e)
+  {
+    const double ndc[4] = { 2.0 * (i + 0.5) / size - 1.0, 2.0 * (j + 0.5) / size - 1.0,
+      e == 0 ? -1.0 : 1.0, 1.0 };
+    inverse->MultiplyPoint(ndc, ends[e]);
+    for (int c = 0; c < 3; ++c)
+    {
+      ends[e][c] /= ends[e][3];
+    }
+  }
+  const double dy = ends[1][1] - ends[0][1];
+  if (!(dy < 0.0))
+  {
+    return false;
+  }
+  const double t = (height - ends[0][1]) / dy;
+  for (int c = 0; c < 3; ++c)
+  {
+    x[c] = ends[0][c] + t * (ends[1][c] - ends[0][c]);
+  }
+  return t > 0.0 && t < 1.0;
 }
 }
 

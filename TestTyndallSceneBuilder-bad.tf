@@ -1,1 +1,0 @@
-opacity 0 2
