@@ -243,7 +243,8 @@ public:
   // Whether the last Render() went through every pass: the lights, methods,
   // frusta and maps it reports describe that render, or nothing.
   bool Complete = false;
-  /// The last Render() read the scene and has its maps (also when another volume drew it).
+  /// The last Render() or UpdateShadowMaps() read the scene and has its maps
+  /// (also when another volume drew it).
   bool Lit = false;
   // Interactive level of detail: the last camera-ray cost per full-size
   // pixel (0: not measured yet), time and reduction.
@@ -620,14 +621,21 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVo
 bool vtkTransmittanceVolumeMapper::UpdateShadowMaps(vtkRenderer* renderer, vtkVolume* volume)
 {
   vtkInternals& in = *this->Internals;
+  // The lights and maps are reported (GetTransmittanceMap()) as this frame
+  // leaves them, also when the volume itself is out of view and only its
+  // shadow is drawn; none when the frame fails.
+  in.Lit = false;
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
-  if (!window || !in.PrepareFrame(this, renderer, volume, window) || !in.Frame.NeedsMaps())
+  if (!window || !in.PrepareFrame(this, renderer, volume, window))
   {
     return false;
   }
+  if (!in.Frame.NeedsMaps())
+  {
+    in.Lit = true; // the lights are read, none of them has a map
+    return false;
+  }
   vtkTransmittanceScopedTextures medium = in.BindMedium();
-  // The lights and maps are reported (GetTransmittanceMap()) also when the
-  // volume itself is out of view and only its shadow is drawn.
   in.Lit = in.UpdateMaps(this) != nullptr;
   return in.Lit;
 }

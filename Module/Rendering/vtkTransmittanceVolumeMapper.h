@@ -417,8 +417,9 @@ public:
    * The lights of the last Render() (none when it failed or after
    * ReleaseGraphicsResources()), or of the last UpdateShadowMaps() when the
    * volume was not drawn after it (out of view, its shadow drawn by
-   * vtkVolumeShadowReceiverPass), in the renderer's order (switched-on
-   * lights with a positive intensity, at most GetMaximumNumberOfLights();
+   * vtkVolumeShadowReceiverPass; none when it failed), in the renderer's
+   * order (switched-on lights with a positive intensity, at most
+   * GetMaximumNumberOfLights();
    * none in the emission-absorption model): their number, the method each
    * used (the mapper's, or BRUTE_FORCE for a light without a map; -1 for an
    * index out of range) and the frustum of each one's map (null out of
@@ -430,7 +431,8 @@ public:
   ///@}
 
   /**
-   * Reads light `light`'s transmittance map, as the last Render() left it,
+   * Reads light `light`'s transmittance map, as the last Render() left it
+   * (or the last UpdateShadowMaps() when the volume was not drawn after it),
    * back from the GPU into `map`: TransmittanceMapSize x TransmittanceMapSize
    * points, point (i, j) being texel (a, b) = ((i + 0.5) / size,
    * (j + 0.5) / size) (the origin and spacing say so), with the float

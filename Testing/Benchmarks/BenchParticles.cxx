@@ -34,8 +34,8 @@
 //                       [--pictures DIR] [--quick]
 // --grids: the voxelised ways' grid resolutions, 8 .. 1024; default 64,128,256.
 // --pictures: writes the shadow scene's pictures, each way's and the
-// reference's, as DIR/particle-shadow-<way>.png (the reference then at every
-// pixel).
+// reference's, as DIR/particle-shadow-<way>.png (the reference, and the
+// picture PSNR, then at every pixel).
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -91,7 +91,7 @@ enum class Scene
 };
 
 // The shadow scene's ground: a 6 x 6 square at y = kGround, facing up.
-constexpr double kGround = -3.0; // the particles end above y = -0.85
+constexpr double kGround = -3.4; // the particles end above y = -0.85
 constexpr double kGroundLow = -3.0, kGroundHigh = 3.0;
 
 struct Row
@@ -105,6 +105,7 @@ struct Row
   double Error = 0.0;
   double PicturePsnr = 0.0; // the shadow scene's ground against the CPU reference
   double Received = 0.0;    // the largest |received fraction - T| there
+  bool Culled = false;      // the volume was never ray cast (out of view)
 };
 
 double Median(std::vector<double> v)
@@ -122,7 +123,7 @@ struct GroundReference
   std::vector<double> T; // 3 per pixel
   int Shadowed = 0;      // points with T < 0.9
   double Seconds = 0.0;
-  double StepError = 0.0; // the largest change at half the light step (every 8th point)
+  double StepError = 0.0; // the largest change at half the light step (every 32nd point)
 };
 
 // The white, purely diffuse ground that receives the particles' shadow, and
@@ -146,9 +147,10 @@ void AddGround(vtkRenderer* renderer)
   vtkNew<vtkVolumeShadowReceiverPass> shadows;
   shadows->Install(renderer);
   vtkCamera* camera = renderer->GetActiveCamera();
-  // Nearly straight down at the shadow of the ball's centre.
-  camera->SetPosition(-1.2, -0.9, -0.3);
-  camera->SetFocalPoint(-1.5, kGround, -0.9);
+  // Nearly straight down at the shadow of the ball's centre, from low
+  // enough that the renderer culls the particles (what --quick checks).
+  camera->SetPosition(-1.4, -1.3, -0.4);
+  camera->SetFocalPoint(-1.7, kGround, -1.0);
   camera->SetViewUp(0.0, 0.0, -1.0);
   camera->SetViewAngle(60.0);
   camera->SetClippingRange(0.02, 20.0);
@@ -376,6 +378,7 @@ Row Measure(const Options& options, vtkPolyData* particles, bool splat, int grid
   }
   if (stage.Kind == Scene::Shadow)
   {
+    row.Culled = mapper->GetLastRayCastPassCount() == 0;
     ComparePicture(options, window, renderer, volume, ground, row);
   }
   renderer->RemoveVolume(volume);
@@ -500,6 +503,7 @@ bool ParseArguments(int argc, char* argv[], Options& options)
       options.MapSize = 256;
       options.Frames = 1;
       options.Size = 64;
+      options.Grids = { 64 };
     }
     else
     {
@@ -545,7 +549,7 @@ int main(int argc, char* argv[])
     std::vector<Row> rows;
     // The splatted maps need no grid; the camera rays sample one (at 128^3
     // for the cloud; the shadow scene's camera never sees the particles, so
-    // the coarsest grid measured does).
+    // a 64^3 grid does).
     rows.push_back(Measure(options, particles, true, shadow ? 64 : 128, stage, ground));
     for (int grid : options.Grids)
     {
@@ -561,8 +565,10 @@ int main(int argc, char* argv[])
     PrintTable(rows, shadow);
     const Row& splat = rows.front();
     // The splatted map is the closed form (float rounding); in the shadow
-    // scene the ground receives within 0.02 of the reference (the issue's
-    // bar for surfaces). What --quick checks.
+    // scene the particles are out of view (culled: their maps built by the
+    // receiver pass alone, and still reported) and the ground, partly in
+    // shadow, receives within 0.02 of the reference (the bar for
+    // surfaces). What --quick checks.
     const bool exact = splat.Psnr > 0.0 && splat.Error < 1e-4;
     std::cout << (exact ? "" : "FAILED: the splatted map is not the closed form\n");
     ok = ok && exact;
@@ -571,7 +577,8 @@ int main(int argc, char* argv[])
       PrintVerdict(rows);
       const bool received = ground.Shadowed >= 10 && splat.Received <= 0.02;
       std::cout << (received ? "" : "FAILED: the ground does not receive the splatted shadow\n");
-      ok = ok && received;
+      std::cout << (splat.Culled ? "" : "FAILED: the camera sees the particles\n");
+      ok = ok && received && splat.Culled;
     }
     std::cout << "\n";
   }

@@ -14,6 +14,8 @@
 // 5. A second cloud: the ground receives both clouds' shadows (the first
 //    cloud's maps hold the second: SceneShadows), within 0.02 of the CPU
 //    reference, whose light crosses both.
+// 6. A caster out of view: only the pass builds its maps, and its mapper
+//    still reports them (none after a failed build).
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
@@ -256,6 +258,48 @@ int TestVolumeShadowReceiver(int, char*[])
   scene.Second = nullptr;
   scene.Renderer->RemoveAllLights();
   scene.Renderer->AddLight(spot);
+
+  // 6. A caster out of view (a fresh volume, the camera looking straight
+  // down from below the cloud's bounding sphere): the renderer culls it, only
+  // the pass builds its maps, and the mapper still reports its lights and
+  // maps; a build that fails (an empty input) reports none.
+  {
+    vtkNew<vtkTransmittanceVolumeMapper> mapper;
+    mapper->SetInputData(tyndall_test::MakeCloud(48));
+    mapper->JitterOff();
+    vtkNew<vtkVolume> away;
+    away->SetMapper(mapper);
+    away->SetProperty(scene.Property);
+    scene.Volume->SetVisibility(false);
+    scene.Renderer->AddVolume(away);
+    vtkCamera* camera = scene.Renderer->GetActiveCamera();
+    double position[3], focal[3], up[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focal);
+    camera->GetViewUp(up);
+    camera->SetPosition(-1.2, -2.0, -0.8);
+    camera->SetFocalPoint(-1.2, kGround, -0.8);
+    camera->SetViewUp(0.0, 0.0, -1.0);
+    scene.Window->Render();
+    vtkNew<vtkImageData> map;
+    Check(scene.Shadows->GetLastCaster() == away.Get() && mapper->GetLastRayCastPassCount() == 0,
+      "out of view: the pass's caster, never ray cast");
+    Check(mapper->GetNumberOfRenderedLights() == 1 && mapper->GetTransmittanceMap(0, map) &&
+        map->GetDimensions()[0] == mapper->GetTransmittanceMapSize(),
+      "out of view: the maps the pass built are reported");
+    vtkNew<vtkImageData> empty;
+    mapper->SetInputData(empty);
+    vtkNew<vtkTest::ErrorObserver> refused;
+    mapper->AddObserver(vtkCommand::ErrorEvent, refused);
+    scene.Window->Render();
+    Check(refused->GetError() && mapper->GetNumberOfRenderedLights() == 0,
+      "out of view, an empty input: an error, and no lights reported");
+    scene.Renderer->RemoveVolume(away);
+    scene.Volume->SetVisibility(true);
+    camera->SetPosition(position);
+    camera->SetFocalPoint(focal);
+    camera->SetViewUp(up);
+  }
 
   // 4. Without the pass the ground has no shadow; Install() refuses
   // another kind of pass.
