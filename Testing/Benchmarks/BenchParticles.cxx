@@ -36,18 +36,14 @@
 // --pictures: writes the shadow scene's pictures, each way's and the
 // reference's, as DIR/particle-shadow-<way>.png (the reference, and the
 // picture PSNR, then at every pixel).
-#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSingleScatteringReference.h"
@@ -90,9 +86,9 @@ enum class Scene
   Shadow
 };
 
-// The shadow scene's ground: a 6 x 6 square at y = kGround, facing up.
-constexpr double kGround = -3.4; // the particles end above y = -0.85
-constexpr double kGroundLow = -3.0, kGroundHigh = 3.0;
+// The shadow scene's ground: a 6 x 6 square at y = -3.4, facing up (the
+// particles end above y = -0.85).
+const tyndall_test::Ground kGround{ -3.4, -3.0, 3.0 };
 
 struct Row
 {
@@ -130,19 +126,7 @@ struct GroundReference
 // a camera under the particles looking down at it.
 void AddGround(vtkRenderer* renderer)
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(kGroundLow, kGround, kGroundLow);
-  plane->SetPoint1(kGroundLow, kGround, kGroundHigh);
-  plane->SetPoint2(kGroundHigh, kGround, kGroundLow);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> ground;
-  ground->SetMapper(mapper);
-  ground->GetProperty()->SetColor(1.0, 1.0, 1.0);
-  ground->GetProperty()->SetAmbient(0.0);
-  ground->GetProperty()->SetDiffuse(1.0);
-  ground->GetProperty()->SetSpecular(0.0);
-  renderer->AddActor(ground);
+  renderer->AddActor(kGround.MakeActor());
   renderer->SetBackground(0.1, 0.1, 0.1);
   vtkNew<vtkVolumeShadowReceiverPass> shadows;
   shadows->Install(renderer);
@@ -150,16 +134,10 @@ void AddGround(vtkRenderer* renderer)
   // Nearly straight down at the shadow of the ball's centre, from low
   // enough that the renderer culls the particles (what --quick checks).
   camera->SetPosition(-1.4, -1.3, -0.4);
-  camera->SetFocalPoint(-1.7, kGround, -1.0);
+  camera->SetFocalPoint(-1.7, kGround.Height, -1.0);
   camera->SetViewUp(0.0, 0.0, -1.0);
   camera->SetViewAngle(60.0);
   camera->SetClippingRange(0.02, 20.0);
-}
-
-bool OnGround(vtkRenderer* renderer, int size, int i, int j, double x[3])
-{
-  return tyndall_test::PixelOnPlaneY(renderer, size, i, j, kGround, x) && x[0] > kGroundLow &&
-    x[0] < kGroundHigh && x[2] > kGroundLow && x[2] < kGroundHigh;
 }
 
 // The CPU reference's transmittance at every 2nd pixel of the lit ground
@@ -180,7 +158,8 @@ void ComputeGroundReference(const Options& options, vtkRenderer* renderer, vtkVo
     {
       double x[3], T[3], U[3];
       const vtkIdType pixel = static_cast<vtkIdType>(j) * options.Size + i;
-      if (!OnGround(renderer, options.Size, i, j, x) || b->GetComponent(pixel, 0) < 100.0 ||
+      if (!kGround.PixelPoint(renderer, options.Size, i, j, x) ||
+        b->GetComponent(pixel, 0) < 100.0 ||
         !reference->ComputeLightTransmittance(renderer, volume, 0, x, T))
       {
         continue;

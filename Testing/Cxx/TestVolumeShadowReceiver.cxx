@@ -26,10 +26,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSingleScatteringReference.h"
@@ -60,7 +57,8 @@ struct Scene
   vtkNew<vtkTransmittanceVolumeMapper> Mapper;
   vtkSmartPointer<vtkParticipatingMediumProperty> Property = tyndall_test::MakeCloudProperty(0.8);
   vtkNew<vtkVolume> Volume;
-  vtkNew<vtkActor> Ground;
+  const tyndall_test::Ground Floor{ kGround, -6.0, 4.0 };
+  vtkSmartPointer<vtkActor> Ground = Floor.MakeActor();
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkVolumeShadowReceiverPass> Shadows;
@@ -73,19 +71,6 @@ struct Scene
     this->Mapper->SetTransmittanceMapSize(256);
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(this->Property);
-    // The ground faces up (+y).
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-6.0, kGround, -6.0);
-    plane->SetPoint1(-6.0, kGround, 4.0);
-    plane->SetPoint2(4.0, kGround, -6.0);
-    vtkNew<vtkPolyDataMapper> groundMapper;
-    groundMapper->SetInputConnection(plane->GetOutputPort());
-    this->Ground->SetMapper(groundMapper);
-    vtkProperty* p = this->Ground->GetProperty();
-    p->SetColor(1.0, 1.0, 1.0);
-    p->SetAmbient(0.0);
-    p->SetDiffuse(1.0);
-    p->SetSpecular(0.0);
     this->Renderer->AddActor(this->Ground);
     this->Renderer->AddVolume(this->Volume);
     this->Renderer->SetBackground(0.1, 0.1, 0.1);
@@ -141,13 +126,6 @@ struct Scene
     return picture;
   }
 
-  /// The ground point under pixel (i, j), false when the pixel's ray misses it.
-  bool GroundPoint(int i, int j, double x[3])
-  {
-    return tyndall_test::PixelOnPlaneY(this->Renderer, kSize, i, j, kGround, x) && x[0] > -6.0 &&
-      x[0] < 4.0 && x[2] > -6.0 && x[2] < 4.0;
-  }
-
   /**
    * Compares the received fraction with the CPU reference's transmittance
    * at every 6th pixel of the lit ground; returns the largest difference
@@ -169,8 +147,8 @@ struct Scene
       {
         double x[3];
         const vtkIdType pixel = static_cast<vtkIdType>(j) * kSize + i;
-        if (!this->GroundPoint(i, j, x) || b->GetComponent(pixel, 0) < 100.0 ||
-          b->GetComponent(pixel, 2) < 100.0)
+        if (!this->Floor.PixelPoint(this->Renderer, kSize, i, j, x) ||
+          b->GetComponent(pixel, 0) < 100.0 || b->GetComponent(pixel, 2) < 100.0)
         {
           continue;
         }

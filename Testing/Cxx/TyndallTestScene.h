@@ -3,6 +3,7 @@
 #ifndef TyndallTestScene_h
 #define TyndallTestScene_h
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
@@ -13,6 +14,9 @@
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
@@ -126,37 +130,65 @@ inline void SetTestCamera(vtkRenderer* renderer, double viewAngle = 30.0)
   renderer->ResetCameraClippingRange();
 }
 
-// The point x where pixel (i, j) of a size x size picture of `renderer`
-// sees the horizontal plane y = height: false where the pixel's ray, between
-// the near and far planes, goes up or misses it.
-inline bool PixelOnPlaneY(vtkRenderer* renderer, int size, int i, int j, double height, double x[3])
+// A white, purely diffuse ground facing up (+y) that receives a medium's
+// shadow: the square [Low, High]^2 in x and z at y = Height.
+struct Ground
 {
-  vtkCamera* camera = renderer->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> inverse;
-  vtkMatrix4x4::Invert(camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0), inverse);
-  double ends[2][4];
-  for (int e = 0; e < 2; ++e)
+  double Height;
+  double Low;
+  double High;
+
+  vtkSmartPointer<vtkActor> MakeActor() const
   {
-    const double ndc[4] = { 2.0 * (i + 0.5) / size - 1.0, 2.0 * (j + 0.5) / size - 1.0,
-      e == 0 ? -1.0 : 1.0, 1.0 };
-    inverse->MultiplyPoint(ndc, ends[e]);
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(this->Low, this->Height, this->Low);
+    plane->SetPoint1(this->Low, this->Height, this->High);
+    plane->SetPoint2(this->High, this->Height, this->Low);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(plane->GetOutputPort());
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    vtkProperty* p = actor->GetProperty();
+    p->SetColor(1.0, 1.0, 1.0);
+    p->SetAmbient(0.0);
+    p->SetDiffuse(1.0);
+    p->SetSpecular(0.0);
+    return actor;
+  }
+
+  // The ground point x that pixel (i, j) of a size x size picture of
+  // `renderer` sees: false where the pixel's ray, between the near and far
+  // planes, goes up or misses the ground.
+  bool PixelPoint(vtkRenderer* renderer, int size, int i, int j, double x[3]) const
+  {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0), inverse);
+    double ends[2][4];
+    for (int e = 0; e < 2; ++e)
+    {
+      const double ndc[4] = { 2.0 * (i + 0.5) / size - 1.0, 2.0 * (j + 0.5) / size - 1.0,
+        e == 0 ? -1.0 : 1.0, 1.0 };
+      inverse->MultiplyPoint(ndc, ends[e]);
+      for (int c = 0; c < 3; ++c)
+      {
+        ends[e][c] /= ends[e][3];
+      }
+    }
+    const double dy = ends[1][1] - ends[0][1];
+    if (!(dy < 0.0))
+    {
+      return false;
+    }
+    const double t = (this->Height - ends[0][1]) / dy;
     for (int c = 0; c < 3; ++c)
     {
-      ends[e][c] /= ends[e][3];
+      x[c] = ends[0][c] + t * (ends[1][c] - ends[0][c]);
     }
+    return t > 0.0 && t < 1.0 && x[0] > this->Low && x[0] < this->High && x[2] > this->Low &&
+      x[2] < this->High;
   }
-  const double dy = ends[1][1] - ends[0][1];
-  if (!(dy < 0.0))
-  {
-    return false;
-  }
-  const double t = (height - ends[0][1]) / dy;
-  for (int c = 0; c < 3; ++c)
-  {
-    x[c] = ends[0][c] + t * (ends[1][c] - ends[0][c]);
-  }
-  return t > 0.0 && t < 1.0;
-}
+};
 }
 
 #endif
