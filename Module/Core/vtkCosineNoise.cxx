@@ -1,4 +1,5 @@
 #include "vtkCosineNoise.h"
+#include "vtkCosineNoiseMoments.h"
 
 #include "vtkDataArray.h"
 #include "vtkMath.h"
@@ -398,43 +399,8 @@ double vtkCosineNoise::ComputeIntegral(
 void vtkCosineNoise::PolynomialWaveMoments(
   const double e[4], double theta, double cosTheta, double sinTheta, double& re, double& im)
 {
-  re = im = 0.0;
-  if (std::abs(theta) < 0.5)
-  {
-    // K_n = sum_m (i theta)^m / (m! (n + m + 1)), in Horner's form over m:
-    // acc = g_m + (i theta / (m + 1)) acc, g_m = sum_n e_n / (n + m + 1).
-    // |theta| < 0.5: 15 terms leave less than 0.5^16 / 16! (1e-18).
-    static const double inverse[20] = { 1.0, 1.0 / 1, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6,
-      1.0 / 7, 1.0 / 8, 1.0 / 9, 1.0 / 10, 1.0 / 11, 1.0 / 12, 1.0 / 13, 1.0 / 14, 1.0 / 15,
-      1.0 / 16, 1.0 / 17, 1.0 / 18, 1.0 / 19 };
-    for (int m = 15; m >= 0; --m)
-    {
-      const double g = e[0] * inverse[m + 1] + e[1] * inverse[m + 2] + e[2] * inverse[m + 3] +
-        e[3] * inverse[m + 4];
-      const double f = theta * inverse[m + 1];
-      const double nextRe = g - f * im;
-      im = f * re;
-      re = nextRe;
-    }
-    return;
-  }
-  // K_0 = (E - 1) / (i theta), K_n = (E - n K_{n-1}) / (i theta); dividing
-  // by i theta maps (x, y) to (y, -x) / theta. The error grows at most
-  // 3! / |theta|^3 = 48 fold.
-  const double inv = 1.0 / theta;
-  double kRe = sinTheta * inv;
-  double kIm = (1.0 - cosTheta) * inv;
-  re = e[0] * kRe;
-  im = e[0] * kIm;
-  for (int n = 1; n < 4; ++n)
-  {
-    const double xRe = cosTheta - n * kRe;
-    const double xIm = sinTheta - n * kIm;
-    kRe = xIm * inv;
-    kIm = -xRe * inv;
-    re += e[n] * kRe;
-    im += e[n] * kIm;
-  }
+  vtkCosineNoiseMoments::Compute(
+    e, theta, theta != 0.0 ? 1.0 / theta : 0.0, cosTheta, sinTheta, re, im);
 }
 
 //------------------------------------------------------------------------------

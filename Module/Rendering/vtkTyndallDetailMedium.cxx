@@ -1,6 +1,7 @@
 #include "vtkTyndallDetailMedium.h"
 
 #include "vtkCosineNoise.h"
+#include "vtkCosineNoiseMoments.h"
 #include "vtkDataArray.h"
 #include "vtkObject.h"
 #include "vtkTyndallGridMedium.h"
@@ -37,6 +38,12 @@ void AddScaled(double acc[4], const double p[4], double f)
 double Evaluate(const double c[4], double s)
 {
   return c[0] + s * (c[1] + s * (c[2] + s * c[3]));
+}
+
+// The integral of the cubic from 0 to s, over s.
+double Integral(const double c[4], double s)
+{
+  return c[0] + s * (c[1] / 2.0 + s * (c[2] / 3.0 + s * c[3] / 4.0));
 }
 }
 
@@ -88,6 +95,7 @@ bool vtkTyndallDetailMedium::Update(
   this->Offset = noise->GetOffset();
   this->Scale = noise->GetExtinctionScale();
   this->NoiseMaximum = this->Offset + amplitudes;
+  this->AmplitudeSum = amplitudes;
   this->NoiseTime = noise->GetMTime();
   if (shapeStale)
   {
@@ -348,6 +356,18 @@ void vtkTyndallDetailMedium::WalkCells(
 class vtkTyndallDetailMedium::RayWaves
 {
 public:
+  // Adds this ray's passes over the waves to `work` (if any).
+  void AddWork(Work* work) const
+  {
+    if (work)
+    {
+      work->TrigonometricPasses += this->Passes.TrigonometricPasses;
+      work->CellPasses += this->Passes.CellPasses;
+      work->BoundPasses += this->Passes.BoundPasses;
+      work->BoundSolves += this->Passes.BoundSolves;
+    }
+  }
+
   RayWaves(
     const vtkTyndallDetailMedium& medium, const double d[3], const PointPhases* start = nullptr)
     : Medium(medium)
@@ -359,12 +379,15 @@ public:
     , SinStep(medium.Waves.size())
     , StartCos(medium.Waves.size())
     , StartSin(medium.Waves.size())
+    , InverseBeta(medium.Waves.size())
   {
     std::copy(d, d + 3, this->D);
     for (size_t i = 0; i < this->Beta.size(); ++i)
     {
       const double* k = medium.Waves[i].K;
       this->Beta[i] = k[0] * d[0] + k[1] * d[1] + k[2] * d[2];
+      this->InverseBeta[i] =
+        this->Beta[i] != 0.0 ? 1.0 / this->Beta[i] : std::numeric_limits<double>::infinity();
     }
   }
 
@@ -390,22 +413,14 @@ public:
     }
     const std::vector<Wave>& waves = this->Medium.Waves;
     const size_t count = waves.size();
-    if (!this->Valid && !this->TakeStart(pa))
-    {
-      for (size_t i = 0; i < count; ++i)
-      {
-        const Wave& w = waves[i];
-        const double alpha = w.K[0] * pa[0] + w.K[1] * pa[1] + w.K[2] * pa[2] + w.Phase;
-        this->Cos[i] = std::cos(alpha);
-        this->Sin[i] = std::sin(alpha);
-      }
-    }
-    this->Valid = true;
+    this->PhasesAt(pa);
+    const double inverseLength = 1.0 / length;
     const int axis = this->SequenceAxis(seg);
     const double* stepCos = axis >= 0 ? this->AxisStepCos[axis].data() : nullptr;
     const double* stepSin = axis >= 0 ? this->AxisStepSin[axis].data() : nullptr;
     const double* lastCos = axis >= 0 ? this->AxisCos[axis].data() : nullptr;
     const double* lastSin = axis >= 0 ? this->AxisSin[axis].data() : nullptr;
+    (axis >= 0 ? this->Passes.CellPasses : this->Passes.TrigonometricPasses) += 1.0;
     const double e[4] = { c[0], c[1] * length, c[2] * length * length,
       c[3] * length * length * length };
     double sum = this->Medium.Offset * (e[0] + e[1] / 2.0 + e[2] / 3.0 + e[3] / 4.0);
@@ -429,7 +444,8 @@ public:
         endSin = sa * cosT + ca * sinT;
       }
       double re, im;
-      vtkCosineNoise::PolynomialWaveMoments(e, theta, cosT, sinT, re, im);
+      vtkCosineNoiseMoments::Compute(
+        e, theta, this->InverseBeta[i] * inverseLength, cosT, sinT, re, im);
       sum += waves[i].Amplitude * (ca * re - sa * im);
       this->Cos[i] = endCos;
       this->Sin[i] = endSin;
@@ -449,8 +465,7 @@ public:
   double Solve(const double pa[3], const double c[4], double length, double goal, double whole,
     PointPhases* collision)
   {
-    const std::vector<Wave>& waves = this->Medium.Waves;
-    const size_t count = waves.size();
+    const size_t count = this->Beta.size();
     for (size_t i = 0; i < count; ++i)
     {
       // Back from the cell's end to its start: times e^{-i theta}.
@@ -458,9 +473,92 @@ public:
       this->StartCos[i] = ce * this->CosStep[i] + se * this->SinStep[i];
       this->StartSin[i] = se * this->CosStep[i] - ce * this->SinStep[i];
     }
+    const double guess = whole > 0.0 ? length * std::min(1.0, goal / whole) : 0.5 * length;
+    return this->SolveFromStart(pa, c, length, goal, guess, collision);
+  }
+
+  // Whether the cell `seg` (from pa) surely holds the point where its
+  // integral reaches `goal` > 0, by a bound that needs no trigonometry
+  // beyond the phases at the cell's start (which the cell needs anyway); if
+  // so, SolveInCell() finds it without the cell's whole integral. With
+  // P >= 0 on the cell (a trilinear interpolant of extinctions), Q its
+  // integral and V >= int |P'|, one integration by parts gives per wave
+  //   a int_0^L P cos(alpha + beta s) ds
+  //     = (a / beta) (P(L) sin(alpha + beta L) - P(0) sin alpha - int P' sin)
+  //     >= -|a / beta| (P(L) + V) - (a / beta) P(0) sin alpha,
+  // and it is at least -|a| Q; the integral is at least offset Q plus the
+  // larger of the two per wave.
+  bool Holds(const Segment& seg, const double pa[3], double goal)
+  {
+    const double* c = seg.C;
+    const double length = seg.Tb - seg.Ta;
+    const double q = length * Integral(c, length);
+    const double offset = this->Medium.Offset;
+    if (!(q > 0.0) || offset <= 0.0 || (offset + this->Medium.AmplitudeSum) * q < goal)
+    {
+      return false; // not even the largest integral the noise allows reaches it
+    }
+    this->PhasesAt(pa);
+    this->Passes.BoundPasses += 1.0;
+    const double variation =
+      length * (std::abs(c[1]) + length * (std::abs(c[2]) + length * std::abs(c[3])));
+    const double end = std::abs(Evaluate(c, length)) + variation;
+    const std::vector<Wave>& waves = this->Medium.Waves;
+    double bound = offset * q;
+    for (size_t i = 0; i < waves.size(); ++i)
+    {
+      const double a = waves[i].Amplitude;
+      const double r = a * this->InverseBeta[i];
+      const double parts = std::abs(r) * end + r * c[0] * this->Sin[i];
+      bound -= std::isfinite(parts) ? std::min(std::abs(a) * q, parts) : std::abs(a) * q;
+    }
+    if (bound < goal)
+    {
+      return false;
+    }
+    std::copy(this->Cos.begin(), this->Cos.end(), this->StartCos.begin());
+    std::copy(this->Sin.begin(), this->Sin.end(), this->StartSin.begin());
+    this->Passes.BoundSolves += 1.0;
+    return true;
+  }
+
+  // After Holds(): the s in [0, length] at which the cell's integral
+  // reaches goal, from the guess of a homogeneous medium of the noise's
+  // offset (offset int_0^s P = goal).
+  double SolveInCell(
+    const double pa[3], const double c[4], double length, double goal, PointPhases* collision)
+  {
+    const double offset = this->Medium.Offset;
+    double s = length;
+    for (int iteration = 0; iteration < 8; ++iteration)
+    {
+      const double q = s * Integral(c, s);
+      const double p = Evaluate(c, s);
+      if (!(p > 0.0))
+      {
+        break;
+      }
+      const double next = std::min(length, std::max(0.0, s - (q - goal / offset) / p));
+      const bool converged = std::abs(next - s) <= 1e-3 * length;
+      s = next;
+      if (converged)
+      {
+        break;
+      }
+    }
+    return this->SolveFromStart(pa, c, length, goal, s, collision);
+  }
+
+  // The solve from the phases at the cell's start (StartCos, StartSin) and
+  // a first guess.
+  double SolveFromStart(const double pa[3], const double c[4], double length, double goal,
+    double guess, PointPhases* collision)
+  {
+    const std::vector<Wave>& waves = this->Medium.Waves;
+    const size_t count = waves.size();
     const double offset = this->Medium.Offset;
     double lo = 0.0, hi = length;
-    double s = whole > 0.0 ? length * std::min(1.0, goal / whole) : 0.5 * length;
+    double s = guess > 0.0 && guess < length ? guess : 0.5 * length;
     double evaluated = -1.0; // where the phases of `collision` are
     if (collision)
     {
@@ -471,6 +569,8 @@ public:
     for (int iteration = 0; iteration < 100; ++iteration)
     {
       const double e[4] = { c[0], c[1] * s, c[2] * s * s, c[3] * s * s * s };
+      const double inverseS = 1.0 / s;
+      this->Passes.TrigonometricPasses += 1.0;
       double integral = offset * (e[0] + e[1] / 2.0 + e[2] / 3.0 + e[3] / 4.0);
       double phi = offset, slope = 0.0;
       for (size_t i = 0; i < count; ++i)
@@ -479,7 +579,8 @@ public:
         const double cosT = std::cos(theta);
         const double sinT = std::sin(theta);
         double re, im;
-        vtkCosineNoise::PolynomialWaveMoments(e, theta, cosT, sinT, re, im);
+        vtkCosineNoiseMoments::Compute(
+          e, theta, this->InverseBeta[i] * inverseS, cosT, sinT, re, im);
         const double ca = this->StartCos[i], sa = this->StartSin[i];
         const double a = waves[i].Amplitude;
         const double cs = ca * cosT - sa * sinT, ss = sa * cosT + ca * sinT; // e^{i alpha(s)}
@@ -529,6 +630,29 @@ public:
   }
 
 private:
+  // Makes Cos, Sin the phases at pa, the start of the next cell, unless
+  // they are carried there: from the ray's start phases, or a sincos per wave.
+  void PhasesAt(const double pa[3])
+  {
+    if (this->Valid)
+    {
+      return;
+    }
+    if (!this->TakeStart(pa))
+    {
+      this->Passes.TrigonometricPasses += 1.0;
+      const std::vector<Wave>& waves = this->Medium.Waves;
+      for (size_t i = 0; i < waves.size(); ++i)
+      {
+        const Wave& w = waves[i];
+        const double alpha = w.K[0] * pa[0] + w.K[1] * pa[1] + w.K[2] * pa[2] + w.Phase;
+        this->Cos[i] = std::cos(alpha);
+        this->Sin[i] = std::sin(alpha);
+      }
+    }
+    this->Valid = true;
+  }
+
   // Uses the start phases (once, for the ray's first cell) when they are at
   // pa but for rounding: turned by k . (pa - point), each below 1e-4 rad,
   // whose sine and cosine to fifth order are exact to rounding.
@@ -590,6 +714,7 @@ private:
       if (this->AxisStepCos[a].empty())
       {
         const size_t count = this->Beta.size();
+        this->Passes.TrigonometricPasses += 1.0;
         this->AxisStepCos[a].resize(count);
         this->AxisStepSin[a].resize(count);
         for (size_t i = 0; i < count; ++i)
@@ -635,12 +760,14 @@ private:
   std::vector<double> SinStep;
   std::vector<double> StartCos; // the phases at the solved cell's start
   std::vector<double> StartSin;
-  bool Valid = false;
+  std::vector<double> InverseBeta; // 1 / beta (infinite for beta = 0)
+  Work Passes;
+  bool Valid = false; // whether Cos, Sin are the phases at the next cell's start
 };
 
 //------------------------------------------------------------------------------
-double vtkTyndallDetailMedium::OpticalDepth(
-  const double o[3], const double d[3], double t0, double t1, const PointPhases* start) const
+double vtkTyndallDetailMedium::OpticalDepth(const double o[3], const double d[3], double t0,
+  double t1, const PointPhases* start, Work* work) const
 {
   double tau = 0.0;
   RayWaves phases(*this, d, start);
@@ -650,12 +777,14 @@ double vtkTyndallDetailMedium::OpticalDepth(
       tau += std::max(0.0, phases.Integrate(s, pa));
       return true;
     });
+  phases.AddWork(work);
   return this->Scale * tau;
 }
 
 //------------------------------------------------------------------------------
 bool vtkTyndallDetailMedium::SampleDistance(const double o[3], const double d[3], double t0,
-  double t1, double target, double& t, const PointPhases* start, PointPhases* collision) const
+  double t1, double target, double& t, const PointPhases* start, PointPhases* collision,
+  Work* work) const
 {
   if (collision && collision != start)
   {
@@ -679,6 +808,12 @@ bool vtkTyndallDetailMedium::SampleDistance(const double o[3], const double d[3]
     [&](const Segment& s, const double pa[3])
     {
       const double length = s.Tb - s.Ta;
+      if (phases.Holds(s, pa, goal - accumulated))
+      {
+        t = s.Ta + phases.SolveInCell(pa, s.C, length, goal - accumulated, collision);
+        found = true;
+        return false;
+      }
       const double cell = std::max(0.0, phases.Integrate(s, pa));
       if (accumulated + cell < goal)
       {
@@ -689,6 +824,7 @@ bool vtkTyndallDetailMedium::SampleDistance(const double o[3], const double d[3]
       found = true;
       return false;
     });
+  phases.AddWork(work);
   return found;
 }
 

@@ -45,7 +45,11 @@
  * SampleDistance() inverts the closed form (the paper's Algorithm 2): it
  * walks the cells until the cumulative depth passes the target, then solves
  * within that cell by safeguarded Halley iteration (one sincos per wave
- * and step gives the integral, the noise and its derivative).
+ * and step gives the integral, the noise and its derivative). A lower
+ * bound of a cell's integral that needs no trigonometry (one integration by
+ * parts per wave from the phases at the cell's start) lets it solve in a
+ * cell that surely holds the target without that cell's whole integral.
+ * The moments of a cell's cubic times a wave are vtkCosineNoiseMoments.
  *
  * Coordinates: p is in field index coordinates (vtkTyndallGridMedium), and
  * t is a world distance when d is the field index image of a unit world
@@ -153,12 +157,30 @@ public:
   };
 
   /**
+   * The work of the closed forms, in passes over all the waves: a
+   * trigonometric pass takes a sine and cosine per wave (where a ray
+   * enters the medium, a cell whose phases are not carried, each step of
+   * a solve); a cell pass only products and the polynomial moments (a cell
+   * whose end phases come from an axis's sequence); a bound pass only the
+   * bound that lets a flight solve in a cell without its whole integral
+   * (BoundSolves: the flights it did that for). Added to by OpticalDepth()
+   * and SampleDistance() when given.
+   */
+  struct Work
+  {
+    double TrigonometricPasses = 0.0;
+    double CellPasses = 0.0;
+    double BoundPasses = 0.0;
+    double BoundSolves = 0.0;
+  };
+
+  /**
    * The optical depth along p(t) = o + t d for t in [t0, t1], in closed form
    * (see the class description; each cell's integral clamped at 0). The
    * segment is clipped to the box [boxLow, boxHigh] of the grid medium.
    */
   double OpticalDepth(const double o[3], const double d[3], double t0, double t1,
-    const PointPhases* start = nullptr) const;
+    const PointPhases* start = nullptr, Work* work = nullptr) const;
 
   /**
    * Distance sampling: the t in [t0, t1] at which OpticalDepth(o, d, t0, t)
@@ -170,7 +192,8 @@ public:
    * for a target of 0; its Point says where they are, Valid whether any).
    */
   bool SampleDistance(const double o[3], const double d[3], double t0, double t1, double target,
-    double& t, const PointPhases* start = nullptr, PointPhases* collision = nullptr) const;
+    double& t, const PointPhases* start = nullptr, PointPhases* collision = nullptr,
+    Work* work = nullptr) const;
 
   /**
    * The extinction coefficients (ETM's DCT, vtkTransmittanceMapMath) of
@@ -216,6 +239,7 @@ private:
   double Offset = 0.0;
   double Scale = 1.0;
   double NoiseMaximum = 0.0;
+  double AmplitudeSum = 0.0; // sum of |a|
   std::vector<float> ShapeValues;
   int Dimensions[3] = { 2, 2, 2 };
   double BoxLow[3] = { 0.0, 0.0, 0.0 };

@@ -90,6 +90,33 @@ struct Timing
 {
   double Tracking = 0.0;
   double Total = 0.0;
+  double FlightTime = 0.0; // the share of Tracking in free flights
+
+  // Work (see the class description): counts, and the passes over the
+  // waves of the flights and of the shadow rays.
+  double Flights = 0.0;
+  double ShadowRays = 0.0;
+  vtkTyndallDetailMedium::Work FlightWork;
+  vtkTyndallDetailMedium::Work ShadowWork;
+
+  void Add(const Timing& other)
+  {
+    this->Tracking += other.Tracking;
+    this->Total += other.Total;
+    this->FlightTime += other.FlightTime;
+    this->Flights += other.Flights;
+    this->ShadowRays += other.ShadowRays;
+    Add(this->FlightWork, other.FlightWork);
+    Add(this->ShadowWork, other.ShadowWork);
+  }
+
+  static void Add(vtkTyndallDetailMedium::Work& to, const vtkTyndallDetailMedium::Work& from)
+  {
+    to.TrigonometricPasses += from.TrigonometricPasses;
+    to.CellPasses += from.CellPasses;
+    to.BoundPasses += from.BoundPasses;
+    to.BoundSolves += from.BoundSolves;
+  }
 };
 
 // Everything the rendering loop reads.
@@ -141,9 +168,7 @@ public:
     {
       for (int i = 0; i < this->S->Width; ++i)
       {
-        const auto start = Clock::now();
         this->RenderPixel(i, static_cast<int>(j), timing);
-        timing.Total += Seconds(start, Clock::now());
       }
     }
   }
@@ -153,8 +178,9 @@ private:
   vtkTyndallGridMedium::Sampler<T> Field;
   vtkSMPThreadLocal<Timing>* Times;
 
-  // sigma_t at a field index point inside the box.
-  double Sigma(const double p[3]) const
+  // sigma_t at a field index point inside the box; `passes` counts the
+  // detail noise's evaluations.
+  double Sigma(const double p[3], double& passes) const
   {
     if (!this->S->Inside(p))
     {
@@ -162,7 +188,15 @@ private:
     }
     if (this->S->Detail)
     {
-      return this->S->Detail->Extinction(p);
+      // vtkTyndallDetailMedium::Extinction(), counting the noise's
+      // evaluations (none where the shape is empty).
+      const double shape = this->S->Detail->Shape(p);
+      if (!(shape > 0.0))
+      {
+        return 0.0;
+      }
+      passes += 1.0;
+      return shape * this->S->Detail->GetScale() * std::max(0.0, this->S->Detail->Noise(p));
     }
     const double v = this->Field.ReferenceScalar(p);
     if (std::isnan(v))
@@ -211,17 +245,20 @@ private:
     if (this->S->ClosedForm)
     {
       hit = this->S->Detail->SampleDistance(
-        ray.O, ray.D, ray.T0, ray.T1, rng.Exponential(), t, &phases, &phases);
+        ray.O, ray.D, ray.T0, ray.T1, rng.Exponential(), t, &phases, &phases, &timing.FlightWork);
     }
     else
     {
-      hit = this->DeltaTrack(ray, rng, t);
+      hit = this->DeltaTrack(ray, rng, t, timing.FlightWork.TrigonometricPasses);
     }
-    timing.Tracking += Seconds(start, Clock::now());
+    const double seconds = Seconds(start, Clock::now());
+    timing.Tracking += seconds;
+    timing.FlightTime += seconds;
+    timing.Flights += 1.0;
     return hit;
   }
 
-  bool DeltaTrack(const Ray& ray, Random& rng, double& t) const
+  bool DeltaTrack(const Ray& ray, Random& rng, double& t, double& passes) const
   {
     const double majorant = this->S->Majorant;
     if (!(majorant > 0.0))
@@ -238,7 +275,7 @@ private:
       }
       const double p[3] = { ray.O[0] + t * ray.D[0], ray.O[1] + t * ray.D[1],
         ray.O[2] + t * ray.D[2] };
-      if (rng.Uniform() * majorant < this->Sigma(p))
+      if (rng.Uniform() * majorant < this->Sigma(p, passes))
       {
         return true;
       }
@@ -256,14 +293,16 @@ private:
     if (Scene::ClipToBox(p, dl, this->S->BoxLow, this->S->BoxHigh, t0, t1))
     {
       transmittance = this->S->ClosedForm
-        ? std::exp(-this->S->Detail->OpticalDepth(p, dl, t0, t1, &phases))
-        : this->RatioTrack(p, dl, t0, t1, rng);
+        ? std::exp(-this->S->Detail->OpticalDepth(p, dl, t0, t1, &phases, &timing.ShadowWork))
+        : this->RatioTrack(p, dl, t0, t1, rng, timing.ShadowWork.TrigonometricPasses);
     }
     timing.Tracking += Seconds(start, Clock::now());
+    timing.ShadowRays += 1.0;
     return transmittance;
   }
 
-  double RatioTrack(const double p[3], const double d[3], double t, double t1, Random& rng) const
+  double RatioTrack(
+    const double p[3], const double d[3], double t, double t1, Random& rng, double& passes) const
   {
     const double majorant = this->S->Majorant;
     double transmittance = 1.0;
@@ -279,7 +318,7 @@ private:
         return transmittance;
       }
       const double q[3] = { p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2] };
-      transmittance *= std::max(0.0, 1.0 - this->Sigma(q) / majorant);
+      transmittance *= std::max(0.0, 1.0 - this->Sigma(q, passes) / majorant);
       if (transmittance < kRatioRouletteThreshold)
       {
         if (transmittance <= 0.0 || rng.Uniform() < 0.5)
@@ -380,15 +419,13 @@ private:
     }
   }
 
-  // The exact view transmittance of the camera ray (closed form only).
-  double ViewTransmittance(Ray ray, Timing& timing) const
+  // The exact view transmittance of the camera ray (closed form only): an
+  // output, not part of a path, so not timed.
+  double ViewTransmittance(Ray ray) const
   {
-    const auto start = Clock::now();
-    const double tv = ray.Clip(*this->S)
+    return ray.Clip(*this->S)
       ? std::exp(-this->S->Detail->OpticalDepth(ray.O, ray.D, ray.T0, ray.T1))
       : 1.0;
-    timing.Tracking += Seconds(start, Clock::now());
-    return tv;
   }
 
   void RenderPixel(int i, int j, Timing& timing) const
@@ -407,7 +444,9 @@ private:
       for (int n = 0; n < s.Samples; ++n)
       {
         double L[3] = { 0.0, 0.0, 0.0 };
+        const auto start = Clock::now();
         escapes += this->TracePath(camera, rng, timing, phases, L) ? 1 : 0;
+        timing.Total += Seconds(start, Clock::now());
         for (int c = 0; c < 3; ++c)
         {
           sum[c] += L[c];
@@ -424,7 +463,7 @@ private:
       s.StandardError[3 * pixel + c] = std::sqrt(variance / n);
     }
     s.Transmittance[pixel] =
-      (valid && s.ClosedForm) ? this->ViewTransmittance(camera, timing) : escapes / n;
+      (valid && s.ClosedForm) ? this->ViewTransmittance(camera) : escapes / n;
   }
 };
 
@@ -641,11 +680,20 @@ bool vtkVolumetricPathTracer::RenderInternal(
   Timing sum;
   for (const Timing& t : timing)
   {
-    sum.Tracking += t.Tracking;
-    sum.Total += t.Total;
+    sum.Add(t);
   }
   this->LastTrackingTimePerSample = sum.Tracking / this->SamplesPerPixel;
   this->LastTotalTimePerSample = sum.Total / this->SamplesPerPixel;
+  this->LastFlightTimePerSample = sum.FlightTime / this->SamplesPerPixel;
+  const double paths = static_cast<double>(pixels) * this->SamplesPerPixel;
+  const auto per = [](double count, double of) { return of > 0.0 ? count / of : 0.0; };
+  this->LastFlightsPerSample = sum.Flights / paths;
+  this->LastShadowRaysPerSample = sum.ShadowRays / paths;
+  this->LastTrigonometricPassesPerFlight = per(sum.FlightWork.TrigonometricPasses, sum.Flights);
+  this->LastTrigonometricPassesPerShadowRay =
+    per(sum.ShadowWork.TrigonometricPasses, sum.ShadowRays);
+  this->LastCellPassesPerFlight = per(sum.FlightWork.CellPasses, sum.Flights);
+  this->LastCellPassesPerShadowRay = per(sum.ShadowWork.CellPasses, sum.ShadowRays);
   this->LastDistanceSampling = scene.ClosedForm ? CLOSED_FORM : DELTA_TRACKING;
   this->LastMajorant = scene.Majorant;
   scene.SetOutput(this->Output, radiance, transmittance, error);
@@ -692,6 +740,16 @@ void vtkVolumetricPathTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
   os << indent << "LastTrackingTimePerSample: " << this->LastTrackingTimePerSample << "\n";
   os << indent << "LastTotalTimePerSample: " << this->LastTotalTimePerSample << "\n";
+  os << indent << "LastFlightTimePerSample: " << this->LastFlightTimePerSample << "\n";
+  os << indent << "LastFlightsPerSample: " << this->LastFlightsPerSample << "\n";
+  os << indent << "LastShadowRaysPerSample: " << this->LastShadowRaysPerSample << "\n";
+  os << indent << "LastTrigonometricPassesPerFlight: " << this->LastTrigonometricPassesPerFlight
+     << "\n";
+  os << indent
+     << "LastTrigonometricPassesPerShadowRay: " << this->LastTrigonometricPassesPerShadowRay
+     << "\n";
+  os << indent << "LastCellPassesPerFlight: " << this->LastCellPassesPerFlight << "\n";
+  os << indent << "LastCellPassesPerShadowRay: " << this->LastCellPassesPerShadowRay << "\n";
   os << indent << "LastBackground: (" << this->LastBackground[0] << ", " << this->LastBackground[1]
      << ", " << this->LastBackground[2] << ")\n";
 }

@@ -76,6 +76,18 @@
  * thread count) and divided by SamplesPerPixel: the CPU time one sample per
  * pixel costs for the whole image (GetLastTrackingTimePerSample(),
  * GetLastTotalTimePerSample()), the quantities of the paper's Table 1.
+ * The closed form's exact view transmittance (the "Transmittance" output)
+ * is computed outside both: it is an output, not part of a path.
+ *
+ * Work, counted beside the time (it does not depend on the machine): the
+ * free flights and light-transmittance (shadow) rays per sample per pixel,
+ * and per flight and per shadow ray the passes over all the noise's waves.
+ * Delta tracking makes one pass per tentative collision (the extinction at
+ * a point: a cosine per wave); the closed form makes trigonometric passes
+ * (a sine and cosine per wave: where a ray enters the medium, at a cell
+ * whose phases are not carried, at each step of a solve) and cell passes
+ * (products and polynomial moments, no trigonometry), see
+ * vtkTyndallDetailMedium. A grid medium without noise counts no passes.
  *
  * Rows are rendered in parallel with vtkSMPTools in batches; between batches
  * the main thread fires vtkCommand::ProgressEvent and checks AbortExecute,
@@ -221,14 +233,33 @@ public:
    * (per world unit; 0 in closed form), the wall-clock time in seconds, and
    * per sample per pixel (whole image), in seconds of CPU time summed over
    * the threads: the time spent in free-flight sampling and light
-   * transmittance, and the time of whole paths.
+   * transmittance, the part of it spent in free flights (the rest is light
+   * transmittance), and the time of whole paths.
    */
   vtkGetMacro(LastDistanceSampling, int);
   vtkGetMacro(LastMajorant, double);
   vtkGetMacro(LastRenderTime, double);
   vtkGetMacro(LastTrackingTimePerSample, double);
+  vtkGetMacro(LastFlightTimePerSample, double);
   vtkGetMacro(LastTotalTimePerSample, double);
   vtkGetVector3Macro(LastBackground, double);
+  ///@}
+
+  ///@{
+  /**
+   * The work of the last successful render (see the class description):
+   * free flights and shadow rays per sample per pixel (whole image); per
+   * flight and per shadow ray, the passes over the noise's waves that take
+   * trigonometry (delta tracking: its tentative collisions; closed form: its
+   * sine-and-cosine passes) and those that do not (closed form only: cell
+   * passes; 0 in delta tracking).
+   */
+  vtkGetMacro(LastFlightsPerSample, double);
+  vtkGetMacro(LastShadowRaysPerSample, double);
+  vtkGetMacro(LastTrigonometricPassesPerFlight, double);
+  vtkGetMacro(LastTrigonometricPassesPerShadowRay, double);
+  vtkGetMacro(LastCellPassesPerFlight, double);
+  vtkGetMacro(LastCellPassesPerShadowRay, double);
   ///@}
 
   /**
@@ -257,7 +288,14 @@ protected:
   double LastRenderTime = 0.0;
   double LastTrackingTimePerSample = 0.0;
   double LastTotalTimePerSample = 0.0;
+  double LastFlightTimePerSample = 0.0;
   double LastBackground[3] = { 0.0, 0.0, 0.0 };
+  double LastFlightsPerSample = 0.0;
+  double LastShadowRaysPerSample = 0.0;
+  double LastTrigonometricPassesPerFlight = 0.0;
+  double LastTrigonometricPassesPerShadowRay = 0.0;
+  double LastCellPassesPerFlight = 0.0;
+  double LastCellPassesPerShadowRay = 0.0;
 
   vtkImageData* Output = nullptr;
   vtkImageData* CompositeOutput = nullptr;
