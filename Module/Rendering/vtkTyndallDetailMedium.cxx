@@ -191,10 +191,18 @@ double vtkTyndallDetailMedium::Noise(const double p[3]) const
 }
 
 //------------------------------------------------------------------------------
-double vtkTyndallDetailMedium::Extinction(const double p[3]) const
+double vtkTyndallDetailMedium::Extinction(const double p[3], double* evaluations) const
 {
   const double shape = this->Shape(p);
-  return shape > 0.0 ? shape * this->Scale * std::max(0.0, this->Noise(p)) : 0.0;
+  if (!(shape > 0.0))
+  {
+    return 0.0;
+  }
+  if (evaluations)
+  {
+    *evaluations += 1.0;
+  }
+  return shape * this->Scale * std::max(0.0, this->Noise(p));
 }
 
 //------------------------------------------------------------------------------
@@ -361,10 +369,7 @@ public:
   {
     if (work)
     {
-      work->TrigonometricPasses += this->Passes.TrigonometricPasses;
-      work->CellPasses += this->Passes.CellPasses;
-      work->BoundPasses += this->Passes.BoundPasses;
-      work->BoundSolves += this->Passes.BoundSolves;
+      work->Add(this->Passes);
     }
   }
 

@@ -119,10 +119,14 @@ public:
   vtkMTimeType GetTime() const { return this->Time.GetMTime(); }
 
   ///@{
-  /// The shape, the noise and the extinction at a field index point.
+  /**
+   * The shape, the noise and the extinction at a field index point.
+   * Extinction() adds 1 to `evaluations` (if given) when it evaluates the
+   * noise (not where the shape is empty): delta tracking's work.
+   */
   double Shape(const double p[3]) const;
   double Noise(const double p[3]) const;
-  double Extinction(const double p[3]) const;
+  double Extinction(const double p[3], double* evaluations = nullptr) const;
   ///@}
 
   /**
@@ -172,6 +176,14 @@ public:
     double CellPasses = 0.0;
     double BoundPasses = 0.0;
     double BoundSolves = 0.0;
+
+    void Add(const Work& other)
+    {
+      this->TrigonometricPasses += other.TrigonometricPasses;
+      this->CellPasses += other.CellPasses;
+      this->BoundPasses += other.BoundPasses;
+      this->BoundSolves += other.BoundSolves;
+    }
   };
 
   /**

@@ -106,16 +106,8 @@ struct Timing
     this->FlightTime += other.FlightTime;
     this->Flights += other.Flights;
     this->ShadowRays += other.ShadowRays;
-    Add(this->FlightWork, other.FlightWork);
-    Add(this->ShadowWork, other.ShadowWork);
-  }
-
-  static void Add(vtkTyndallDetailMedium::Work& to, const vtkTyndallDetailMedium::Work& from)
-  {
-    to.TrigonometricPasses += from.TrigonometricPasses;
-    to.CellPasses += from.CellPasses;
-    to.BoundPasses += from.BoundPasses;
-    to.BoundSolves += from.BoundSolves;
+    this->FlightWork.Add(other.FlightWork);
+    this->ShadowWork.Add(other.ShadowWork);
   }
 };
 
@@ -188,15 +180,7 @@ private:
     }
     if (this->S->Detail)
     {
-      // vtkTyndallDetailMedium::Extinction(), counting the noise's
-      // evaluations (none where the shape is empty).
-      const double shape = this->S->Detail->Shape(p);
-      if (!(shape > 0.0))
-      {
-        return 0.0;
-      }
-      passes += 1.0;
-      return shape * this->S->Detail->GetScale() * std::max(0.0, this->S->Detail->Noise(p));
+      return this->S->Detail->Extinction(p, &passes);
     }
     const double v = this->Field.ReferenceScalar(p);
     if (std::isnan(v))
