@@ -96,6 +96,7 @@ struct Options
   int Frames = 3;
   int ReferenceSize = 128;
   int LightSamples = 256;
+  int CacheSize = 256; // the mapper's TransmittanceCacheSize (its default)
   struct Volume
   {
     std::string Path;
@@ -148,6 +149,7 @@ Scene MakeScene(const Medium& medium, const Options& options)
   scene.Mapper->SetNumberOfCoefficients(options.Coefficients);
   scene.Mapper->SetTransmittanceMapSize(options.MapSize);
   scene.Mapper->SetLightSampleCount(options.LightSamples);
+  scene.Mapper->SetTransmittanceCacheSize(options.CacheSize);
   scene.Mapper->JitterOff();
   scene.Volume = vtkSmartPointer<vtkVolume>::New();
   scene.Volume->SetMapper(scene.Mapper);
@@ -253,6 +255,8 @@ bool ParseArguments(int argc, char* argv[], Options& o)
       ok = next(o.ReferenceSize);
     else if (arg == "--light-samples")
       ok = next(o.LightSamples);
+    else if (arg == "--cache-size")
+      ok = next(o.CacheSize) && o.CacheSize >= 16 && o.CacheSize <= 1024;
     else if (arg == "--volume")
     {
       o.Volumes.emplace_back();
@@ -282,7 +286,8 @@ bool ParseArguments(int argc, char* argv[], Options& o)
     {
       std::cerr << "usage: BenchTransmittanceMapper [--quick] [--size N] [--resolution N] "
                    "[--coefficients N] [--map-size N] [--frames N] [--reference-size N] "
-                   "[--light-samples N] [--volume FILE [--shift S] [--preset NAME] "
+                   "[--light-samples N] [--cache-size N (16..1024)] "
+                   "[--volume FILE [--shift S] [--preset NAME] "
                    "[--y-up]]... [--export DIR]\n"
                    "(--shift, --preset and --y-up follow the --volume they apply to)\n";
       return false;
@@ -560,7 +565,7 @@ void MeasureInteraction(const Medium& medium, const Options& o)
 }
 
 // The two-cloud scene off screen on the benchmark's display, both mappers
-// with the benchmark's coefficients, map size and light samples.
+// with the benchmark's coefficients, map size, light samples and cache size.
 void SetUpTwoClouds(tyndall_test::TwoClouds& scene, const Options& o)
 {
   TheDisplay->Attach(scene.Window);
@@ -570,6 +575,7 @@ void SetUpTwoClouds(tyndall_test::TwoClouds& scene, const Options& o)
     mapper->SetNumberOfCoefficients(o.Coefficients);
     mapper->SetTransmittanceMapSize(o.MapSize);
     mapper->SetLightSampleCount(o.LightSamples);
+    mapper->SetTransmittanceCacheSize(o.CacheSize);
   }
 }
 
@@ -804,9 +810,10 @@ int main(int argc, char* argv[])
   std::cout << "# vtkTransmittanceVolumeMapper benchmark\n\n"
             << "image " << o.Size << "^2, volume " << o.Resolution << "^3, " << o.Coefficients
             << " coefficients, maps " << o.MapSize << "^2, brute force " << o.LightSamples
-            << " light samples, best of " << o.Frames << " frames; PSNR at " << o.ReferenceSize
-            << "^2 against vtkSingleScatteringReference; " << std::thread::hardware_concurrency()
-            << " CPU threads\n";
+            << " light samples, transmittance cache " << o.CacheSize
+            << " texels on the longest side, best of " << o.Frames << " frames; PSNR at "
+            << o.ReferenceSize << "^2 against vtkSingleScatteringReference; "
+            << std::thread::hardware_concurrency() << " CPU threads\n";
   std::vector<Medium> media(3);
   media[0].Key = "cloud";
   media[0].Name = "Built-in cloud";

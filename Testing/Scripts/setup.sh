@@ -10,7 +10,13 @@
 #
 # Environment: TYNDALL_BUILD_DIR (default: build), TYNDALL_SANITIZER_BUILD_DIR
 # (default: build-asan), TYNDALL_JOBS (default: nproc), TYNDALL_SKIP_SANITIZERS=1
-# (test: skip the sanitizer build, for a quick local run; CI never sets it).
+# (test: skip the sanitizer build, for a quick local run; CI never sets it),
+# TYNDALL_SANITIZE_ALL=1 (test: run every test under the sanitizers, not only
+# the selection of Documentation/testing.md, "Sanitizers").
+#
+# Every mode ends with the time of each stage (packages, builds, suites) and,
+# after a test run, the 20 slowest tests of each suite: the figures of
+# Documentation/testing.md, "What CI costs".
 set -euo pipefail
 
 mode="${1:-render}"
@@ -18,6 +24,46 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build="${TYNDALL_BUILD_DIR:-$root/build}"
 sanitizer_build="${TYNDALL_SANITIZER_BUILD_DIR:-$root/build-asan}"
 jobs="${TYNDALL_JOBS:-$(nproc)}"
+
+# The time of each stage, printed when the script ends (also on failure).
+stage_lines=()
+stage_name=""
+stage_start=0
+suites_run=()
+begin_stage() {
+  stage_name="$1"
+  stage_start=$SECONDS
+  echo "setup: stage '$stage_name'" >&2
+}
+end_stage() {
+  stage_lines+=("$(printf '%7d s  %s' $((SECONDS - stage_start)) "$stage_name")")
+  stage_name=""
+}
+# Runs "$@" as the stage $1 (a failure still ends the script: set -e).
+timed() {
+  begin_stage "$1"
+  shift
+  "$@"
+  end_stage
+}
+print_profile() {
+  local status=$?
+  if [ -n "$stage_name" ]; then
+    stage_lines+=("$(printf '%7d s  %s (failed)' $((SECONDS - stage_start)) "$stage_name")")
+  fi
+  if [ "${#stage_lines[@]}" -gt 0 ]; then
+    echo "setup: time per stage (wall clock, $jobs jobs):" >&2
+    printf '%s\n' "${stage_lines[@]}" >&2
+    printf '%7d s  in all\n' "$SECONDS" >&2
+  fi
+  local dir
+  for dir in "${suites_run[@]}"; do
+    echo "setup: the slowest tests of $dir:" >&2
+    bash "$root/Testing/Scripts/slowest-tests.sh" "$dir" 20 >&2 || true
+  done
+  return "$status"
+}
+trap print_profile EXIT
 
 # Every Debian package Tyndall needs to build, test and render.
 packages=(
@@ -92,64 +138,57 @@ build_sanitized() {
   cmake --build "$sanitizer_build" -j "$jobs" >&2
 }
 
-# Rendering needs an X display: Debian's VTK renders through GLX only.
+# Rendering needs an X display: Debian's VTK renders through GLX only. One
+# server for the whole command, which never resets and picks its display
+# number without a race (with-display.sh says why).
 with_display() {
-  xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+  bash "$root/Testing/Scripts/with-display.sh" "$@"
 }
 
-# Runs the suite of build directory $1 under a virtual display. Xvfb sometimes
-# refuses a client under load ("bad X server connection", a known race of
-# xvfb-run): tests that failed with nothing but that are run once more, named
-# on stderr; any other failure fails the run.
+# Runs the suite of build directory $1 (further arguments go to ctest) under
+# one virtual display. No retries: with one server that never resets there is
+# no "bad X server connection" to retry (Documentation/testing.md, "One X
+# display"); any failure fails the run.
 run_suite() {
   local dir="$1"
-  if (cd "$dir" && with_display ctest --output-on-failure -j "$jobs"); then
-    return 0
+  shift
+  suites_run+=("$dir")
+  (cd "$dir" && with_display ctest --output-on-failure -j "$jobs" "$@")
+}
+
+# What the sanitizer suite runs: every test but those labelled
+# NoSanitizer (rendering tests whose code under test is the GPU's and whose
+# CPU side other tests cover; Documentation/testing.md, "Sanitizers"), or
+# every test with TYNDALL_SANITIZE_ALL=1.
+sanitizer_selection() {
+  if [ "${TYNDALL_SANITIZE_ALL:-0}" = 1 ]; then
+    return
   fi
-  local failed="$dir/Testing/Temporary/LastTestsFailed.log"
-  local log="$dir/Testing/Temporary/LastTest.log"
-  [ -f "$failed" ] && [ -f "$log" ] || return 1
-  local names=() name
-  while IFS=: read -r _ name; do
-    # The test's output in LastTest.log, from its header to the next one.
-    if ! awk -v t="$name" '$0 ~ "^[0-9]+/[0-9]+ Testing: "t"$" {on=1; next}
-        on && /^[0-9]+\/[0-9]+ Testing: / {exit} on' "$log" |
-      grep -qE 'bad X server connection|cannot open display|Could not open display'; then
-      echo "setup: $name failed for a reason other than the X server; no retry" >&2
-      return 1
-    fi
-    names+=("$name")
-  done <"$failed"
-  [ "${#names[@]}" -gt 0 ] || return 1
-  # Test names hold letters, digits, ':', '_' and '-' only: no escaping.
-  local pattern
-  pattern="^($(IFS='|'; echo "${names[*]}"))\$"
-  echo "setup: retrying once after an X server connection failure: ${names[*]}" >&2
-  (cd "$dir" && with_display ctest --output-on-failure -R "$pattern")
+  echo -LE NoSanitizer
 }
 
 case "$mode" in
   render)
-    install_packages
-    build_tyndall
-    with_display "$build/bin/tyndall-render" -o "$build/tyndall-cloud.png"
+    timed packages install_packages
+    timed "build ($build)" build_tyndall
+    timed "render the default scene" with_display "$build/bin/tyndall-render" -o "$build/tyndall-cloud.png"
     ;;
   test)
-    install_packages
-    build_tyndall
-    echo "setup: the test suite ($build)" >&2
-    run_suite "$build"
+    timed packages install_packages
+    timed "build ($build)" build_tyndall
+    timed "test suite ($build)" run_suite "$build"
     if [ "${TYNDALL_SKIP_SANITIZERS:-0}" = 1 ]; then
       echo "setup: TYNDALL_SKIP_SANITIZERS=1: the sanitizer build is skipped" >&2
       exit 0
     fi
-    build_sanitized
-    echo "setup: the test suite under AddressSanitizer and UBSan ($sanitizer_build)" >&2
-    run_suite "$sanitizer_build"
+    timed "sanitizer build ($sanitizer_build)" build_sanitized
+    # shellcheck disable=SC2046 # the selection is zero or two words
+    timed "test suite under AddressSanitizer and UBSan ($sanitizer_build)" \
+      run_suite "$sanitizer_build" $(sanitizer_selection)
     ;;
   build)
-    install_packages
-    build_tyndall
+    timed packages install_packages
+    timed "build ($build)" build_tyndall
     ;;
   *)
     echo "usage: $0 [render|test|build]" >&2
