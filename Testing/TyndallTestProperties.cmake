@@ -46,9 +46,10 @@ set(tyndall_test_costs
   TyndallCLI-DetailSampled 12
   Tyndall::RenderingCxx-TestTransmittanceMapperScenes 10
   TyndallParaView-GUI 10
-  Tyndall::RenderingCxx-TestVolumetricPathTracer 9
+  Tyndall::ReferenceCxx-TestVolumetricPathTracer 9
+  Tyndall::ReferenceCxx-TestVolumetricPathTracerScenes 13
   TyndallIO-FuzzOpenVDBReader 9
-  Tyndall::RenderingCxx-TestTyndallDetailMedium 8
+  Tyndall::MediumCxx-TestTyndallDetailMedium 8
   TyndallCLI-ExtinctionColor 7
   Tyndall::RenderingCxx-TestTransmittanceMapperOccluder 7
   TyndallCLI-Clipped 7

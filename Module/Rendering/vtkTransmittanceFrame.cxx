@@ -8,8 +8,10 @@
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMediumAdapter.h"
+#include "vtkTransmittanceMediumAdapters.h"
 #include "vtkTransmittanceMediumTextures.h"
-#include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallParticleMedium.h"
 #include "vtkTyndallSceneReader.h"
 
 #include <algorithm>
@@ -51,14 +53,13 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->State = window->GetState();
   this->Medium = &scene.GetMedium();
   this->Detail = &scene.GetDetail();
-  this->DetailWavelength = this->Detail->Enabled()
-    ? this->Detail->GetShortestWavelength(this->Medium->GetWorldToIndex())
-    : 1e30;
+  this->OwnMedium = scene.GetMedia().front();
+  this->Adapter = &vtkTransmittanceMediumAdapters::For(*this->OwnMedium);
   this->Textures = &textures;
   this->Integrator = settings;
   this->Layers = M::GetNumberOfMapLayers(settings.Method, settings.Coefficients);
   this->BoundsLayer = M::GetBoundsLayer(settings.Method, settings.Coefficients);
-  this->MapSets = this->Medium->GetChromatic() &&
+  this->MapSets = this->Medium->GetParameters().GetChromatic() &&
       (settings.Method == M::TFM || settings.Method == M::ADAPTIVE_TFM)
     ? 3
     : 1;
@@ -164,20 +165,23 @@ void vtkTransmittanceFrame::PrepareSplats()
   {
     return;
   }
-  auto add = [this](const vtkTyndallGridMedium& medium, int guest)
+  auto add = [this](const vtkTyndallGridMedium& grid, int guest)
   {
-    if (!medium.GetSplatParticles())
+    // A particle cloud whose maps splat its particles (vtkTyndallParticleMedium).
+    const vtkTyndallParticleMedium* medium =
+      vtkTransmittanceMediumAdapters::For(grid).GetSplatted(grid);
+    if (!medium)
     {
       return;
     }
     Splat splat;
-    splat.Particles = medium.GetParticles();
-    splat.DensityScale = medium.GetDensityScale();
+    splat.Particles = medium->GetParticles();
+    splat.DensityScale = medium->GetParameters().DensityScale;
     splat.Guest = guest;
     // World -> field index -> data, and back.
     vtkNew<vtkMatrix4x4> toIndex, toData, worldToData, dataToWorld;
-    toIndex->DeepCopy(medium.GetWorldToIndex());
-    toData->DeepCopy(medium.GetIndexToData());
+    toIndex->DeepCopy(medium->GetWorldToIndex());
+    toData->DeepCopy(medium->GetIndexToData());
     vtkMatrix4x4::Multiply4x4(toData, toIndex, worldToData);
     vtkMatrix4x4::Invert(worldToData, dataToWorld);
     for (int r = 0; r < 4; ++r)
@@ -200,12 +204,12 @@ void vtkTransmittanceFrame::PrepareSplats()
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetMarchedDensities(vtkShaderProgram* program) const
 {
-  float own = static_cast<float>(this->Medium->GetDensityScale());
+  float own = static_cast<float>(this->Medium->GetParameters().DensityScale);
   float guests[kMaxGuests] = {};
   const int n = static_cast<int>(std::min<size_t>(this->Guests.size(), kMaxGuests));
   for (int g = 0; g < n; ++g)
   {
-    guests[g] = static_cast<float>(this->Guests[g].Medium->GetDensityScale());
+    guests[g] = static_cast<float>(this->Guests[g].Medium->GetParameters().DensityScale);
   }
   for (const Splat& splat : this->Splats)
   {
@@ -298,24 +302,19 @@ double vtkTransmittanceFrame::GetStepLength() const
   {
     return this->Integrator.SampleDistance;
   }
-  return std::min(0.5 * this->MinimumSpacing, 0.25 * this->DetailWavelength);
+  // The medium's finest feature: its spacing, or half the detail's shortest wavelength.
+  return 0.5 * std::min(this->MinimumSpacing, this->OwnMedium->GetFinestFeature());
 }
 
 //------------------------------------------------------------------------------
 vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() const
 {
   vtkTransmittanceShaderSource::Variant variant;
-  if (this->Detail && this->Detail->Enabled())
+  variant.SkipEmpty = this->Integrator.SkipEmptySpace;
+  if (this->Adapter)
   {
-    variant.DetailGroups = static_cast<int>((this->Detail->GetWaves().size() + 3) / 4);
+    this->Adapter->DeclareSwitches(*this->OwnMedium, *this->Textures, variant);
   }
-  variant.MissingData = this->Textures && this->Textures->GetValidityTexture() != nullptr;
-  // Emission from a separate array glows where the extinction is 0: no
-  // block is empty then.
-  variant.SkipEmpty =
-    this->Integrator.SkipEmptySpace && !(this->Medium && this->Medium->GetEmissionFromArray());
-  variant.Clip = this->Medium && this->Medium->GetClip().Enabled();
-  variant.Chromatic = this->Medium && this->Medium->GetChromatic();
   variant.Guests = static_cast<int>(this->Guests.size());
   variant.MapBeyondMedium = this->Integrator.HasMapBounds;
   variant.OpacityCoversRadiance = this->Integrator.OpacityCoversRadiance;
@@ -355,59 +354,21 @@ void vtkTransmittanceFrame::SetMapUniforms(
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
 {
-  const vtkTyndallTransferTable& table = this->Medium->GetTable();
   this->SetLightMapUniforms(program);
-  const int volumeUnit = this->Textures->GetVolumeTexture()->GetTextureUnit();
-  program->SetUniformi("volumeTexture", volumeUnit);
-  if (vtkTextureObject* validity = this->Textures->GetValidityTexture())
-  {
-    // Declared only by the missing-data variant (GetShaderVariant()).
-    program->SetUniformi("validityTexture", validity->GetTextureUnit());
-  }
-  if (this->Integrator.SkipEmptySpace)
-  {
-    // Declared only by the skipping variant.
-    const int* blocks = this->Textures->GetMajorantGrid().GetBlockCounts();
-    const float blockCount[3] = { float(blocks[0]), float(blocks[1]), float(blocks[2]) };
-    program->SetUniformi("blockTexture", this->Textures->GetBlockTexture()->GetTextureUnit());
-    program->SetUniform3f("blockCount", blockCount);
-    program->SetUniform3f("boxToBlockScale", this->Textures->GetBlockScale());
-    program->SetUniform3f("boxToBlockShift", this->Textures->GetBlockShift());
-  }
-  program->SetUniformi("transferTexture", this->Textures->GetTransferTexture()->GetTextureUnit());
-  program->SetUniform3f("volumeTexScale", this->Textures->GetTextureScale());
-  program->SetUniform3f("volumeTexShift", this->Textures->GetTextureShift());
-  const float toTable[2] = { static_cast<float>(table.TextureScale()),
-    static_cast<float>(table.TextureShift()) };
-  program->SetUniform2f("scalarToTable", toTable);
-  program->SetUniformf("densityScale", static_cast<float>(this->Medium->GetDensityScale()));
+  this->Adapter->SetUniforms(program, *this->OwnMedium, *this->Textures);
   program->SetUniformMatrix4x4("worldToVolume", const_cast<float*>(this->WorldToBox));
   program->SetUniformMatrix4x4("worldToCameraBox", const_cast<float*>(this->WorldToCameraBox));
   this->SetClipUniforms(program);
   this->SetGuestUniforms(program);
-  if (vtkTextureObject* emission = this->Textures->GetEmissionTexture())
-  {
-    // Declared only by the ray cast's emission-array variant.
-    program->SetUniformi("emissionTexture", emission->GetTextureUnit());
-    const float toTable[2] = { static_cast<float>(table.EmissionTextureScale()),
-      static_cast<float>(table.EmissionTextureShift()) };
-    program->SetUniform2f("emissionToTable", toTable);
-  }
-  if (vtkTextureObject* scattering = this->Textures->GetScatteringTexture())
-  {
-    // Declared only by the ray cast's particle-colour variant.
-    program->SetUniformi("scatteringTexture", scattering->GetTextureUnit());
-  }
-  this->SetDetailUniforms(program);
 }
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
 {
   program->SetUniformMatrix4x4("worldToMapBox", const_cast<float*>(this->WorldToMapBox));
-  if (this->Medium->GetChromatic())
+  if (this->Medium->GetParameters().GetChromatic())
   {
-    const double* e = this->Medium->GetExtinctionColor();
+    const double* e = this->Medium->GetParameters().ExtinctionColor;
     const float color[3] = { float(e[0]), float(e[1]), float(e[2]) };
     program->SetUniform3f("extinctionColor", color);
   }
@@ -436,48 +397,6 @@ void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
 }
 
 //------------------------------------------------------------------------------
-void vtkTransmittanceFrame::SetDetailUniforms(vtkShaderProgram* program) const
-{
-  if (!this->Detail || !this->Detail->Enabled())
-  {
-    return;
-  }
-  const vtkTyndallDetailMedium& detail = *this->Detail;
-  const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
-  const int groups = static_cast<int>((waves.size() + 3) / 4);
-  std::vector<float> kx(4 * groups, 0.0f), ky(kx), kz(kx), phase(kx), amplitude(kx);
-  for (size_t i = 0; i < waves.size(); ++i)
-  {
-    kx[i] = static_cast<float>(waves[i].K[0]);
-    ky[i] = static_cast<float>(waves[i].K[1]);
-    kz[i] = static_cast<float>(waves[i].K[2]);
-    phase[i] = static_cast<float>(std::remainder(waves[i].Phase, 2.0 * vtkMath::Pi()));
-    amplitude[i] = static_cast<float>(waves[i].Amplitude);
-  }
-  program->SetUniform4fv("detailKx", groups, reinterpret_cast<float(*)[4]>(kx.data()));
-  program->SetUniform4fv("detailKy", groups, reinterpret_cast<float(*)[4]>(ky.data()));
-  program->SetUniform4fv("detailKz", groups, reinterpret_cast<float(*)[4]>(kz.data()));
-  program->SetUniform4fv("detailPhase", groups, reinterpret_cast<float(*)[4]>(phase.data()));
-  program->SetUniform4fv(
-    "detailAmplitude", groups, reinterpret_cast<float(*)[4]>(amplitude.data()));
-  const int* n = detail.GetDimensions();
-  const float dims[3] = { float(n[0]), float(n[1]), float(n[2]) };
-  float low[3], size[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    low[a] = static_cast<float>(this->Medium->GetBoxLow()[a]);
-    size[a] = static_cast<float>(this->Medium->GetBoxHigh()[a] - this->Medium->GetBoxLow()[a]);
-  }
-  program->SetUniformi("detailShapeTexture", this->Textures->GetDetailTexture()->GetTextureUnit());
-  program->SetUniform3f("detailDims", dims);
-  program->SetUniform3f("detailBoxLow", low);
-  program->SetUniform3f("detailBoxSize", size);
-  program->SetUniformi("detailMaxCells", n[0] + n[1] + n[2] + 3);
-  program->SetUniformf("detailOffset", static_cast<float>(detail.GetOffset()));
-  program->SetUniformf("detailScale", static_cast<float>(detail.GetScale()));
-}
-
-//------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
 {
   const int n = static_cast<int>(this->Guests.size());
@@ -499,7 +418,7 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
     const vtkTyndallTransferTable& table = guest.Medium->GetTable();
     toTable[g][0] = static_cast<float>(table.TextureScale());
     toTable[g][1] = static_cast<float>(table.TextureShift());
-    density[g] = static_cast<float>(guest.Medium->GetDensityScale());
+    density[g] = static_cast<float>(guest.Medium->GetParameters().DensityScale);
     camera[g] = guest.Camera ? 1.0f : 0.0f;
   }
   program->SetUniform1iv("guestVolume", n, volumes);
@@ -532,7 +451,7 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
 //------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetClipUniforms(vtkShaderProgram* program) const
 {
-  const vtkTyndallClipRegion& clip = this->Medium->GetClip();
+  const vtkTyndallClipRegion& clip = this->Medium->GetClipRegion();
   if (!clip.Enabled())
   {
     return; // declared only by the clipping variant (GetShaderVariant())

@@ -29,11 +29,13 @@ class vtkRenderer;
 class vtkShaderProgram;
 class vtkTransmittanceLightFrustum;
 class vtkTransmittanceMapReducer;
+class vtkTransmittanceMediumAdapter;
 class vtkTransmittanceMediumTextures;
 class vtkTextureObject;
 class vtkTyndallDetailMedium;
 class vtkTyndallGridMedium;
-class vtkTyndallParticleMedium;
+class vtkTyndallMedium;
+class vtkTyndallParticles;
 class vtkTyndallSceneReader;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceFrame
@@ -98,7 +100,7 @@ public:
    */
   struct Splat
   {
-    const vtkTyndallParticleMedium* Particles = nullptr;
+    const vtkTyndallParticles* Particles = nullptr;
     /// World <-> the particles' data coordinates, column-major.
     float WorldToData[16];
     float DataToWorld[16];
@@ -122,13 +124,13 @@ public:
    */
   void SetLightMapUniforms(vtkShaderProgram* program) const;
 
-  /// Sets the shared uniforms (medium, table, light frusta) on `program`.
+  /// Sets the shared uniforms (the medium's, its adapter's; clipping, guests, light frusta).
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
   /**
-   * The shaders' variant for this frame (vtkTransmittanceShaderSource):
-   * missing data when the medium has a validity texture, empty-space
-   * skipping when the settings ask for it.
+   * The shaders' variant for this frame (vtkTransmittanceShaderSource): the
+   * medium's switches (its adapter's DeclareSwitches()), empty-space
+   * skipping when the settings ask for it, the guests.
    */
   vtkTransmittanceShaderSource::Variant GetShaderVariant() const;
 
@@ -158,17 +160,25 @@ public:
   bool HasCameraGuests() const;
 
   /**
-   * The camera-ray step: SampleDistance, or half the smallest spacing (with
-   * procedural detail, at most a quarter of its shortest wavelength).
+   * The camera-ray step: SampleDistance, or half the smallest spacing and
+   * the medium's finest feature (vtkTyndallMedium::GetFinestFeature(): with
+   * procedural detail, half its shortest wavelength).
    */
   double GetStepLength() const;
 
   vtkRenderer* Renderer = nullptr;
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkOpenGLState* State = nullptr;
+  /// The grid of the medium (its own, or the one its procedural detail multiplies).
   const vtkTyndallGridMedium* Medium = nullptr;
   /// The procedural detail over the medium (Enabled() or not).
   const vtkTyndallDetailMedium* Detail = nullptr;
+  /**
+   * The frame's own medium (vtkTyndallSceneReader::GetMedia()'s first) and
+   * its GPU adapter: its switches, uniforms and GLSL.
+   */
+  const vtkTyndallMedium* OwnMedium = nullptr;
+  const vtkTransmittanceMediumAdapter* Adapter = nullptr;
   const vtkTransmittanceMediumTextures* Textures = nullptr;
   Settings Integrator;
   /// ceil(Coefficients / 4) (+1 for the adaptive methods) layers per light.
@@ -213,11 +223,8 @@ public:
   float WorldToCameraBox[16];
   float CameraBoxToWorld[16];
   double CameraBoxExtents[3] = { 1.0, 1.0, 1.0 };
-  /// The procedural detail's shortest wavelength in world units (1e30: no detail).
-  double DetailWavelength = 1e30;
 
 private:
-  void SetDetailUniforms(vtkShaderProgram* program) const;
   void SetClipUniforms(vtkShaderProgram* program) const;
   void SetGuestUniforms(vtkShaderProgram* program) const;
   void PrepareMapBox();

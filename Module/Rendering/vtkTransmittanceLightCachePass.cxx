@@ -45,7 +45,7 @@ bool vtkTransmittanceLightCachePass::Render(const vtkTransmittanceFrame& frame,
   int size[3];
   LatticeSize(frame.CameraBoxExtents, frame.Integrator.CacheSize, size);
   const int lights = static_cast<int>(frame.Lights.size());
-  const double* color = frame.Medium->GetExtinctionColor();
+  const double* color = frame.Medium->GetParameters().ExtinctionColor;
   const float* box = frame.CameraBoxToWorld;
   if (this->CacheTexture && mapBuild == this->BuiltFromMaps && lights == this->Lights &&
     std::equal(size, size + 3, this->Size) && std::equal(color, color + 3, this->Color) &&
@@ -75,7 +75,7 @@ bool vtkTransmittanceLightCachePass::Allocate(
   const vtkTransmittanceFrame& frame, const int size[3], vtkObject* reporter)
 {
   const int lights = static_cast<int>(frame.Lights.size());
-  const bool chromatic = frame.Medium->GetChromatic();
+  const bool chromatic = frame.Medium->GetParameters().GetChromatic();
   if (this->CacheTexture && lights == this->Lights && std::equal(size, size + 3, this->Size) &&
     chromatic == this->Chromatic)
   {

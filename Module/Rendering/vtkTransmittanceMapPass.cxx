@@ -24,7 +24,7 @@
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTransmittanceSplatPass.h"
 #include "vtkTyndallGridMedium.h"
-#include "vtkTyndallParticleMedium.h"
+#include "vtkTyndallParticles.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -70,7 +70,7 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
     double(s.LightSampleCount), threshold, double(s.SkipEmptySpace), double(frame.MapSets) };
   if (frame.MapSets > 1)
   {
-    const double* e = frame.Medium->GetExtinctionColor();
+    const double* e = frame.Medium->GetParameters().ExtinctionColor;
     key.insert(key.end(), e, e + 3);
   }
   // Every medium the light crosses, as a set (sorted): the textures the
@@ -82,7 +82,7 @@ std::vector<double> vtkTransmittanceMapPass::Key(const vtkTransmittanceFrame& fr
                const float worldToBox[16])
   {
     std::vector<double> k = { double(reinterpret_cast<std::uintptr_t>(t)),
-      double(t->GetExtinctionContentTime()), m.GetDensityScale() };
+      double(t->GetExtinctionContentTime()), m.GetParameters().DensityScale };
     k.insert(k.end(), worldToBox, worldToBox + 16);
     media.push_back(k);
   };
@@ -335,7 +335,8 @@ bool vtkTransmittanceMapPass::Build(const vtkTransmittanceFrame& frame, vtkObjec
     }
     const int set = i / lights;
     program->SetUniformf("channelExtinction",
-      frame.MapSets > 1 ? static_cast<float>(frame.Medium->GetExtinctionColor()[set]) : 1.0f);
+      frame.MapSets > 1 ? static_cast<float>(frame.Medium->GetParameters().ExtinctionColor[set])
+                        : 1.0f);
     for (int k = 0; k < layers; ++k)
     {
       this->Framebuffer->AddColorAttachment(k, this->MapTexture, i * layers + k);

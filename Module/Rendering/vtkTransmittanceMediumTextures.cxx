@@ -57,8 +57,8 @@ vtkTransmittanceMediumTextures::vtkTransmittanceMediumTextures() = default;
 vtkTransmittanceMediumTextures::~vtkTransmittanceMediumTextures() = default;
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceMediumTextures::Update(
-  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
+  const vtkTyndallGridMedium& medium, const Extras& extras, vtkObject* reporter)
 {
   const bool sameMedium = this->UploadedMedium == &medium && this->VolumeTexture &&
     this->VolumeTexture->GetContext() == window;
@@ -71,8 +71,11 @@ bool vtkTransmittanceMediumTextures::Update(
       return false;
     }
     this->ScalarsTime = medium.GetScalarsTime();
-    // A coloured particle cloud's scattering grid changes with its scalars.
-    if (!this->UploadScattering(window, medium, reporter))
+  }
+  // A coloured particle cloud's scattering grid changes with its scalars.
+  if (newScalars || (extras.Scattering != nullptr) != (this->ScatteringTexture != nullptr))
+  {
+    if (!this->UploadScattering(window, medium, extras.Scattering, reporter))
     {
       this->ScalarsTime = 0;
       return false;
@@ -107,6 +110,10 @@ bool vtkTransmittanceMediumTextures::Update(
     this->ExtinctionContentTime.Modified();
   }
   this->UploadedMedium = &medium;
+  if (!this->UpdateDetail(window, extras.Detail, reporter))
+  {
+    return false;
+  }
 
   // The box as [0, 1]^3 -> texture coordinates: field index p = low + q (high
   // - low), texture sample p / factor, texel centre (p / factor + 0.5) / n.
@@ -223,10 +230,9 @@ bool vtkTransmittanceMediumTextures::UploadEmission(
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittanceMediumTextures::UploadScattering(
-  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+bool vtkTransmittanceMediumTextures::UploadScattering(vtkOpenGLRenderWindow* window,
+  const vtkTyndallGridMedium& medium, const float* scattering, vtkObject* reporter)
 {
-  vtkFloatArray* scattering = medium.GetParticleScattering();
   if (!scattering)
   {
     if (this->ScatteringTexture)
@@ -236,8 +242,8 @@ bool vtkTransmittanceMediumTextures::UploadScattering(
     this->ScatteringTexture = nullptr;
     return true;
   }
-  return this->UploadSampled(window, medium, scattering->GetPointer(0), 3, this->ScatteringTexture,
-    "particles' colour", reporter);
+  return this->UploadSampled(
+    window, medium, scattering, 3, this->ScatteringTexture, "particles' colour", reporter);
 }
 
 //------------------------------------------------------------------------------
@@ -334,9 +340,9 @@ bool vtkTransmittanceMediumTextures::UploadMajorants(
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceMediumTextures::UpdateDetail(
-  vtkOpenGLRenderWindow* window, const vtkTyndallDetailMedium& detail, vtkObject* reporter)
+  vtkOpenGLRenderWindow* window, const vtkTyndallDetailMedium* detailOrNull, vtkObject* reporter)
 {
-  if (!detail.Enabled())
+  if (!detailOrNull || !detailOrNull->Enabled())
   {
     if (this->DetailTexture)
     {
@@ -345,6 +351,7 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
     this->DetailTexture = nullptr;
     return true;
   }
+  const vtkTyndallDetailMedium& detail = *detailOrNull;
   if (this->DetailTexture && this->DetailTexture->GetContext() == window &&
     detail.GetTime() <= this->DetailTime)
   {

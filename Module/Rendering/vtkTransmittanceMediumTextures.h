@@ -30,11 +30,11 @@
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h"        // For vtkSmartPointer
+#include "vtkTextureObject.h"       // For the inline getters
 #include "vtkTimeStamp.h"           // For vtkTimeStamp
 #include "vtkTyndallMajorantGrid.h" // For vtkTyndallMajorantGrid
 
 class vtkOpenGLRenderWindow;
-class vtkTextureObject;
 class vtkTyndallDetailMedium;
 class vtkTyndallGridMedium;
 class vtkWindow;
@@ -47,30 +47,36 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Uploads what changed since the last call. Errors go through `reporter`;
-   * false when the medium cannot be rendered.
+   * What a kind of medium adds to its grid's textures: its adapter
+   * (vtkTransmittanceMediumAdapter) says; what is null is released.
    */
-  bool Update(
-    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  struct Extras
+  {
+    /**
+     * A coloured particle cloud's scattering density (RGB per sample, laid
+     * out like the scalars: vtkTyndallParticleMedium::GetScatteringGrid()),
+     * uploaded with the scalars.
+     */
+    const float* Scattering = nullptr;
+    /// Procedural detail over the grid: its shape, uploaded when it changed.
+    const vtkTyndallDetailMedium* Detail = nullptr;
+  };
 
   /**
-   * Uploads the procedural detail's shape (pre-classified extinction, one
-   * float texel per sample) when it changed; releases it when `detail` is
-   * not enabled. False (with an error) when it cannot be created.
+   * Uploads what changed since the last call of `medium` and `extras`.
+   * Errors go through `reporter`; false when the medium cannot be rendered.
    */
-  bool UpdateDetail(
-    vtkOpenGLRenderWindow* window, const vtkTyndallDetailMedium& detail, vtkObject* reporter);
+  bool Update(vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium,
+    const Extras& extras, vtkObject* reporter);
+
   /// Null without procedural detail.
   vtkTextureObject* GetDetailTexture() const { return this->DetailTexture; }
 
   vtkTextureObject* GetVolumeTexture() const { return this->VolumeTexture; }
   /// Null without an emission array (vtkTyndallGridMedium::GetEmissionValues()).
   vtkTextureObject* GetEmissionTexture() const { return this->EmissionTexture; }
-  /**
-   * A coloured particle cloud's scattering density
-   * (vtkTyndallGridMedium::GetParticleScattering(), RGB float, sampled like
-   * the scalars); null for any other medium.
-   */
+  /// A coloured particle cloud's scattering density (Extras::Scattering); null for any other
+  /// medium.
   vtkTextureObject* GetScatteringTexture() const { return this->ScatteringTexture; }
   /// Null when the scalars hold no NaN.
   vtkTextureObject* GetValidityTexture() const { return this->ValidityTexture; }
@@ -109,8 +115,11 @@ private:
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadEmission(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
-  bool UploadScattering(
-    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadScattering(vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium,
+    const float* scattering, vtkObject* reporter);
+  // The detail's shape when it changed; released for null.
+  bool UpdateDetail(
+    vtkOpenGLRenderWindow* window, const vtkTyndallDetailMedium* detail, vtkObject* reporter);
   // Every Factor-th sample of `components`-component `values` (laid out like
   // the scalars) into `texture`, created when needed; false with an error
   // naming `what`.

@@ -8,7 +8,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkTimerLog.h"
-#include "vtkTyndallParticleMedium.h"
+#include "vtkTyndallParticles.h"
 
 #include <string>
 #include <vector>
@@ -19,7 +19,7 @@ vtkStandardNewMacro(vtkTransmittanceParticleMapper);
 class vtkTransmittanceParticleMapper::vtkParticles
 {
 public:
-  vtkTyndallParticleMedium Medium;
+  vtkTyndallParticles Medium;
   vtkNew<vtkImageData> Grid;
   std::vector<double> Key;
   bool Valid = false;
@@ -100,7 +100,7 @@ vtkImageData* vtkTransmittanceParticleMapper::GetMediumImage()
 }
 
 //------------------------------------------------------------------------------
-const vtkTyndallParticleMedium* vtkTransmittanceParticleMapper::GetParticleMedium()
+const vtkTyndallParticles* vtkTransmittanceParticleMapper::GetParticles()
 {
   return this->Particles->Valid ? &this->Particles->Medium : nullptr;
 }

@@ -107,7 +107,11 @@ public:
 
 #ifndef __VTK_WRAP__
   vtkImageData* GetMediumImage() override;
-  const vtkTyndallParticleMedium* GetParticleMedium() override;
+  bool DrawsParticles() override
+  {
+    return true;
+  }
+  const vtkTyndallParticles* GetParticles() override;
   bool GetSplatsParticles() override
   {
     return this->Splatting;

@@ -13,6 +13,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMediumAdapter.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
@@ -65,7 +66,7 @@ bool vtkTransmittanceRayCastPass::Render(
   const int passes = (steps + perPass - 1) / perPass;
   const int reduction = std::max(inputs.Reduction, 1);
   // A coloured extinction needs a second render target: never drawn direct.
-  const bool chromatic = frame.Medium->GetChromatic();
+  const bool chromatic = frame.Medium->GetParameters().GetChromatic();
   const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic;
   vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
   variant.DetailSamples = this->LastDetailSamples;
@@ -118,7 +119,8 @@ bool vtkTransmittanceRayCastPass::Render(
 int vtkTransmittanceRayCastPass::DetailSamplesFor(const vtkTransmittanceFrame& frame, int requested)
 {
   // Free flights are drawn from one transmittance: not with a coloured extinction.
-  if (requested <= 0 || !frame.Detail || !frame.Detail->Enabled() || frame.Medium->GetChromatic())
+  if (requested <= 0 || !frame.Detail || !frame.Detail->Enabled() ||
+    frame.Medium->GetParameters().GetChromatic())
   {
     return 0;
   }
@@ -154,15 +156,12 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   {
     variant.BruteForceLights |= light.Method == vtkTransmittanceMapMath::BRUTE_FORCE;
   }
-  const bool emits = frame.Medium->GetHasEmission() && frame.Medium->GetEmissionScale() > 0.0;
-  variant.EmissionArray = emits && frame.Medium->GetEmissionFromArray();
-  variant.Emission = emits && !variant.EmissionArray;
-  variant.ParticleColors = frame.Medium->GetParticleScattering() != nullptr;
+  frame.Adapter->DeclareColorSwitches(*frame.OwnMedium, variant);
   // Only the camera rays read colours: the other passes keep their programs.
   variant.GuestColors = std::any_of(frame.Guests.begin(), frame.Guests.end(),
     [](const vtkTransmittanceFrame::Guest& g)
     { return g.Camera && g.Textures->GetScatteringTexture(); });
-  variant.Octaves = frame.Medium->GetScatteringOctaves();
+  variant.Octaves = frame.Medium->GetParameters().ScatteringOctaves;
   return variant;
 }
 
@@ -171,14 +170,10 @@ int vtkTransmittanceRayCastPass::StepsPerPass(const vtkTransmittanceFrame& frame
 {
   // Loop iterations of one camera step: the step, the light loop, and a
   // brute-force light march per brute-force light (with procedural detail:
-  // the cells of the closed form's walk; its wave loops are unrolled).
+  // what the medium's adapter says).
   double perStep = 1.0 + static_cast<double>(frame.Lights.size());
-  double march = std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll);
-  if (frame.Detail && frame.Detail->Enabled())
-  {
-    const int* n = frame.Detail->GetDimensions();
-    march = n[0] + n[1] + n[2] + 3.0;
-  }
+  const double march = frame.Adapter->GetLightMarchIterations(
+    *frame.OwnMedium, std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
   {
     if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
@@ -228,19 +223,21 @@ void vtkTransmittanceRayCastPass::SetUniforms(
 
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;
-  program->SetUniformi("scatteringModel", medium.GetScatteringModel());
+  program->SetUniformi("scatteringModel", medium.GetParameters().ScatteringModel);
   program->SetUniformi("lightSampleCount", s.LightSampleCount);
   program->SetUniformi("jitter", s.Jitter ? 1 : 0);
-  program->SetUniformf("anisotropy", static_cast<float>(medium.GetScatteringAnisotropy()));
-  program->SetUniformf("ambient", static_cast<float>(medium.GetAmbientIntensity()));
-  if (medium.GetScatteringOctaves() > 1)
+  program->SetUniformf(
+    "anisotropy", static_cast<float>(medium.GetParameters().ScatteringAnisotropy));
+  program->SetUniformf("ambient", static_cast<float>(medium.GetParameters().AmbientIntensity));
+  if (medium.GetParameters().ScatteringOctaves > 1)
   {
-    const double* f = medium.GetOctaveFactors();
+    const double* f = medium.GetParameters().OctaveFactors;
     const float factors[4] = { float(f[0]), float(f[1]), float(f[2]), float(f[3]) };
     program->SetUniform4f("octaveFactors", factors);
   }
   program->SetUniformf("emissionScale",
-    medium.GetHasEmission() ? static_cast<float>(medium.GetEmissionScale()) : 0.0f);
+    medium.GetParameters().HasEmission ? static_cast<float>(medium.GetParameters().EmissionScale)
+                                       : 0.0f);
   if (inputs.Occlusion)
   {
     program->SetUniformi("occlusionTexture", inputs.Occlusion->GetTextureUnit());

@@ -10,7 +10,6 @@
 // The GLSL sources, embedded at build time from glsl/*.glsl.
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceCompositeFS.h"
-#include "vtkTransmittanceDetailFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceLightMapFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
@@ -139,7 +138,6 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
   }
   vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(variant));
   vtkShaderProgram::Substitute(source, "//TYNDALL::LightMaps", vtkTransmittanceLightMapFS);
-  vtkShaderProgram::Substitute(
-    source, "//TYNDALL::Detail", variant.DetailGroups > 0 ? vtkTransmittanceDetailFS : "");
+  vtkShaderProgram::Substitute(source, "//TYNDALL::Medium", variant.MediumCode);
   return source;
 }

@@ -19,7 +19,8 @@
  * - TYNDALL_VIEW_TERMINATION: camera rays stop below this transmittance;
  * - TYNDALL_PI;
  *
- * and the variant switches (Variant), compile-time rather than uniforms:
+ * and the variant switches (Variant), compile-time rather than uniforms,
+ * those that describe the medium declared by its vtkTransmittanceMediumAdapter:
  * drivers such as llvmpipe run both sides of a uniform branch's texture
  * fetch, and one more 3-D fetch per sample costs 15 to 45 % of a frame:
  *
@@ -32,7 +33,7 @@
  * - TYNDALL_DETAIL_GROUPS: groups of four cosine waves of the medium's
  *   procedural detail (0: none), with TYNDALL_DETAIL_FOR_GROUPS(X) expanding
  *   to X(0) .. X(groups - 1), and vtkTransmittanceDetailFS.glsl in place of
- *   the common file's `//TYNDALL::Detail` line;
+ *   the common file's `//TYNDALL::Medium` line (Variant::MediumCode);
  * - TYNDALL_DETAIL_SAMPLES: camera rays through procedural detail draw this
  *   many free-flight distances per pixel in closed form instead of marching
  *   (0: they march), each solved in at most TYNDALL_DETAIL_SOLVE_ITERATIONS
@@ -83,6 +84,11 @@ public:
     int DetailGroups = 0;
     /// Free-flight samples per camera ray through the detail (RAY_CAST); 0: a march.
     int DetailSamples = 0;
+    /**
+     * The medium's own GLSL functions (its vtkTransmittanceMediumAdapter's),
+     * in place of the common file's `//TYNDALL::Medium` line; empty: none.
+     */
+    const char* MediumCode = "";
     ///@{
     /// The camera rays' variant (RAY_CAST only).
     int MapCoefficients = 0;    // coefficients a map lookup reads; 0: no maps

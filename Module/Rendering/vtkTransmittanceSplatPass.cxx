@@ -9,7 +9,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceShaderSource.h"
-#include "vtkTyndallParticleMedium.h"
+#include "vtkTyndallParticles.h"
 #include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkTransmittanceSplatPass);
@@ -41,7 +41,7 @@ bool vtkTransmittanceSplatPass::UploadBuffers(
   this->Buffers.resize(frame.Splats.size());
   for (size_t i = 0; i < frame.Splats.size(); ++i)
   {
-    const vtkTyndallParticleMedium& particles = *frame.Splats[i].Particles;
+    const vtkTyndallParticles& particles = *frame.Splats[i].Particles;
     Buffer& buffer = this->Buffers[i];
     if (buffer.Object && buffer.ReadTime == particles.GetReadTime())
     {

@@ -23,6 +23,8 @@
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMapPass.h"
 #include "vtkTransmittanceMapReducer.h"
+#include "vtkTransmittanceMediumAdapter.h"
+#include "vtkTransmittanceMediumAdapters.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOcclusionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
@@ -42,28 +44,14 @@ vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
 
 namespace
 {
-// The adaptive maps' threshold for the faintest transmittance a sample
-// reads: the last multiple-scattering octave sees w T^(b^(N-1)), w =
-// max(1, a)^(N-1) its largest weight relative to single scattering (the
-// albedo is at most 1), and the faintest channel of a coloured extinction
-// T^e (e its smallest positive component; not where each channel has its own
-// maps: `channelMaps`), so the maps must resolve T down to
-// (threshold / w)^(1 / (b^(N-1) e)) for those to fall below the threshold
-// (b = 0: the octave sees only whether T > 0, and the maps keep their whole
-// range).
+// The adaptive maps' threshold: the faintest transmittance a sample reads
+// (vtkTyndallMediumParameters::LightTransmittanceLimit(): the last octave and
+// the faintest channel; not where each channel has its own maps:
+// `channelMaps`), at least 1e-30 (b = 0: the octave sees only whether T > 0,
+// and the maps keep their whole range).
 double LightThreshold(double threshold, const vtkTyndallGridMedium& medium, bool channelMaps)
 {
-  const int octaves = medium.GetScatteringOctaves();
-  const double* f = medium.GetOctaveFactors();
-  const double exponent = (octaves > 1 ? std::pow(f[1], octaves - 1) : 1.0) *
-    (channelMaps ? 1.0 : medium.GetFaintestChannel());
-  const double weight = octaves > 1 ? std::pow(std::max(1.0, f[0]), octaves - 1) : 1.0;
-  const double faintest = threshold / weight;
-  if (exponent == 1.0)
-  {
-    return std::max(faintest, 1.0e-30);
-  }
-  return std::max(exponent > 0.0 ? std::pow(faintest, 1.0 / exponent) : 0.0, 1.0e-30);
+  return std::max(medium.GetParameters().LightTransmittanceLimit(threshold, channelMaps), 1.0e-30);
 }
 }
 
@@ -78,8 +66,8 @@ public:
   // rays) integrate the unclipped medium: said once per clipped scene.
   void WarnClippedDetail(vtkTransmittanceVolumeMapper* self, bool closedForm)
   {
-    const bool affected = closedForm && this->Scene.GetDetail().Enabled() &&
-      this->Scene.GetMedium().GetClip().Enabled();
+    const bool affected =
+      closedForm && this->Scene.GetDetail().Enabled() && this->Scene.GetMedium().GetClip();
     if (affected && !this->WarnedClippedDetail)
     {
       vtkWarningWithObjectMacro(self,
@@ -367,7 +355,7 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
     { double(self->GetMTime()), double(volume->GetMTime()),
       double(volume->GetProperty()->GetMTime()), double(input ? input->GetMTime() : 0),
       double(this->GetUsedMaps()->GetBuildSerial()), double(this->Cache->GetBuildCount()) });
-  const std::vector<double>& clip = this->Scene.GetMedium().GetClip().GetKey();
+  const std::vector<double>& clip = this->Scene.GetMedium().GetClipRegion().GetKey();
   key.insert(key.end(), clip.begin(), clip.end());
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator lit;
@@ -530,9 +518,12 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::UpdateMedium(vtkTransmittanceVo
     window->MakeCurrent();
   }
   this->Window = window;
-  return this->Scene.Update(renderer, volume, self) &&
-    this->Textures->Update(window, this->Scene.GetMedium(), self) &&
-    this->Textures->UpdateDetail(window, this->Scene.GetDetail(), self);
+  if (!this->Scene.Update(renderer, volume, self))
+  {
+    return false;
+  }
+  const vtkTyndallMedium& medium = *this->Scene.GetMedia().front();
+  return vtkTransmittanceMediumAdapters::For(medium).Upload(window, medium, *this->Textures, self);
 }
 
 //------------------------------------------------------------------------------
@@ -853,12 +844,6 @@ bool vtkTransmittanceVolumeMapper::GetTransmittanceMap(int light, vtkImageData* 
     return false;
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-vtkImageData* vtkTransmittanceVolumeMapper::GetMediumImage()
-{
-  return vtkImageData::SafeDownCast(this->GetDataSetInput());
 }
 
 //------------------------------------------------------------------------------

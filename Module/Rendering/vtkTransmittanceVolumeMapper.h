@@ -90,9 +90,9 @@
 #ifndef vtkTransmittanceVolumeMapper_h
 #define vtkTransmittanceVolumeMapper_h
 
-#include "TyndallRenderingModule.h"  // For export macro
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkParticipatingMediumMapper.h"
 #include "vtkTransmittanceMapMath.h" // For the method constants
-#include "vtkVolumeMapper.h"
 
 #include <memory> // For std::unique_ptr
 
@@ -101,13 +101,13 @@ class vtkTextureObject;
 class vtkTransmittanceFrame;
 class vtkTransmittanceLightFrustum;
 class vtkTransmittanceMapReducer;
-class vtkTyndallParticleMedium;
+class vtkTyndallParticles;
 
-class TYNDALLRENDERING_EXPORT vtkTransmittanceVolumeMapper : public vtkVolumeMapper
+class TYNDALLRENDERING_EXPORT vtkTransmittanceVolumeMapper : public vtkParticipatingMediumMapper
 {
 public:
   static vtkTransmittanceVolumeMapper* New();
-  vtkTypeMacro(vtkTransmittanceVolumeMapper, vtkVolumeMapper);
+  vtkTypeMacro(vtkTransmittanceVolumeMapper, vtkParticipatingMediumMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The methods, shared with the CPU math (vtkTransmittanceMapMath).
@@ -465,27 +465,6 @@ public:
    */
   const vtkTransmittanceFrame& GetShadowFrame(vtkTextureObject*& maps, int& slices);
 
-  /**
-   * Internal (the scene reader): the image whose scalars are the medium,
-   * the input itself here (null when it is not a vtkImageData); a particle
-   * mapper's grid of its particles (vtkTransmittanceParticleMapper).
-   */
-  virtual vtkImageData* GetMediumImage();
-
-  /**
-   * Internal (the scene reader): the particles whose sum the medium image
-   * samples, or null for an image input.
-   */
-  virtual const vtkTyndallParticleMedium* GetParticleMedium()
-  {
-    return nullptr;
-  }
-
-  /// Internal: whether the extinction maps add the particles in closed form (splatting).
-  virtual bool GetSplatsParticles()
-  {
-    return false;
-  }
 #endif
 
   /**

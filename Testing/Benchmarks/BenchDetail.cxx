@@ -209,7 +209,7 @@ void ProjectionStudy(const vtkTyndallGridMedium& grid, const vtkTyndallDetailMed
     for (int k = 1; k <= points; ++k)
     {
       const double u = static_cast<double>(k) / points;
-      const double exact = std::exp(-detail.OpticalDepth(o, d, t0, t0 + u * length));
+      const double exact = std::exp(-detail.ClosedFormDepth(o, d, t0, t0 + u * length));
       const double a = vtkTransmittanceMapMath::Reconstruct(
         vtkTransmittanceMapMath::ETM, closed, count, bounds, u);
       const double b =

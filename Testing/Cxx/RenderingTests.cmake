@@ -1,16 +1,8 @@
 # Tests of Tyndall::Rendering (included from CMakeLists.txt).
-# vtkSingleScatteringReference: numeric tests against closed forms, then its
-# baseline image (compared directly, no render window needed).
+# The light frusta (CPU).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
-  TestSingleScatteringReference.cxx
-  TestVolumetricPathTracer.cxx
-  TestTransferFunctionFileReader.cxx
-  TestTransferFunctionPresets.cxx
-  TestTransmittanceLightFrustum.cxx
-  TestTyndallDetailMedium.cxx)
-vtk_add_test_cxx(TyndallRenderingCxxTests tests
-  TestSingleScatteringReferenceImage.cxx)
+  TestTransmittanceLightFrustum.cxx)
 # vtkTransmittanceVolumeMapper (needs a display).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT

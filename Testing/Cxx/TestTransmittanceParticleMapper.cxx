@@ -42,7 +42,7 @@
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceParticleMapper.h"
 #include "vtkTyndallGridMedium.h"
-#include "vtkTyndallParticleMedium.h"
+#include "vtkTyndallParticles.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkVolume.h"
 #include "vtkVolumetricPathTracer.h"
@@ -228,7 +228,7 @@ void AddColors(vtkPolyData* particles)
 
 // The path tracer's one bounce against the single-scattering reference:
 // both sample the particles exactly (delta tracking needs a majorant above
-// the particles' sum, vtkTyndallParticleMedium::GetDensityBound()).
+// the particles' sum, vtkTyndallParticles::GetDensityBound()).
 void PathTracer()
 {
   vtkSmartPointer<vtkPolyData> particles = tyndall_test::MakeParticles(3000);
@@ -324,7 +324,7 @@ void Colors()
   vtkSmartPointer<vtkPolyData> particles = tyndall_test::MakeParticles(3000);
   AddColors(particles);
   // The exact albedo against a sum over every particle, at random points.
-  vtkTyndallParticleMedium medium;
+  vtkTyndallParticles medium;
   std::string error;
   Check(medium.Update(particles, error) && medium.HasColors(), "coloured particles are read");
   vtkDataArray* radius = particles->GetPointData()->GetArray("radius");

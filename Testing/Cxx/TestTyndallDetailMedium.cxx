@@ -314,7 +314,7 @@ void TestOpticalDepth(Scene& scene, Random& random)
   {
     double o[3], d[3], t0, t1;
     RandomRay(random, trial, o, d, t0, t1);
-    const double closed = scene.Detail.OpticalDepth(o, d, t0, t1);
+    const double closed = scene.Detail.ClosedFormDepth(o, d, t0, t1);
     const double exact = QuadratureDepth(scene.Detail, scene.Grid, o, d, t0, t1, true);
     if (exact > 0.0)
     {
@@ -358,10 +358,10 @@ void TestSampleDistance(Scene& scene, Random& random)
   {
     double o[3], d[3], t0, t1;
     RandomRay(random, trial, o, d, t0, t1);
-    const double total = scene.Detail.OpticalDepth(o, d, t0, t1);
+    const double total = scene.Detail.ClosedFormDepth(o, d, t0, t1);
     const double target = random.Uniform(0.0, 1.2) * total;
     double t;
-    const bool hit = scene.Detail.SampleDistance(o, d, t0, t1, target, t);
+    const bool hit = scene.Detail.ClosedFormDistance(o, d, t0, t1, target, t);
     if (hit != (target <= total))
     {
       worst = 1.0;
@@ -370,8 +370,8 @@ void TestSampleDistance(Scene& scene, Random& random)
     if (hit)
     {
       ++found;
-      worst = std::max(
-        worst, std::abs(scene.Detail.OpticalDepth(o, d, t0, t) - target) / std::max(total, 1e-300));
+      worst = std::max(worst,
+        std::abs(scene.Detail.ClosedFormDepth(o, d, t0, t) - target) / std::max(total, 1e-300));
     }
   }
   std::cout << "distance sampling: worst depth error / segment depth " << worst << " (" << found
@@ -392,10 +392,10 @@ void TestCollisionPhases(Scene& scene, Random& random)
   {
     double o[3], d[3], t0, t1;
     RandomRay(random, trial, o, d, t0, t1);
-    const double total = scene.Detail.OpticalDepth(o, d, t0, t1);
+    const double total = scene.Detail.ClosedFormDepth(o, d, t0, t1);
     vtkTyndallDetailMedium::PointPhases phases;
     double t;
-    if (!scene.Detail.SampleDistance(
+    if (!scene.Detail.ClosedFormDistance(
           o, d, t0, t1, random.Uniform(0.0, 1.0) * total, t, nullptr, &phases) ||
       !phases.Valid)
     {
@@ -404,8 +404,8 @@ void TestCollisionPhases(Scene& scene, Random& random)
     const double p[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
     double e[3] = { random.Uniform(-1.0, 1.0), random.Uniform(-1.0, 1.0),
       random.Uniform(-1.0, 1.0) }; // a new direction
-    const double plain = scene.Detail.OpticalDepth(p, e, 0.0, 1e30);
-    const double with = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &phases);
+    const double plain = scene.Detail.ClosedFormDepth(p, e, 0.0, 1e30);
+    const double with = scene.Detail.ClosedFormDepth(p, e, 0.0, 1e30, &phases);
     worst = std::max(worst, std::abs(with - plain) / std::max(plain, 1e-300));
     // The phases are really used: the same point's phases turned by pi
     // (negated) must change the depth.
@@ -415,27 +415,28 @@ void TestCollisionPhases(Scene& scene, Random& random)
       negated.Cos[i] = -negated.Cos[i];
       negated.Sin[i] = -negated.Sin[i];
     }
-    const double wrong = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &negated);
+    const double wrong = scene.Detail.ClosedFormDepth(p, e, 0.0, 1e30, &negated);
     reused += std::abs(wrong - plain) > 1e-6 * plain ? 1 : 0;
     // Phases of a point 0.01 away are turned by up to |k| x 0.01 (far above
     // the 1e-4 rad the reuse takes): they must be ignored.
     vtkTyndallDetailMedium::PointPhases moved = phases;
     moved.Point[0] += 0.01;
-    const double ignored = scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &moved);
+    const double ignored = scene.Detail.ClosedFormDepth(p, e, 0.0, 1e30, &moved);
     worst = std::max(worst, std::abs(ignored - plain) / std::max(plain, 1e-300));
     // The next flight from the collision, the phases both its start and
     // where the new collision's go (as the path tracer passes them).
     double ta, tb;
     const double target = 0.5 * plain;
-    const bool hitA = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, ta);
-    const bool hitB = scene.Detail.SampleDistance(p, e, 0.0, 1e30, target, tb, &phases, &phases);
+    const bool hitA = scene.Detail.ClosedFormDistance(p, e, 0.0, 1e30, target, ta);
+    const bool hitB =
+      scene.Detail.ClosedFormDistance(p, e, 0.0, 1e30, target, tb, &phases, &phases);
     worst = std::max(worst, hitA == hitB ? std::abs(ta - tb) / std::max(std::abs(ta), 1.0) : 1.0);
     const double q[3] = { p[0] + tb * e[0], p[1] + tb * e[1], p[2] + tb * e[2] };
     if (hitB && phases.Valid)
     {
       // ...and the phases left are those at the new collision.
-      const double from = scene.Detail.OpticalDepth(q, d, 0.0, 1e30);
-      const double reusing = scene.Detail.OpticalDepth(q, d, 0.0, 1e30, &phases);
+      const double from = scene.Detail.ClosedFormDepth(q, d, 0.0, 1e30);
+      const double reusing = scene.Detail.ClosedFormDepth(q, d, 0.0, 1e30, &phases);
       worst = std::max(worst, std::abs(reusing - from) / std::max(from, 1e-300));
     }
   }
@@ -456,7 +457,7 @@ void TestNegativeNoise(Scene& scene, Random& random)
   {
     double o[3], d[3], t0, t1;
     RandomRay(random, trial, o, d, t0, t1);
-    const double closed = scene.Detail.OpticalDepth(o, d, t0, t1);
+    const double closed = scene.Detail.ClosedFormDepth(o, d, t0, t1);
     const double clamped = QuadratureDepth(scene.Detail, scene.Grid, o, d, t0, t1, true);
     bounded = bounded && closed >= 0.0 && closed <= clamped * (1 + 1e-9) + 1e-12;
     below += closed < clamped * (1 - 1e-6) ? 1 : 0;
@@ -505,20 +506,20 @@ void TestConstantShape(Scene& scene, Random& random)
   {
     double o[3], d[3], t0, t1;
     ray(o, d, t0, t1);
-    const double total = scene.Detail.OpticalDepth(o, d, t0, t1);
+    const double total = scene.Detail.ClosedFormDepth(o, d, t0, t1);
     const double exact = QuadratureDepth(scene.Detail, scene.Grid, o, d, t0, t1, false);
     depthError = std::max(depthError, std::abs(total - exact) / std::max(exact, 1e-300));
     vtkTyndallDetailMedium::PointPhases phases;
     double t;
     const double target = random.Uniform(0.0, 0.6) * total;
-    if (!scene.Detail.SampleDistance(o, d, t0, t1, target, t, nullptr, &phases, &flights) ||
+    if (!scene.Detail.ClosedFormDistance(o, d, t0, t1, target, t, nullptr, &phases, &flights) ||
       target == 0.0)
     {
       continue;
     }
     ++found;
     sampleError =
-      std::max(sampleError, std::abs(scene.Detail.OpticalDepth(o, d, t0, t) - target) / total);
+      std::max(sampleError, std::abs(scene.Detail.ClosedFormDepth(o, d, t0, t) - target) / total);
     if (phases.Valid)
     {
       // A shadow ray from the collision in a new direction.
@@ -526,7 +527,7 @@ void TestConstantShape(Scene& scene, Random& random)
       double e[3] = { random.Uniform(-1.0, 1.0), random.Uniform(-1.0, 1.0), 0.5 };
       vtkMath::MultiplyScalar(e, vtkMath::Norm(d) / vtkMath::Norm(e));
       vtkTyndallDetailMedium::Work one;
-      scene.Detail.OpticalDepth(p, e, 0.0, 1e30, &phases, &one);
+      scene.Detail.ClosedFormDepth(p, e, 0.0, 1e30, &phases, &one);
       oneExitPass = oneExitPass && one.TrigonometricPasses == 1.0 && one.CellPasses == 0.0;
       ++shadowRays;
     }
@@ -579,7 +580,7 @@ void TestTiesAndGaps(Scene& scene)
       const double shift = start < 2 ? 0.0 : 0.5;
       const double o[3] = { (d[0] > 0 ? -1.0 : dims[0]) + shift + start,
         (d[1] > 0 ? -1.0 : dims[1]) + shift, (d[2] > 0 ? -1.0 : dims[2]) + shift + start % 2 };
-      const double closed = scene.Detail.OpticalDepth(o, d, 0.0, 40.0);
+      const double closed = scene.Detail.ClosedFormDepth(o, d, 0.0, 40.0);
       const double exact = QuadratureDepth(scene.Detail, scene.Grid, o, d, 0.0, 40.0, true);
       crossing += exact > 0.0 ? 1 : 0;
       worst = std::max(worst, std::abs(closed - exact) / std::max(exact, 1e-300));

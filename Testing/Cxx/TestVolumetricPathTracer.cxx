@@ -49,6 +49,7 @@
 #include "vtkVolumetricPathTracer.h"
 
 #include "TyndallTestCheck.h"
+#include "TyndallTestStatistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,6 +62,10 @@
 namespace
 {
 using tyndall_test::Check;
+using tyndall_test::CheckUnbiased;
+using tyndall_test::Compare;
+using tyndall_test::Report;
+using tyndall_test::Stats;
 constexpr int kSize = 24;
 
 // A Gaussian blob of scalars (peak 8) at 16^3 over [-1, 1]^3, a coloured
@@ -159,79 +164,6 @@ struct Scene
     this->Renderer->AddLight(spot);
   }
 };
-
-struct Stats
-{
-  double Global = 0.0; // z of the image sums, the largest |z| of the three channels
-  double MeanZ2 = 0.0;
-  double MaxZ = 0.0;
-  double Sum[2] = { 0.0, 0.0 };
-  int Count = 0;
-};
-
-// z statistics of a - b, each with its standard error (b's may be null: an
-// exact reference).
-Stats Compare(vtkImageData* a, vtkImageData* b, bool bHasError)
-{
-  Stats s;
-  vtkDataArray* la = a->GetPointData()->GetArray("Radiance");
-  vtkDataArray* ea = a->GetPointData()->GetArray("RadianceStandardError");
-  vtkDataArray* lb = b->GetPointData()->GetArray("Radiance");
-  vtkDataArray* eb = bHasError ? b->GetPointData()->GetArray("RadianceStandardError") : nullptr;
-  // Per channel: a path's channels are strongly correlated, so the sum over
-  // channels does not have the variance sum(SE^2).
-  double difference[3] = { 0.0, 0.0, 0.0 }, variance[3] = { 0.0, 0.0, 0.0 }, z2 = 0.0;
-  for (vtkIdType p = 0; p < la->GetNumberOfTuples(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = la->GetComponent(p, c) - lb->GetComponent(p, c);
-      const double e2 =
-        std::pow(ea->GetComponent(p, c), 2) + (eb ? std::pow(eb->GetComponent(p, c), 2) : 0.0);
-      s.Sum[0] += la->GetComponent(p, c);
-      s.Sum[1] += lb->GetComponent(p, c);
-      difference[c] += d;
-      variance[c] += e2;
-      if (e2 > 0.0)
-      {
-        const double z = d / std::sqrt(e2);
-        z2 += z * z;
-        s.MaxZ = std::max(s.MaxZ, std::abs(z));
-        ++s.Count;
-      }
-      else if (std::abs(d) > 1e-12)
-      {
-        s.MaxZ = std::numeric_limits<double>::infinity();
-      }
-    }
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    const double z = variance[c] > 0.0 ? difference[c] / std::sqrt(variance[c]) : 0.0;
-    s.Global = std::abs(z) > std::abs(s.Global) ? z : s.Global;
-  }
-  s.MeanZ2 = s.Count ? z2 / s.Count : 0.0;
-  return s;
-}
-
-void Report(const Stats& s, const std::string& what)
-{
-  std::cout << what << ": image sums " << s.Sum[0] << " vs " << s.Sum[1] << ", global z "
-            << s.Global << ", mean z^2 " << s.MeanZ2 << " over " << s.Count << ", max |z| "
-            << s.MaxZ << std::endl;
-}
-
-// The bounds of an unbiased comparison: |global z| < 4.5 (each channel), mean z^2 within
-// [0.75, 1.3] (its standard deviation is about sqrt(2 / Count) ~ 0.03 here),
-// and max |z| < 6.5 over ~1700 values (heavy-tailed estimates allowed for).
-void CheckUnbiased(const Stats& s, const std::string& what)
-{
-  Report(s, what);
-  Check(s.Count > 500, what + ": enough non-empty pixels");
-  Check(std::abs(s.Global) < 4.5, what + ": global z");
-  Check(s.MeanZ2 > 0.75 && s.MeanZ2 < 1.3, what + ": mean z^2");
-  Check(s.MaxZ < 6.5, what + ": max |z|");
-}
 
 vtkImageData* Trace(vtkVolumetricPathTracer* tracer, Scene& scene, int mode, int bounces,
   int samples, unsigned int seed)

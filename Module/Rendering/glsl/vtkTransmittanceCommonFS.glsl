@@ -128,8 +128,9 @@ bool tyndallClipped(vec3 x)
 }
 #endif
 
-// Procedural detail (vtkTransmittanceDetailFS.glsl) when TYNDALL_DETAIL_GROUPS > 0.
-//TYNDALL::Detail
+// The medium's own functions, from its adapter (vtkTransmittanceMediumAdapter):
+// procedural detail brings vtkTransmittanceDetailFS.glsl (TYNDALL_DETAIL_GROUPS > 0).
+//TYNDALL::Medium
 
 // The medium at a world point: the extinction (density scale applied),
 // returned; the colour (or albedo); and the point's transfer-table

@@ -470,12 +470,17 @@ vec4 tyndallSampledRay(vec3 p0, vec3 w, float tNear, float tFar)
 }
 #endif
 
-void main()
+// main()'s parts. The variants of a frame (the #if switches) live in these
+// functions, never in main() itself: each compiles to what the variant needs.
+
+// The start of this pass's part of the ray: the radiance and view
+// transmittance the previous pass left (TYNDALL_ACCUMULATE), or none. False
+// when there is nothing (more) to march: the pixel is then written (a ray
+// that has ended, or one sampled in closed form: TYNDALL_DETAIL_SAMPLES) or
+// discarded (a ray that misses the box) already.
+bool tyndallStartRay(vec3 p0, vec3 w, float tNear, float tFar, out vec3 radiance,
+  out TyndallTransmittance Tv)
 {
-  vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
-  vec2 windowXY = gl_FragCoord.xy * fragToWindow.xy + fragToWindow.zw;
-  float depthNdc =
-    2.0 * texture(depthTexture, windowXY / vec2(textureSize(depthTexture, 0))).r - 1.0;
 #if TYNDALL_ACCUMULATE
   vec4 previous = texelFetch(previousTexture, ivec2(gl_FragCoord.xy), 0);
 #if TYNDALL_CHROMATIC
@@ -483,7 +488,119 @@ void main()
 #else
   float previousTv = 1.0 - previous.a;
 #endif
+  if (!(tNear < tFar) || tyndallLargest(previousTv) < TYNDALL_VIEW_TERMINATION)
+  {
+    tyndallWrite(previous.rgb, previousTv); // nothing (more) to march
+    return false;
+  }
+#if TYNDALL_DETAIL_SAMPLES > 0
+  gl_FragData[0] = tyndallSampledRay(p0, w, tNear, tFar);
+  return false;
 #endif
+  radiance = previous.rgb;
+  Tv = previousTv;
+#else
+  if (!(tNear < tFar))
+  {
+    discard;
+  }
+  radiance = vec3(0.0);
+  Tv = TyndallTransmittance(1.0);
+#endif
+  return true;
+}
+
+// Empty-space skipping along the camera ray (TYNDALL_SKIP_EMPTY): the ray
+// in the majorant grid's blocks, and where the non-empty block the samples
+// are in ends.
+struct TyndallSkip
+{
+  vec3 Origin;
+  vec3 Direction;
+  float BlockEnd;
+};
+
+TyndallSkip tyndallStartSkipping(vec3 p0, vec3 w)
+{
+  TyndallSkip skip;
+  skip.Origin = vec3(0.0);
+  skip.Direction = vec3(0.0);
+#if TYNDALL_SKIP_EMPTY
+  tyndallBlockRay(p0, w, skip.Origin, skip.Direction);
+#endif
+  skip.BlockEnd = -1.0;
+  return skip;
+}
+
+// Whether the sample at ts lies in an empty block: then n has moved past
+// it (tyndallSkipEmpty()); never without skipping.
+bool tyndallSkipStep(inout TyndallSkip skip, float ts, inout int n, float tNear, float offset)
+{
+#if TYNDALL_SKIP_EMPTY
+  return tyndallSkipEmpty(skip.Origin, skip.Direction, ts, skip.BlockEnd, n, tNear, stepLength,
+    offset, endStep);
+#else
+  return false;
+#endif
+}
+
+// What a camera ray samples at x: the volume's medium or, with camera
+// guests (TYNDALL_CAMERA_GUESTS), the media it draws as one; its extinction
+// (0: empty), colour (per unit extinction) and what its emission needs.
+struct TyndallCameraSample
+{
+  float Sigma;
+  vec3 Color;
+  vec3 Emission;    // camera guests: the media's mixed emission colour
+  float TableCoord; // alone: the sample's position in the transfer table
+};
+
+TyndallCameraSample tyndallCameraSample(vec3 x)
+{
+  TyndallCameraSample s;
+#if TYNDALL_CAMERA_GUESTS
+  s.TableCoord = 0.0;
+  s.Sigma = tyndallCameraMedium(x, s.Color, s.Emission);
+#else
+  s.Emission = vec3(0.0);
+  s.Sigma = tyndallMedium(x, s.Color, s.TableCoord);
+#endif
+  return s;
+}
+
+// The sample's emission (scaled; per unit extinction) in single
+// scattering: from the transfer functions or the camera guests' mix
+// (TYNDALL_EMISSION); none otherwise.
+vec3 tyndallSampleEmission(TyndallCameraSample s)
+{
+#if TYNDALL_EMISSION && TYNDALL_CAMERA_GUESTS
+  return emissionScale * s.Emission;
+#elif TYNDALL_EMISSION
+  return emissionScale * tyndallEmissionColor(s.TableCoord);
+#else
+  return vec3(0.0);
+#endif
+}
+
+// An emission array's light over the step of length dt at x (emission per
+// unit length, attenuated within the step and by Tv before it); none
+// without one (TYNDALL_EMISSION_ARRAY).
+vec3 tyndallStepArrayEmission(vec3 x, float sigma, float dt, TyndallTransmittance Tv)
+{
+#if TYNDALL_EMISSION_ARRAY
+  return Tv * emissionScale * tyndallArrayEmission(x) *
+    tyndallAttenuatedLength(sigma * extinctionColor, dt);
+#else
+  return vec3(0.0);
+#endif
+}
+
+void main()
+{
+  vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
+  vec2 windowXY = gl_FragCoord.xy * fragToWindow.xy + fragToWindow.zw;
+  float depthNdc =
+    2.0 * texture(depthTexture, windowXY / vec2(textureSize(depthTexture, 0))).r - 1.0;
   vec3 p0 = unproject(ndc, -1.0);
   vec3 p1 = unproject(ndc, depthNdc);
   vec3 w = normalize(p1 - p0);
@@ -491,37 +608,19 @@ void main()
   vec2 range = tyndallIntersectCameraBox(p0, w);
   float tNear = max(range.x, 0.0);
   float tFar = min(range.y, tDepth);
-#if TYNDALL_ACCUMULATE
-  if (!(tNear < tFar) || tyndallLargest(previousTv) < TYNDALL_VIEW_TERMINATION)
+  vec3 radiance;
+  TyndallTransmittance Tv;
+  if (!tyndallStartRay(p0, w, tNear, tFar, radiance, Tv))
   {
-    tyndallWrite(previous.rgb, previousTv); // nothing (more) to march
     return;
   }
-#if TYNDALL_DETAIL_SAMPLES > 0
-  gl_FragData[0] = tyndallSampledRay(p0, w, tNear, tFar);
-  return;
-#endif
-  vec3 radiance = previous.rgb;
-  TyndallTransmittance Tv = previousTv;
-#else
-  if (!(tNear < tFar))
-  {
-    discard;
-  }
-  vec3 radiance = vec3(0.0);
-  TyndallTransmittance Tv = TyndallTransmittance(1.0);
-#endif
   float offset = 0.5;
   if (jitter != 0)
   {
     // A fixed per-pixel hash: the same pixel gets the same offset every frame.
     offset = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
   }
-#if TYNDALL_SKIP_EMPTY
-  vec3 bo, bd;
-  tyndallBlockRay(p0, w, bo, bd);
-  float tBlockEnd = -1.0; // the non-empty block the samples are in ends here
-#endif
+  TyndallSkip skip = tyndallStartSkipping(p0, w);
   // Step n spans [tNear + n stepLength, tNear + (n + 1) stepLength), the last
   // one cut at tFar; its sample lies at `offset` of it.
   int n = firstStep;
@@ -534,43 +633,26 @@ void main()
     }
     float dt = min(stepLength, tFar - t0);
     float ts = t0 + offset * dt;
-#if TYNDALL_SKIP_EMPTY
-    if (tyndallSkipEmpty(bo, bd, ts, tBlockEnd, n, tNear, stepLength, offset, endStep))
+    if (tyndallSkipStep(skip, ts, n, tNear, offset))
     {
       continue;
     }
-#endif
     ++n;
     vec3 x = p0 + ts * w;
-    vec3 color;
-#if TYNDALL_CAMERA_GUESTS
-    vec3 emission;
-    float sigma = tyndallCameraMedium(x, color, emission);
-#else
-    float tableCoord;
-    float sigma = tyndallMedium(x, color, tableCoord);
-#endif
-#if TYNDALL_EMISSION_ARRAY
-    // Emission per unit length over the step, attenuated within it.
-    radiance += Tv * emissionScale * tyndallArrayEmission(x) *
-      tyndallAttenuatedLength(sigma * extinctionColor, dt);
-#endif
+    TyndallCameraSample medium = tyndallCameraSample(x);
+    float sigma = medium.Sigma;
+    radiance += tyndallStepArrayEmission(x, sigma, dt, Tv);
     if (sigma > 0.0)
     {
       TyndallTransmittance stepOpacity = 1.0 - exp(-sigma * extinctionColor * dt);
       vec3 source; // per unit sigma_t
       if (scatteringModel == 0)
       {
-        source = color;
+        source = medium.Color;
       }
       else
       {
-        source = color * inScattering(x, w, color);
-#if TYNDALL_EMISSION && TYNDALL_CAMERA_GUESTS
-        source += emissionScale * emission;
-#elif TYNDALL_EMISSION
-        source += emissionScale * tyndallEmissionColor(tableCoord);
-#endif
+        source = medium.Color * inScattering(x, w, medium.Color) + tyndallSampleEmission(medium);
       }
       radiance += Tv * stepOpacity * source;
       Tv *= 1.0 - stepOpacity;

@@ -1,0 +1,627 @@
+#include "vtkTyndallGridMedium.h"
+
+#include "vtkAbstractMapper.h"
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkAlgorithm.h"
+#include "vtkBlackbody.h"
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkParticipatingMediumMapper.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+namespace
+{
+// Finite range and counts of NaN and infinite values.
+template <typename T>
+void ScanScalars(const T* data, vtkIdType n, double range[2], vtkIdType& nan, vtkIdType& inf)
+{
+  range[0] = std::numeric_limits<double>::infinity();
+  range[1] = -std::numeric_limits<double>::infinity();
+  nan = inf = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = static_cast<double>(data[i]);
+    if (std::isnan(v))
+    {
+      ++nan;
+    }
+    else if (std::isinf(v))
+    {
+      ++inf;
+    }
+    else
+    {
+      range[0] = std::min(range[0], v);
+      range[1] = std::max(range[1], v);
+    }
+  }
+}
+
+bool AllFinite(const double* v, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+class vtkTyndallGridMedium::FieldBase
+{
+public:
+  virtual ~FieldBase() = default;
+  virtual double Scalar(const double p[3]) const = 0;
+};
+
+template <typename T>
+class vtkTyndallGridMedium::TypedField : public vtkTyndallGridMedium::FieldBase
+{
+public:
+  TypedField(const vtkTyndallGridMedium& medium)
+    : S(medium)
+  {
+  }
+  double Scalar(const double p[3]) const override { return this->S.Scalar(p); }
+
+private:
+  Sampler<T> S;
+};
+
+//------------------------------------------------------------------------------
+vtkTyndallGridMedium::vtkTyndallGridMedium() = default;
+
+//------------------------------------------------------------------------------
+vtkTyndallGridMedium::~vtkTyndallGridMedium() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
+{
+  this->Valid = this->UpdateScalars(volume, reporter) &&
+    this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
+    this->UpdateTable(volume, reporter);
+  if (this->Valid && this->Clip.Update(volume, this->IndexToWorld, this->IndexToData, reporter))
+  {
+    this->ExtinctionTime.Modified(); // the maps see the clipped medium
+  }
+  return this->Valid;
+}
+
+//------------------------------------------------------------------------------
+vtkDataSet* vtkTyndallGridMedium::ReadInput(vtkVolume* volume, vtkObject* reporter)
+{
+  vtkAbstractVolumeMapper* mapper = volume ? volume->GetMapper() : nullptr;
+  if (!mapper)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The volume has no mapper.");
+    return nullptr;
+  }
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    int port = 0;
+    if (vtkAlgorithm* producer = mapper->GetInputAlgorithm(0, 0, port))
+    {
+      producer->Update(port);
+    }
+  }
+  // A Tyndall mapper's medium image (its input, or a particle mapper's
+  // grid), else the mapper's input.
+  auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
+  vtkDataSet* input = tyndall ? tyndall->GetMediumImage() : mapper->GetDataSetInput();
+  if (!vtkImageData::SafeDownCast(input))
+  {
+    vtkErrorWithObjectMacro(reporter, << (input ? "The input is a " : "There is no input")
+                                      << (input ? input->GetClassName() : "")
+                                      << "; a vtkImageData is needed.");
+    return nullptr;
+  }
+  return input;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
+{
+  this->Input = vtkImageData::SafeDownCast(this->ReadInput(volume, reporter));
+  vtkImageData* image = this->Input;
+  if (!image)
+  {
+    return false;
+  }
+  vtkAbstractVolumeMapper* mapper = volume->GetMapper();
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(image, mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  // The image's MTime, not only its extent: VTK's convention lets a program
+  // edit the values in place and mark the image (not the array) modified.
+  // A spacing or origin change then rescans too, which is rare.
+  const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(image)),
+    static_cast<double>(image->GetMTime()),
+    static_cast<double>(reinterpret_cast<uintptr_t>(scalars)),
+    scalars ? static_cast<double>(scalars->GetMTime()) : -1.0, double(cellFlag) };
+  if (key == this->ScalarsKey)
+  {
+    // Unchanged: the same result, and the same error again without a rescan.
+    if (!this->Scalars)
+    {
+      vtkErrorWithObjectMacro(reporter, << this->ScalarsError);
+    }
+    return this->Scalars != nullptr;
+  }
+  this->ScalarsKey = key;
+  this->Scalars = nullptr;
+  this->Field = nullptr;
+  this->ScalarsTime.Modified();
+  std::ostringstream error;
+  const bool ok = this->ReadScalars(image, scalars, cellFlag, error, reporter);
+  this->ScalarsError = error.str();
+  if (!ok)
+  {
+    vtkErrorWithObjectMacro(reporter, << this->ScalarsError);
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalars, int cellFlag,
+  std::ostream& error, vtkObject* reporter)
+{
+  int extent[6];
+  image->GetExtent(extent);
+  int points[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    points[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+  }
+  if (points[0] < 1 || points[1] < 1 || points[2] < 1)
+  {
+    error << "The input image is empty.";
+    return false;
+  }
+  if (points[0] < 2 || points[1] < 2 || points[2] < 2)
+  {
+    error << "The input image is flat (" << points[0] << " x " << points[1] << " x " << points[2]
+          << " points): a volume needs at least 2 points along each "
+             "axis.";
+    return false;
+  }
+  if (!scalars)
+  {
+    error << "The input has no scalars to render (check the mapper's "
+             "scalar mode and array selection).";
+    return false;
+  }
+  if (cellFlag != 0 && cellFlag != 1)
+  {
+    error << "The selected scalars are field data, which cannot be rendered.";
+    return false;
+  }
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    error << "The scalars '" << (scalars->GetName() ? scalars->GetName() : "") << "' have "
+          << scalars->GetNumberOfComponents() << " components; one component is rendered.";
+    return false;
+  }
+  this->CellScalars = cellFlag == 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Dimensions[a] = this->CellScalars ? points[a] - 1 : points[a];
+    this->Extent[2 * a] = extent[2 * a];
+    this->Extent[2 * a + 1] = extent[2 * a + 1];
+  }
+  const vtkIdType expected =
+    static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  if (scalars->GetNumberOfTuples() != expected)
+  {
+    error << "The scalars have " << scalars->GetNumberOfTuples() << " values; the image needs "
+          << expected << ".";
+    return false;
+  }
+
+  // Raw access: the array itself, or a copy in doubles (other layouts, types).
+  vtkSmartPointer<vtkDataArray> values = scalars;
+  bool supported = false;
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(supported = true);
+  }
+  if (!supported || !scalars->HasStandardMemoryLayout())
+  {
+    vtkNew<vtkDoubleArray> copy;
+    copy->DeepCopy(scalars);
+    values = copy;
+  }
+  switch (values->GetDataType())
+  {
+    vtkTemplateMacro(ScanScalars(static_cast<const VTK_TT*>(values->GetVoidPointer(0)), expected,
+      this->FiniteRange, this->NaNCount, this->InfCount));
+  }
+  if (!(this->FiniteRange[0] <= this->FiniteRange[1]))
+  {
+    error << "The scalars have no finite value.";
+    return false;
+  }
+  if (this->NaNCount > 0 || this->InfCount > 0)
+  {
+    vtkWarningWithObjectMacro(
+      reporter, << this->NaNCount << " NaN scalars (missing data: "
+                << "samples interpolated from them are empty medium) and " << this->InfCount
+                << " infinite ones (given the finite range's ends, [" << this->FiniteRange[0]
+                << ", " << this->FiniteRange[1] << "]).");
+  }
+  this->Scalars = values;
+  switch (values->GetDataType())
+  {
+    vtkTemplateMacro(this->Field.reset(new TypedField<VTK_TT>(*this)));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter)
+{
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
+  const char* name = medium ? medium->GetEmissionArrayName() : nullptr;
+  vtkImageData* image = this->Input;
+  vtkDataSetAttributes* data = this->CellScalars
+    ? static_cast<vtkDataSetAttributes*>(image->GetCellData())
+    : static_cast<vtkDataSetAttributes*>(image->GetPointData());
+  vtkDataArray* array = name && *name ? data->GetArray(name) : nullptr;
+  const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(array)),
+    array ? static_cast<double>(array->GetMTime()) : -1.0, static_cast<double>(image->GetMTime()),
+    static_cast<double>(reinterpret_cast<uintptr_t>(this->Scalars.Get())) };
+  const bool wanted = name && *name;
+  if (!wanted)
+  {
+    if (!this->EmissionValues.empty())
+    {
+      this->EmissionValues.clear();
+      this->EmissionArrayTime.Modified(); // the GPU drops its texture
+    }
+    this->EmissionKey.clear();
+    return true;
+  }
+  if (!array || array->GetNumberOfComponents() != 1 ||
+    array->GetNumberOfTuples() != this->Scalars->GetNumberOfTuples())
+  {
+    if (array)
+    {
+      vtkErrorWithObjectMacro(reporter, << "The emission array '" << name
+                                        << "' must have one component and one value per sample "
+                                           "of the rendered scalars.");
+    }
+    else
+    {
+      vtkErrorWithObjectMacro(reporter, << "The emission array '" << name
+                                        << "' is not in the input's "
+                                        << (this->CellScalars ? "cell" : "point") << " data.");
+    }
+    this->EmissionValues.clear();
+    this->EmissionKey.clear();
+    return false;
+  }
+  if (key == this->EmissionKey)
+  {
+    return true;
+  }
+  this->EmissionKey = key;
+  const vtkIdType n = array->GetNumberOfTuples();
+  this->EmissionValues.resize(static_cast<size_t>(n));
+  double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = array->GetComponent(i, 0);
+    this->EmissionValues[i] = static_cast<float>(v);
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  if (!(lo <= hi))
+  {
+    lo = hi = 0.0;
+  }
+  for (float& v : this->EmissionValues)
+  {
+    v = std::isfinite(v) ? v : static_cast<float>(lo); // non-finite: the coolest value
+  }
+  this->EmissionRange[0] = lo;
+  this->EmissionRange[1] = hi;
+  this->EmissionArrayTime.Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::EmissionValue(const double p[3]) const
+{
+  return Sampler<float>(*this, this->EmissionValues.data()).Scalar(p);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter)
+{
+  vtkImageData* image = this->Input;
+  const double* spacing = image->GetSpacing();
+  const double* origin = image->GetOrigin();
+  const double* direction = image->GetDirectionMatrix()->GetData();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (spacing[a] == 0.0 || !std::isfinite(spacing[a]) || !std::isfinite(origin[a]))
+    {
+      vtkErrorWithObjectMacro(reporter, << "The input image's spacing must be non-zero and "
+                                           "finite, and its origin finite.");
+      return false;
+    }
+  }
+  const double directionDeterminant = vtkMatrix3x3::Determinant(direction);
+  if (!AllFinite(direction, 9) || directionDeterminant == 0.0 ||
+    !std::isfinite(directionDeterminant))
+  {
+    vtkErrorWithObjectMacro(reporter, << "The input image's direction matrix must be invertible.");
+    return false;
+  }
+  vtkMatrix4x4* matrix = volume->GetMatrix();
+  const double(*m)[4] = matrix->Element;
+  const double linear[9] = { m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1],
+    m[2][2] };
+  const double determinant = vtkMatrix3x3::Determinant(linear);
+  if (!AllFinite(*matrix->Element, 16) || m[3][0] != 0.0 || m[3][1] != 0.0 || m[3][2] != 0.0 ||
+    m[3][3] != 1.0 || determinant == 0.0 || !std::isfinite(determinant))
+  {
+    vtkErrorWithObjectMacro(reporter, << "The volume's matrix must be affine and invertible.");
+    return false;
+  }
+
+  // Field index -> data: origin + D diag(spacing) (extent start + index [+ 0.5]).
+  const double half = this->CellScalars ? 0.5 : 0.0;
+  vtkNew<vtkMatrix4x4> indexToData;
+  for (int r = 0; r < 3; ++r)
+  {
+    double translation = origin[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      const double a = direction[3 * r + c] * spacing[c];
+      indexToData->SetElement(r, c, a);
+      translation += a * (this->Extent[2 * c] + half);
+    }
+    indexToData->SetElement(r, 3, translation);
+  }
+  std::copy(*indexToData->Element, *indexToData->Element + 16, this->IndexToData);
+  vtkNew<vtkMatrix4x4> indexToWorld;
+  vtkMatrix4x4::Multiply4x4(matrix, indexToData, indexToWorld);
+  std::copy(*indexToWorld->Element, *indexToWorld->Element + 16, this->IndexToWorld);
+  vtkMatrix4x4::Invert(this->IndexToWorld, this->WorldToIndex);
+  for (int a = 0; a < 3; ++a)
+  {
+    this->BoxLow[a] = -half;
+    this->BoxHigh[a] = this->Dimensions[a] - 1 + half;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  vtkColorTransferFunction* emission = medium ? medium->GetEmissionColor() : nullptr;
+  const bool fromArray = !this->EmissionValues.empty();
+  if (!this->Parameters.Read(medium, emission || fromArray, reporter))
+  {
+    this->TableKey.clear();
+    return false;
+  }
+
+  // What the table depends on (not the property's other settings: changing
+  // the anisotropy or the ambient must not rebuild the GPU's maps), the
+  // extinction's part first.
+  auto identify = [](std::vector<double>& key, vtkObject* function)
+  {
+    key.push_back(static_cast<double>(reinterpret_cast<uintptr_t>(function)));
+    key.push_back(function ? static_cast<double>(function->GetMTime()) : -1.0);
+  };
+  std::vector<double> extinction = { property->GetScalarOpacityUnitDistance(0),
+    this->FiniteRange[0], this->FiniteRange[1], double(this->GetLinearExtinction()) };
+  identify(extinction, property->GetScalarOpacity(0));
+  const bool gray = property->GetColorChannels(0) == 1;
+  std::vector<double> key = extinction;
+  key.push_back(double(gray));
+  identify(key,
+    gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+         : static_cast<vtkObject*>(property->GetRGBTransferFunction(0)));
+  identify(key, emission);
+  const bool blackbody = fromArray && medium->GetBlackbody();
+  const double temperatureScale = medium ? medium->GetTemperatureScale() : 1.0;
+  if (fromArray)
+  {
+    key.insert(key.end(),
+      { this->EmissionRange[0], this->EmissionRange[1], double(blackbody), temperatureScale,
+        static_cast<double>(this->EmissionArrayTime.GetMTime()) });
+  }
+  if (key == this->TableKey)
+  {
+    return true;
+  }
+  this->TableKey.clear();
+  this->TableTime.Modified();
+  std::string error;
+  if (!this->Table.Build(property, emission, this->FiniteRange[0], this->FiniteRange[1], error,
+        this->GetLinearExtinction()))
+  {
+    this->ExtinctionKey.clear();
+    vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
+    return false;
+  }
+  if (fromArray)
+  {
+    // The emission colour over the array's range: a black body normalised
+    // to luminance 1 at the hottest value, or a colour transfer function.
+    const double hottest = this->EmissionRange[1] * temperatureScale;
+    vtkColorTransferFunction* colors =
+      emission ? emission : (gray ? nullptr : property->GetRGBTransferFunction(0));
+    this->Table.TabulateEmission(this->EmissionRange[0], this->EmissionRange[1],
+      [&](double v, double rgb[3])
+      {
+        if (blackbody)
+        {
+          vtkBlackbody::LinearSRGB(v * temperatureScale, hottest, rgb);
+        }
+        else if (colors)
+        {
+          colors->GetColor(v, rgb);
+        }
+        else
+        {
+          rgb[0] = rgb[1] = rgb[2] = property->GetGrayTransferFunction(0)->GetValue(v);
+        }
+      });
+  }
+  if (extinction != this->ExtinctionKey)
+  {
+    this->ExtinctionKey = extinction;
+    this->ExtinctionTime.Modified();
+  }
+  this->TableKey = key;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::WorldExtinction(const double world[3]) const
+{
+  if (!this->Valid)
+  {
+    return 0.0;
+  }
+  double p[3];
+  this->ToLocalPoint(world, p);
+  if (!InsideBox(p, this->BoxLow, this->BoxHigh))
+  {
+    return 0.0;
+  }
+  return this->FieldExtinction(p, nullptr);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::FieldScalar(const double p[3]) const
+{
+  return this->Field->Scalar(p);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::TablePosition(const double p[3], int& k, double& f) const
+{
+  const double s = this->FieldScalar(p);
+  if (std::isnan(s))
+  {
+    return false; // missing data
+  }
+  this->Table.Locate(s, k, f);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
+{
+  int k;
+  double f;
+  return this->TablePosition(p, k, f)
+    ? this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f)
+    : 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point) const
+{
+  int k;
+  double f;
+  if (!this->TablePosition(p, k, f))
+  {
+    return false;
+  }
+  point.Extinction = this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f);
+  if (!(point.Extinction > 0.0))
+  {
+    return false;
+  }
+  this->TableColors(p, k, f, point);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::FieldMaterial(const double p[3], Point& point) const
+{
+  int k;
+  double f;
+  if (!this->TablePosition(p, k, f))
+  {
+    return false;
+  }
+  this->TableColors(p, k, f, point);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallGridMedium::TableColors(const double p[3], int k, double f, Point& point) const
+{
+  vtkTyndallTransferTable::RGBAt(this->Table.Albedo, k, f, point.Albedo);
+  this->FieldAlbedo(p, point.Albedo);
+  if (this->Parameters.HasEmission && !this->GetEmissionFromArray())
+  {
+    vtkTyndallTransferTable::RGBAt(this->Table.Emission, k, f, point.Emission);
+  }
+  else
+  {
+    point.Emission[0] = point.Emission[1] = point.Emission[2] = 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::FieldAlbedo(const double*, double*) const
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallGridMedium::ArrayEmission(const double p[3], double rgb[3]) const
+{
+  if (!this->GetArrayEmission() || !this->Inside(p))
+  {
+    rgb[0] = rgb[1] = rgb[2] = 0.0;
+    return;
+  }
+  int k;
+  double f;
+  this->Table.LocateEmission(this->EmissionValue(p), k, f);
+  vtkTyndallTransferTable::RGBAt(this->Table.Emission, k, f, rgb);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::GetMajorant() const
+{
+  const std::vector<double>& extinction = this->Table.Extinction;
+  const double largest =
+    extinction.empty() ? 0.0 : *std::max_element(extinction.begin(), extinction.end());
+  return this->Parameters.DensityScale * largest;
+}

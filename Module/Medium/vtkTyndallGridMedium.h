@@ -1,0 +1,368 @@
+/**
+ * @class   vtkTyndallGridMedium
+ * @brief   a voxel medium: validated scalars, their placement and the tabulated transfer functions
+ *
+ * vtkTyndallGridMedium is the medium (vtkTyndallMedium) of a vtkVolume
+ * drawn by a Tyndall mapper: vtkTyndallSceneReader builds it, the GPU
+ * mapper uploads it (scalars as a 3-D texture, the table as a 2-D texture)
+ * and the CPU integrators ask it through vtkTyndallMedium's queries. The
+ * other media are built on it: a particle cloud's (vtkTyndallParticleMedium,
+ * a subclass whose scalars are the particles' grid and whose queries are
+ * their exact sum) and procedural detail's (vtkTyndallDetailMedium, whose
+ * shape it is). Every rule that decides what is rendered is applied here,
+ * once (the policies are listed in Documentation/rendering-model.md, "What
+ * is read from the scene"):
+ *
+ * - the scalars: vtkAbstractMapper::GetScalars() with the mapper's
+ *   ScalarMode, ArrayAccessMode, ArrayId and ArrayName (by default point
+ *   scalars, else cell scalars); one component; field data refused;
+ * - non-finite scalars: NaN is missing data, and every sample interpolated
+ *   from a NaN voxel (a NaN among the 8 voxels around it) is empty medium;
+ *   +-Inf take the finite range's ends; a warning counts them; no finite
+ *   value at all is an error;
+ * - geometry: the image's origin, spacing (non-zero, finite), direction
+ *   matrix and extent, then the vtkVolume's matrix (affine and invertible);
+ *   point scalars fill the box of the points, cell scalars the same box with
+ *   their values at the cell centres (constant over the outer half cells);
+ *   an image with fewer than 2 points along an axis is refused (flat);
+ * - the medium's parameters (vtkTyndallMediumParameters): the volume's
+ *   vtkParticipatingMediumProperty, or the defaults for a plain
+ *   vtkVolumeProperty;
+ * - the mapper's clipping planes and cropping (vtkTyndallClipRegion): the
+ *   medium is empty outside them, for the camera and for the light.
+ *
+ * "Field index" coordinates name the samples: index (i, j, k) is the
+ * sample (point or cell centre) i, j, k from the first one; the medium
+ * occupies the box [BoxLow, BoxHigh] of field index space.
+ *
+ * Internal to Tyndall::Medium; not wrapped.
+ */
+
+#ifndef vtkTyndallGridMedium_h
+#define vtkTyndallGridMedium_h
+
+#include "TyndallMediumModule.h"     // For export macro
+#include "vtkDataArray.h"            // For the sampler
+#include "vtkSmartPointer.h"         // For vtkSmartPointer
+#include "vtkTimeStamp.h"            // For vtkTimeStamp
+#include "vtkTyndallClipRegion.h"    // For the clip region
+#include "vtkTyndallMedium.h"        // For the interface
+#include "vtkTyndallTransferTable.h" // For the table
+#include "vtkType.h"                 // For vtkIdType
+
+#include <cmath>   // For std::isnan
+#include <limits>  // For std::numeric_limits
+#include <memory>  // For std::unique_ptr
+#include <ostream> // For std::ostream
+#include <string>  // For std::string
+#include <vector>  // For std::vector
+
+class vtkDataSet;
+class vtkImageData;
+class vtkObject;
+class vtkVolume;
+
+class TYNDALLMEDIUM_EXPORT vtkTyndallGridMedium : public vtkTyndallMedium
+{
+public:
+  vtkTyndallGridMedium();
+  ~vtkTyndallGridMedium() override;
+  vtkTyndallGridMedium(const vtkTyndallGridMedium&) = delete;
+  vtkTyndallGridMedium& operator=(const vtkTyndallGridMedium&) = delete;
+
+  /**
+   * Reads the medium of `volume` (its mapper's input, its matrix and
+   * property), updating the input first. Work is redone only for what
+   * changed. Errors and warnings are reported through `reporter`'s
+   * vtkErrorMacro / vtkWarningMacro; returns false on error (the medium is
+   * then not renderable).
+   */
+  bool Update(vtkVolume* volume, vtkObject* reporter);
+
+  ///@{
+  /**
+   * The scalars as selected (a standard-layout array, the input's own or a
+   * copy) and the number of samples per axis.
+   */
+  vtkDataArray* GetScalars() const { return this->Scalars; }
+  const int* GetDimensions() const { return this->Dimensions; }
+  ///@}
+
+  ///@{
+  /// The finite scalar range, and the count of NaN scalars.
+  const double* GetFiniteRange() const { return this->FiniteRange; }
+  vtkIdType GetNumberOfNaNScalars() const { return this->NaNCount; }
+  ///@}
+
+  ///@{
+  /**
+   * The box the medium fills, in field index coordinates, and the maps
+   * between field index coordinates and world coordinates (row-major 4x4).
+   */
+  const double* GetBoxLow() const override { return this->BoxLow; }
+  const double* GetBoxHigh() const override { return this->BoxHigh; }
+  const double* GetIndexToWorld() const { return this->IndexToWorld; }
+  const double* GetWorldToIndex() const { return this->WorldToIndex; }
+  /// Field index -> the image's data coordinates (before the volume's matrix).
+  const double* GetIndexToData() const { return this->IndexToData; }
+  ///@}
+
+  ///@{
+  /**
+   * Emission from a separate array (vtkParticipatingMediumProperty::
+   * EmissionArrayName): its values, one per sample like the scalars
+   * (non-finite values replaced by the finite minimum; empty without one),
+   * their finite range, and the value at a field index point (trilinear,
+   * clamped at the border like the scalars).
+   */
+  const std::vector<float>& GetEmissionValues() const { return this->EmissionValues; }
+  bool GetEmissionFromArray() const { return !this->EmissionValues.empty(); }
+  const double* GetEmissionRange() const { return this->EmissionRange; }
+  double EmissionValue(const double p[3]) const;
+  /// When the emission array (or its absence) last changed.
+  vtkMTimeType GetEmissionTime() const { return this->EmissionArrayTime.GetMTime(); }
+  ///@}
+
+  /// The transfer functions, tabulated.
+  const vtkTyndallTransferTable& GetTable() const { return this->Table; }
+
+  /// The medium's parameters (vtkParticipatingMediumProperty, or its defaults).
+  const vtkTyndallMediumParameters& GetParameters() const override { return this->Parameters; }
+
+  ///@{
+  /// vtkTyndallMedium's placement: field index coordinates are the local frame.
+  const char* GetKind() const override { return "grid"; }
+  const double* GetWorldToLocal() const override { return this->WorldToIndex; }
+  const double* GetLocalToWorld() const override { return this->IndexToWorld; }
+  ///@}
+
+  /// The clip region when it clips (GetClip() always).
+  const vtkTyndallClipRegion* GetClip() const override
+  {
+    return this->Clip.Enabled() ? &this->Clip : nullptr;
+  }
+  /// What the mapper's clipping planes and cropping keep (whether or not they clip).
+  const vtkTyndallClipRegion& GetClipRegion() const { return this->Clip; }
+
+  ///@{
+  /// vtkTyndallMedium: emission from an array, the majorant (the table's largest extinction), a
+  /// voxel.
+  bool GetArrayEmission() const override
+  {
+    return this->Parameters.HasEmission && this->GetEmissionFromArray();
+  }
+  void ArrayEmission(const double p[3], double rgb[3]) const override;
+  double GetMajorant() const override;
+  double GetFinestFeature() const override { return this->GetMinimumWorldSpacing(); }
+  ///@}
+
+  /**
+   * The scalar the CPU integrators read at the field index point p (NaN at
+   * missing data): trilinear interpolation of the scalars (Sampler), or for
+   * a particle cloud the particles' exact sum.
+   */
+  virtual double FieldScalar(const double p[3]) const;
+
+  /// The table position (k, f) of FieldScalar(p); false at missing data (NaN).
+  bool TablePosition(const double p[3], int& k, double& f) const;
+
+  /**
+   * The albedo (the table's, or FieldAlbedo()'s) and the emission colour
+   * (the table's, when the medium emits through it) at the table position
+   * (k, f) of the point p.
+   */
+  void TableColors(const double p[3], int k, double f, Point& point) const;
+
+  ///@{
+  /**
+   * When the scalars (values, selection, image) and the table last changed:
+   * the GPU re-uploads what is newer than its copy. The extinction time
+   * covers only what the table's extinction depends on (opacity function,
+   * unit distance, finite range): the transmittance maps are rebuilt on it,
+   * not on a colour or emission edit, and on a change of the clip region.
+   */
+  vtkMTimeType GetScalarsTime() const { return this->ScalarsTime.GetMTime(); }
+  vtkMTimeType GetTableTime() const { return this->TableTime.GetMTime(); }
+  vtkMTimeType GetExtinctionTime() const { return this->ExtinctionTime.GetMTime(); }
+  ///@}
+
+  /**
+   * A finite scalar as both renderers see it: +-Inf become the range's ends
+   * (NaN passes through: see Sampler).
+   */
+  double Clean(double v) const
+  {
+    return v < this->FiniteRange[0] ? this->FiniteRange[0]
+                                    : (v > this->FiniteRange[1] ? this->FiniteRange[1] : v);
+  }
+
+  /**
+   * Trilinear interpolation of the cleaned scalars at field index
+   * coordinates, clamped to the samples at the border (the GPU's
+   * clamp-to-edge); NaN when one of the 8 voxels around the point is NaN
+   * (missing data: empty medium). T is the scalars' value type.
+   */
+  template <typename T>
+  class Sampler
+  {
+  public:
+    Sampler(const vtkTyndallGridMedium& medium);
+    /// Another array of the same layout (the emission array), not cleaned.
+    Sampler(const vtkTyndallGridMedium& medium, const T* data);
+    double Scalar(const double p[3]) const;
+
+  private:
+    double Value(T v) const
+    {
+      if (std::numeric_limits<T>::has_quiet_NaN && this->Clean)
+      {
+        return this->Medium->Clean(static_cast<double>(v));
+      }
+      return static_cast<double>(v);
+    }
+    const vtkTyndallGridMedium* Medium;
+    const T* Data;
+    bool Clean = true;
+    int Dims[3];
+    vtkIdType Stride[3];
+  };
+
+  /**
+   * Sigma_t (density scale applied) at a world point, through the table:
+   * the CPU twin of the shaders' tyndallExtinction(); 0 outside the box.
+   */
+  double WorldExtinction(const double world[3]) const;
+
+protected:
+  double FieldExtinction(const double p[3], Work* work) const override;
+  bool FieldSample(const double p[3], Point& point) const override;
+  bool FieldMaterial(const double p[3], Point& point) const override;
+
+  /**
+   * The image whose scalars are the medium: the mapper's medium image
+   * (vtkParticipatingMediumMapper::GetMediumImage(): its input, or a
+   * particle cloud's grid). A subclass reads more of the mapper here first;
+   * null (with an error reported) when there is none to read.
+   */
+  virtual vtkDataSet* ReadInput(vtkVolume* volume, vtkObject* reporter);
+
+  /// Whether the table's extinction is the scalar itself (a particle cloud's density).
+  virtual bool GetLinearExtinction() const { return false; }
+
+  /// The albedo at p where it does not come from the table (a coloured particle cloud); false.
+  virtual bool FieldAlbedo(const double p[3], double color[3]) const;
+
+private:
+  bool UpdateScalars(vtkVolume* volume, vtkObject* reporter);
+  bool ReadScalars(vtkImageData* image, vtkDataArray* scalars, int cellFlag, std::ostream& error,
+    vtkObject* reporter);
+  bool UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter);
+  bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
+  bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
+
+  // The scalars and what they were read from (Input: during Update() only).
+  vtkImageData* Input = nullptr;
+  vtkSmartPointer<vtkDataArray> Scalars;
+  std::vector<double> ScalarsKey;
+  std::string ScalarsError;
+  vtkTimeStamp ScalarsTime;
+  bool Valid = false;
+  int Extent[6] = { 0, -1, 0, -1, 0, -1 };
+  int Dimensions[3] = { 0, 0, 0 };
+  bool CellScalars = false;
+  double FiniteRange[2] = { 0.0, 0.0 };
+  vtkIdType NaNCount = 0;
+  vtkIdType InfCount = 0;
+
+  // Geometry.
+  double BoxLow[3] = { 0.0, 0.0, 0.0 };
+  double BoxHigh[3] = { 1.0, 1.0, 1.0 };
+  double IndexToWorld[16];
+  double IndexToData[16];
+  double WorldToIndex[16];
+
+  vtkTyndallClipRegion Clip;
+  std::vector<float> EmissionValues;
+  double EmissionRange[2] = { 0.0, 0.0 };
+  std::vector<double> EmissionKey;
+  vtkTimeStamp EmissionArrayTime;
+
+  // The table and the parameters.
+  vtkTyndallTransferTable Table;
+  std::vector<double> TableKey;
+  vtkTimeStamp TableTime;
+  std::vector<double> ExtinctionKey;
+  vtkTimeStamp ExtinctionTime;
+  vtkTyndallMediumParameters Parameters;
+
+  // The scalars' sampler for their value type (FieldScalar()).
+  class FieldBase;
+  template <typename T>
+  class TypedField;
+  std::unique_ptr<FieldBase> Field;
+};
+
+//------------------------------------------------------------------------------
+template <typename T>
+vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium)
+  : Medium(&medium)
+  , Data(static_cast<const T*>(medium.GetScalars()->GetVoidPointer(0)))
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Dims[a] = medium.Dimensions[a];
+  }
+  this->Stride[0] = 1;
+  this->Stride[1] = this->Dims[0];
+  this->Stride[2] = static_cast<vtkIdType>(this->Dims[0]) * this->Dims[1];
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, const T* data)
+  : Sampler(medium)
+{
+  this->Data = data;
+  this->Clean = false;
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
+{
+  vtkIdType base = 0;
+  vtkIdType step[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const int n = this->Dims[a];
+    double x = p[a];
+    x = x > 0.0 ? (x < n - 1 ? x : n - 1) : 0.0;
+    int i = static_cast<int>(x);
+    if (i > n - 2)
+    {
+      i = n > 1 ? n - 2 : 0;
+    }
+    f[a] = x - i;
+    base += i * this->Stride[a];
+    step[a] = n > 1 ? this->Stride[a] : 0;
+  }
+  const T* d = this->Data + base;
+  const double c000 = this->Value(d[0]);
+  const double c100 = this->Value(d[step[0]]);
+  const double c010 = this->Value(d[step[1]]);
+  const double c110 = this->Value(d[step[0] + step[1]]);
+  const double c001 = this->Value(d[step[2]]);
+  const double c101 = this->Value(d[step[0] + step[2]]);
+  const double c011 = this->Value(d[step[1] + step[2]]);
+  const double c111 = this->Value(d[step[0] + step[1] + step[2]]);
+  const double c00 = c000 + f[0] * (c100 - c000);
+  const double c10 = c010 + f[0] * (c110 - c010);
+  const double c01 = c001 + f[0] * (c101 - c001);
+  const double c11 = c011 + f[0] * (c111 - c011);
+  const double c0 = c00 + f[1] * (c10 - c00);
+  const double c1 = c01 + f[1] * (c11 - c01);
+  return c0 + f[2] * (c1 - c0);
+}
+
+#endif

@@ -1,0 +1,136 @@
+/**
+ * @class   vtkTyndallTransferTable
+ * @brief   a medium's transfer functions, tabulated once for both renderers
+ *
+ * The GPU mapper uploads this table as a 2-D texture and samples it with
+ * linear filtering; the CPU reference interpolates the same entries the same
+ * way. Size entries (4096) tabulate, at the scalar values
+ * v_i = Minimum + i (Maximum - Minimum) / (Size - 1):
+ *
+ * - Extinction: sigma_t per world unit at DensityScale 1, from VTK's opacity
+ *   semantics (vtkTransmittanceMapMath::ExtinctionFromOpacity of the scalar
+ *   opacity and its unit distance); interpolated linearly in sigma_t; with
+ *   `linearExtinction` (a particle medium) the scalar itself (its negative
+ *   part 0), the opacity unused;
+ * - Albedo: the colour transfer function (RGB, or grey when the property has
+ *   one colour channel);
+ * - Emission: the emission colour transfer function (zero without one).
+ *
+ * Minimum and Maximum are the data's finite scalar range.
+ *
+ * Lookup (both renderers): x = clamp((s - Minimum) * Scale, 0, Size - 1),
+ * k = min(floor(x), Size - 2), f = x - k, value = entry k + f (entry k+1 -
+ * entry k). On the GPU: texture coordinate s * TextureScale + TextureShift
+ * on a Size-texel row (texel centres), the same lookup.
+ *
+ * Internal to Tyndall::Medium; not wrapped.
+ */
+
+#ifndef vtkTyndallTransferTable_h
+#define vtkTyndallTransferTable_h
+
+#include "TyndallMediumModule.h" // For export macro
+
+#include <functional> // For std::function
+#include <string>     // For std::string
+#include <vector>     // For std::vector
+
+class vtkColorTransferFunction;
+class vtkVolumeProperty;
+
+class TYNDALLMEDIUM_EXPORT vtkTyndallTransferTable
+{
+public:
+  /// The number of entries (the GPU texture's width).
+  static constexpr int Size = 4096;
+
+  ///@{
+  /// The GPU texture's rows (GetTexture()).
+  static constexpr int AlbedoRow = 0;
+  static constexpr int EmissionRow = 1;
+  static constexpr int Rows = 2;
+  ///@}
+
+  /**
+   * Tabulates component 0 of `property` (and `emission`, may be null) over
+   * the finite scalar range [lo, hi]. False with `error` set when the
+   * property cannot be used (non-positive or non-finite unit distance).
+   */
+  bool Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission, double lo, double hi,
+    std::string& error, bool linearExtinction = false);
+
+  double Minimum = 0.0;
+  double Maximum = 1.0;
+  /// Entries per scalar unit, (Size - 1) / (Maximum - Minimum); 0 for a single value.
+  double Scale = 0.0;
+  std::vector<double> Extinction;
+  std::vector<double> Albedo;   // RGB
+  std::vector<double> Emission; // RGB
+
+  ///@{
+  /**
+   * Emission from a separate array (vtkParticipatingMediumProperty::
+   * EmissionArrayName): the Emission entries then tabulate the emission
+   * colour over that array's finite range [lo, hi] instead, at
+   * EmissionMinimum + i / EmissionEntries; `color(v, rgb)` gives the colour
+   * of value v. LocateEmission() and EmissionTextureScale() / Shift() are
+   * Locate() and TextureScale() / Shift() for it.
+   */
+  void TabulateEmission(double lo, double hi, const std::function<void(double, double[3])>& color);
+  bool EmissionFromArray = false;
+  double EmissionMinimum = 0.0;
+  double EmissionEntries = 0.0;
+  void LocateEmission(double v, int& k, double& f) const
+  {
+    Position((v - this->EmissionMinimum) * this->EmissionEntries, k, f);
+  }
+  double EmissionTextureScale() const { return this->EmissionEntries / Size; }
+  double EmissionTextureShift() const
+  {
+    return 0.5 / Size - this->EmissionMinimum * this->EmissionEntries / Size;
+  }
+  ///@}
+
+  /// The table position of scalar s (see the class description).
+  void Locate(double s, int& k, double& f) const
+  {
+    Position((s - this->Minimum) * this->Scale, k, f);
+  }
+  /// Entry k and fraction f of the table position x (clamped to the table).
+  static void Position(double x, int& k, double& f)
+  {
+    x = x > 0.0 ? (x < Size - 1 ? x : Size - 1) : 0.0;
+    k = static_cast<int>(x);
+    k = k < Size - 2 ? k : Size - 2;
+    f = x - k;
+  }
+  double ExtinctionAt(int k, double f) const
+  {
+    return this->Extinction[k] + f * (this->Extinction[k + 1] - this->Extinction[k]);
+  }
+  static void RGBAt(const std::vector<double>& table, int k, double f, double rgb[3])
+  {
+    const double* a = table.data() + 3 * k;
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb[c] = a[c] + f * (a[c + 3] - a[c]);
+    }
+  }
+
+  ///@{
+  /**
+   * The GPU's texture coordinate along the table: s * TextureScale() +
+   * TextureShift() (texel i's centre is at (i + 0.5) / Size).
+   */
+  double TextureScale() const { return this->Scale / Size; }
+  double TextureShift() const { return 0.5 / Size - this->Minimum * this->Scale / Size; }
+  ///@}
+
+  /**
+   * The GPU layout: Rows RGBA float rows of Size texels; row AlbedoRow =
+   * (albedo, extinction), row EmissionRow = (emission, 0).
+   */
+  void GetTexture(std::vector<float>& rgba) const;
+};
+
+#endif

@@ -1,0 +1,383 @@
+#include "vtkSingleScatteringReference.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkTyndallReferenceScene.h"
+#include "vtkTyndallSceneReader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkSingleScatteringReference);
+
+namespace
+{
+// The most steps one ray may take across the volume's box.
+constexpr double kMaxStepsPerRay = 1.0e7;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Everything the rendering loop reads; read only inside the loop.
+struct Scene : public vtkTyndallReferenceScene
+{
+  double Step = 1.0;
+  double LightStep = 1.0;
+  double Threshold = 0.0;
+  double MaxOpticalDepth = kInfinity;
+  bool LightIgnoresClipping = false;
+};
+
+using Point = vtkTyndallMedium::Point;
+using LocalRays = vtkTyndallReferenceScene::LocalRays;
+
+class RowRenderer
+{
+public:
+  explicit RowRenderer(const Scene& scene)
+    : S(&scene)
+  {
+  }
+
+  // The light transmittance from the world point x to `light`, per channel.
+  void PointTransmittance(
+    const Scene::LightSource& light, const double x[3], double transmittance[3]) const
+  {
+    double l[3], factor, tMax;
+    this->S->LightGeometry(light, x, l, factor, tMax);
+    const double grey = this->LightTransmittance(x, nullptr, 0.0, l, tMax);
+    for (int c = 0; c < 3; ++c)
+    {
+      transmittance[c] = this->S->GetChromatic() ? this->S->ChannelTransmittance(grey, c) : grey;
+    }
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      for (int i = 0; i < this->S->Width; ++i)
+      {
+        const vtkIdType pixel = j * this->S->Width + i;
+        double transmittance[3];
+        this->RenderPixel(i, static_cast<int>(j), this->S->Radiance + 3 * pixel, transmittance);
+        if (this->S->GetChromatic())
+        {
+          std::copy(transmittance, transmittance + 3, this->S->Transmittance + 3 * pixel);
+        }
+        else
+        {
+          this->S->Transmittance[pixel] = transmittance[0];
+        }
+      }
+    }
+  }
+
+private:
+  const Scene* S;
+
+  // T_l from the world point x along the unit world direction l, up to the
+  // world distance tMax: through every medium of the scene (each up to its
+  // box's exit). `camera` (unless null) holds the camera ray's images, whose
+  // points at the distance t are x's in the camera media's frames.
+  double LightTransmittance(
+    const double x[3], const LocalRays* camera, double t, const double l[3], double tMax) const
+  {
+    const Scene& s = *this->S;
+    double own = 0.0, guests = 0.0;
+    for (size_t k = 0; k < s.Media.size(); ++k)
+    {
+      if (k > 0 && guests > s.MaxOpticalDepth)
+      {
+        break; // the guests have darkened the light past the threshold already
+      }
+      const vtkTyndallMedium& medium = *s.Media[k].Medium;
+      double p[3], d[3];
+      if (camera && s.Media[k].Camera)
+      {
+        camera->At(static_cast<int>(k), t, p);
+      }
+      else
+      {
+        medium.ToLocalPoint(x, p);
+      }
+      medium.ToLocalDirection(l, d);
+      if (k == 0)
+      {
+        own = medium.OpticalDepth(
+          p, d, 0.0, tMax, s.LightStep, s.MaxOpticalDepth, !s.LightIgnoresClipping);
+      }
+      else
+      {
+        guests += medium.OpticalDepth(p, d, 0.0, tMax, s.LightStep, s.MaxOpticalDepth - guests);
+      }
+    }
+    return std::exp(-guests) * std::exp(-own);
+  }
+
+  // The pixel's radiance and view transmittance per channel (equal
+  // channels without a coloured extinction).
+  void RenderPixel(int i, int j, double* radiance, double transmittance[3]) const
+  {
+    const Scene& s = *this->S;
+    radiance[0] = radiance[1] = radiance[2] = 0.0;
+    transmittance[0] = transmittance[1] = transmittance[2] = 1.0;
+    // Unproject the pixel centre at the near and far planes.
+    double origin[3], w[3], rayLength;
+    if (s.DrawnByAnother || !s.CameraRay(i, j, origin, w, rayLength))
+    {
+      return; // nothing, or drawn by the first volume of its camera group
+    }
+    LocalRays rays;
+    double t0 = 0.0, t1 = rayLength;
+    if (!s.ClipToCameraMedia(origin, w, rays, t0, t1))
+    {
+      return;
+    }
+    const double steps = std::max(1.0, std::ceil((t1 - t0) / s.Step));
+    const int n = static_cast<int>(steps);
+    const double dt = (t1 - t0) / n;
+    const vtkTyndallMedium& own = *s.Media[0].Medium;
+    const bool arrayEmission = own.GetArrayEmission();
+    const double* extinctionColor = s.Parameters->ExtinctionColor;
+
+    double* Tv = transmittance;
+    double* L = radiance;
+    for (int m = 0; m < n; ++m)
+    {
+      const double t = t0 + (m + 0.5) * dt;
+      Point point;
+      const bool dense = this->CameraMedium(rays, t, point);
+      double sigmaC[3]; // per channel
+      for (int c = 0; c < 3; ++c)
+      {
+        sigmaC[c] = dense ? point.Extinction * extinctionColor[c] : 0.0;
+      }
+      if (arrayEmission)
+      {
+        // Emission per unit length, attenuated within the step.
+        double p[3], e[3];
+        rays.At(0, t, p);
+        own.ArrayEmission(p, e);
+        for (int c = 0; c < 3; ++c)
+        {
+          const double weight =
+            Tv[c] * (sigmaC[c] > 0.0 ? -std::expm1(-sigmaC[c] * dt) / sigmaC[c] : dt);
+          L[c] += weight * s.Parameters->EmissionScale * e[c];
+        }
+      }
+      if (!dense)
+      {
+        continue;
+      }
+      double J[3];
+      this->Source(point, origin, w, t, rays, J);
+      // The step's medium is constant: integrate it exactly.
+      for (int c = 0; c < 3; ++c)
+      {
+        const double a = -std::expm1(-sigmaC[c] * dt);
+        L[c] += Tv[c] * J[c] * a;
+        Tv[c] *= 1.0 - a;
+      }
+      if (std::max(std::max(Tv[0], Tv[1]), Tv[2]) < s.Threshold)
+      {
+        break;
+      }
+    }
+  }
+
+  // What the camera rays see at the distance t: the extinction of the
+  // camera media summed, with their colours and emission colours (per unit
+  // extinction) mixed in proportion to their extinctions (GPU twin:
+  // tyndallCameraMedium()). False for empty medium.
+  bool CameraMedium(const LocalRays& rays, double t, Point& mixed) const
+  {
+    const Scene& s = *this->S;
+    mixed = Point();
+    for (size_t k = 0; k < s.Media.size(); ++k)
+    {
+      Point point;
+      double p[3];
+      rays.At(static_cast<int>(k), t, p);
+      if (s.Media[k].Camera && s.Media[k].Medium->Sample(p, point))
+      {
+        mixed.Extinction += point.Extinction;
+        for (int c = 0; c < 3; ++c)
+        {
+          mixed.Albedo[c] += point.Extinction * point.Albedo[c];
+          mixed.Emission[c] += point.Extinction * point.Emission[c];
+        }
+      }
+    }
+    if (!(mixed.Extinction > 0.0))
+    {
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      mixed.Albedo[c] /= mixed.Extinction;
+      mixed.Emission[c] /= mixed.Extinction;
+    }
+    return true;
+  }
+
+  // The source term J of a sample `point` at the distance t along the camera
+  // ray origin + t w (its images `rays`).
+  void Source(const Point& point, const double origin[3], const double w[3], double t,
+    const LocalRays& rays, double J[3]) const
+  {
+    const Scene& s = *this->S;
+    const double* color = point.Albedo;
+    if (!s.Parameters->GetSingleScattering())
+    {
+      std::copy(color, color + 3, J);
+      return;
+    }
+    const double ambient = s.Parameters->AmbientIntensity;
+    double in[3] = { ambient, ambient, ambient };
+    if (color[0] != 0.0 || color[1] != 0.0 || color[2] != 0.0)
+    {
+      const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
+      s.AddInScattering(
+        x, w, color,
+        [&](const double l[3], double tMax)
+        { return this->LightTransmittance(x, &rays, t, l, tMax); },
+        in);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] = color[c] * in[c] + s.Parameters->EmissionScale * point.Emission[c];
+    }
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+vtkSingleScatteringReference::vtkSingleScatteringReference() = default;
+
+//------------------------------------------------------------------------------
+vtkSingleScatteringReference::~vtkSingleScatteringReference() = default;
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The steps (by default a quarter of the camera media's finest feature: a
+// voxel along the shortest axis, or half the detail's shortest wavelength)
+// and early termination; false (with an error through `reporter`) for steps
+// too small.
+bool SetUpSteps(
+  double stepSize, double lightStepSize, double threshold, Scene& scene, vtkObject* reporter)
+{
+  scene.Step = stepSize > 0.0 ? stepSize : scene.GetCameraFinestFeature() / 4.0;
+  scene.LightStep = lightStepSize > 0.0 ? lightStepSize : scene.Step;
+  if (!(scene.Step > 0.0) || !(scene.LightStep > 0.0) ||
+    scene.GetDiagonals() / std::min(scene.Step, scene.LightStep) > kMaxStepsPerRay)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: the step " << scene.Step << " (light step "
+                                      << scene.LightStep << ") would take more than "
+                                      << kMaxStepsPerRay
+                                      << " steps across the volume and its guests; set a larger "
+                                         "StepSize / "
+                                         "LightStepSize.");
+    return false;
+  }
+  scene.Threshold = threshold;
+  // March the light until the faintest octave and channel cannot see it.
+  scene.MaxOpticalDepth = scene.Parameters->LightDepthLimit(threshold);
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkSingleScatteringReference::RenderImage(
+  vtkRenderer* renderer, vtkVolume* volume, int width, int height)
+{
+  vtkTyndallSceneReader& tyndall = *this->SceneReader;
+  Scene scene;
+  if (!scene.ReadScene(tyndall, renderer, volume, width, height, this) ||
+    !SetUpSteps(
+      this->StepSize, this->LightStepSize, this->EarlyTerminationThreshold, scene, this) ||
+    !scene.SetUpView(tyndall, renderer, this))
+  {
+    return false;
+  }
+  scene.LightIgnoresClipping = this->LightIgnoresClipping;
+
+  // The output.
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  vtkNew<vtkDoubleArray> radiance;
+  radiance->SetName("Radiance");
+  radiance->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> transmittance;
+  transmittance->SetName("Transmittance");
+  transmittance->SetNumberOfComponents(scene.GetChromatic() ? 3 : 1);
+  if (!radiance->Allocate(3 * pixels) ||
+    !transmittance->Allocate(transmittance->GetNumberOfComponents() * pixels))
+  {
+    vtkErrorMacro(<< "Render: cannot allocate a " << width << " x " << height << " image.");
+    return false;
+  }
+  radiance->SetNumberOfTuples(pixels);
+  transmittance->SetNumberOfTuples(pixels);
+  scene.Radiance = radiance->GetPointer(0);
+  scene.Transmittance = transmittance->GetPointer(0);
+
+  const auto rows = [&](vtkIdType begin, vtkIdType end)
+  {
+    RowRenderer renderer(scene);
+    vtkSMPTools::For(begin, end, 1, renderer);
+  };
+  if (!scene.RenderRowBatches(
+        this->AbortExecute, [this](double progress) { this->UpdateProgress(progress); }, rows))
+  {
+    return false;
+  }
+
+  scene.SetOutput(this->Output, radiance, transmittance);
+  this->LastStepSize = scene.Step;
+  this->LastLightStepSize = scene.LightStep;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSingleScatteringReference::ComputeLightTransmittance(vtkRenderer* renderer,
+  vtkVolume* volume, int light, const double point[3], double transmittance[3])
+{
+  transmittance[0] = transmittance[1] = transmittance[2] = 1.0;
+  vtkTyndallSceneReader& tyndall = *this->SceneReader;
+  Scene scene;
+  if (!point || !scene.ReadScene(tyndall, renderer, volume, 1, 1, this) ||
+    !SetUpSteps(
+      this->StepSize, this->LightStepSize, this->EarlyTerminationThreshold, scene, this) ||
+    !scene.SetUpView(tyndall, renderer, this))
+  {
+    return false;
+  }
+  if (light < 0 || light >= static_cast<int>(scene.Lights.size()))
+  {
+    vtkErrorMacro(<< "ComputeLightTransmittance: light " << light << " is not one of the scene's "
+                  << scene.Lights.size() << " lights.");
+    return false;
+  }
+  scene.LightIgnoresClipping = this->LightIgnoresClipping;
+  RowRenderer(scene).PointTransmittance(scene.Lights[light], point, transmittance);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSingleScatteringReference::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "StepSize: " << this->StepSize << "\n";
+  os << indent << "LightStepSize: " << this->LightStepSize << "\n";
+  os << indent << "EarlyTerminationThreshold: " << this->EarlyTerminationThreshold << "\n";
+  os << indent << "LightIgnoresClipping: " << this->LightIgnoresClipping << "\n";
+  os << indent << "LastStepSize: " << this->LastStepSize << "\n";
+  os << indent << "LastLightStepSize: " << this->LastLightStepSize << "\n";
+}

@@ -1,0 +1,84 @@
+#include "vtkTransmittanceGridAdapter.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkTyndallTransferTable.h"
+
+//------------------------------------------------------------------------------
+const vtkTyndallGridMedium& vtkTransmittanceGridAdapter::GetGrid(
+  const vtkTyndallMedium& medium) const
+{
+  // For() gives this adapter grid media only.
+  return static_cast<const vtkTyndallGridMedium&>(medium);
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittanceMediumTextures::Extras vtkTransmittanceGridAdapter::GetExtras(
+  const vtkTyndallMedium&) const
+{
+  return {};
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium,
+  const vtkTransmittanceMediumTextures& textures, Variant& variant) const
+{
+  const vtkTyndallGridMedium& grid = this->GetGrid(medium);
+  variant.MissingData = textures.GetValidityTexture() != nullptr;
+  variant.Clip = grid.GetClip() != nullptr;
+  variant.Chromatic = grid.GetParameters().GetChromatic();
+  // Emission from a separate array glows where the extinction is 0: no
+  // block is empty then.
+  variant.SkipEmpty = variant.SkipEmpty && !grid.GetEmissionFromArray();
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceGridAdapter::DeclareColorSwitches(
+  const vtkTyndallMedium& medium, Variant& variant) const
+{
+  const vtkTyndallGridMedium& grid = this->GetGrid(medium);
+  const vtkTyndallMediumParameters& parameters = grid.GetParameters();
+  const bool emits = parameters.HasEmission && parameters.EmissionScale > 0.0;
+  variant.EmissionArray = emits && grid.GetEmissionFromArray();
+  variant.Emission = emits && !variant.EmissionArray;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
+  const vtkTyndallMedium& medium, const vtkTransmittanceMediumTextures& textures) const
+{
+  const vtkTyndallGridMedium& grid = this->GetGrid(medium);
+  const vtkTyndallTransferTable& table = grid.GetTable();
+  program->SetUniformi("volumeTexture", textures.GetVolumeTexture()->GetTextureUnit());
+  if (vtkTextureObject* validity = textures.GetValidityTexture())
+  {
+    // Declared only by the missing-data variant.
+    program->SetUniformi("validityTexture", validity->GetTextureUnit());
+  }
+  if (vtkTextureObject* blocks = textures.GetBlockTexture())
+  {
+    // Declared only by the skipping variant.
+    const int* counts = textures.GetMajorantGrid().GetBlockCounts();
+    const float blockCount[3] = { float(counts[0]), float(counts[1]), float(counts[2]) };
+    program->SetUniformi("blockTexture", blocks->GetTextureUnit());
+    program->SetUniform3f("blockCount", blockCount);
+    program->SetUniform3f("boxToBlockScale", textures.GetBlockScale());
+    program->SetUniform3f("boxToBlockShift", textures.GetBlockShift());
+  }
+  program->SetUniformi("transferTexture", textures.GetTransferTexture()->GetTextureUnit());
+  program->SetUniform3f("volumeTexScale", textures.GetTextureScale());
+  program->SetUniform3f("volumeTexShift", textures.GetTextureShift());
+  const float toTable[2] = { static_cast<float>(table.TextureScale()),
+    static_cast<float>(table.TextureShift()) };
+  program->SetUniform2f("scalarToTable", toTable);
+  program->SetUniformf("densityScale", static_cast<float>(grid.GetParameters().DensityScale));
+  if (vtkTextureObject* emission = textures.GetEmissionTexture())
+  {
+    // Declared only by the camera rays' emission-array variant.
+    program->SetUniformi("emissionTexture", emission->GetTextureUnit());
+    const float toEmission[2] = { static_cast<float>(table.EmissionTextureScale()),
+      static_cast<float>(table.EmissionTextureShift()) };
+    program->SetUniform2f("emissionToTable", toEmission);
+  }
+}
