@@ -53,7 +53,11 @@ void vtkTransmittanceDetailAdapter::DeclareSwitches(const vtkTyndallMedium& medi
   const vtkTyndallDetailMedium& detail = Detail(medium);
   this->GridAdapter(detail).DeclareSwitches(*detail.GetGrid(), textures, variant);
   variant.DetailGroups = static_cast<int>((detail.GetWaves().size() + 3) / 4);
-  variant.MediumCode = vtkTransmittanceDetailFS;
+  if (variant.DetailGroups > 0)
+  {
+    // Its uniform arrays have one entry per group: none without waves.
+    variant.MediumCode = vtkTransmittanceDetailFS;
+  }
 }
 
 //------------------------------------------------------------------------------
