@@ -121,12 +121,11 @@ public:
 
   ///@{
   /**
-   * The shape: pre-classified extinction per sample (x fastest), the
-   * number of samples per axis, and its largest value.
+   * The shape: pre-classified extinction per sample (x fastest) and the
+   * number of samples per axis.
    */
   const std::vector<float>& GetShape() const { return this->ShapeValues; }
   const int* GetDimensions() const { return this->Dimensions; }
-  double GetShapeMaximum() const { return this->ShapeMaximum; }
   ///@}
 
   /// When the shape or the waves last changed (the GPU re-uploads on it).

@@ -80,15 +80,6 @@ void vtkTyndallMedium::ToLocalDirection(const double w[3], double d[3]) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallMedium::ToLocalRay(
-  const double x[3], const double w[3], double o[3], double d[3], double& t0, double& t1) const
-{
-  this->ToLocalPoint(x, o);
-  this->ToLocalDirection(w, d);
-  return ClipToBox(o, d, this->GetBoxLow(), this->GetBoxHigh(), t0, t1);
-}
-
-//------------------------------------------------------------------------------
 bool vtkTyndallMedium::Inside(const double p[3]) const
 {
   const vtkTyndallClipRegion* clip = this->GetClip();

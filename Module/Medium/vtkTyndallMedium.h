@@ -211,14 +211,6 @@ public:
   void ToLocalDirection(const double w[3], double d[3]) const;
   ///@}
 
-  /**
-   * The ray x + t w (world, w a unit vector) in the local frame: o + t d,
-   * and its part [t0, t1] in the box (t0 and t1 narrowed); false when it
-   * misses the box.
-   */
-  bool ToLocalRay(
-    const double x[3], const double w[3], double o[3], double d[3], double& t0, double& t1) const;
-
   /// Whether the local point p lies in the box and the clip region.
   bool Inside(const double p[3]) const;
 

@@ -51,11 +51,8 @@ public:
   {
     double l[3], factor, tMax;
     this->S->LightGeometry(light, x, l, factor, tMax);
-    const double grey = this->LightTransmittance(x, nullptr, 0.0, l, tMax);
-    for (int c = 0; c < 3; ++c)
-    {
-      transmittance[c] = this->S->GetChromatic() ? this->S->ChannelTransmittance(grey, c) : grey;
-    }
+    this->S->ChannelTransmittances(
+      this->LightTransmittance(x, nullptr, 0.0, l, tMax), transmittance);
   }
 
   void operator()(vtkIdType begin, vtkIdType end) const
@@ -239,21 +236,12 @@ private:
       std::copy(color, color + 3, J);
       return;
     }
-    const double ambient = s.Parameters->AmbientIntensity;
-    double in[3] = { ambient, ambient, ambient };
-    if (color[0] != 0.0 || color[1] != 0.0 || color[2] != 0.0)
-    {
-      const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
-      s.AddInScattering(
-        x, w, color,
-        [&](const double l[3], double tMax)
-        { return this->LightTransmittance(x, &rays, t, l, tMax); },
-        in);
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      J[c] = color[c] * in[c] + s.Parameters->EmissionScale * point.Emission[c];
-    }
+    const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
+    s.Source(
+      point, x, w,
+      [&](const double l[3], double tMax, double T[3])
+      { s.ChannelTransmittances(this->LightTransmittance(x, &rays, t, l, tMax), T); },
+      J);
   }
 };
 }

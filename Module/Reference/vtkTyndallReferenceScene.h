@@ -162,6 +162,18 @@ public:
     return e == 0.0 ? 1.0 : (T > 0.0 ? std::pow(std::min(T, 1.0), e) : 0.0);
   }
 
+  /**
+   * Every channel's transmittance where the densest channel's is `grey`
+   * (ChannelTransmittance(); `grey` itself without a coloured extinction).
+   */
+  void ChannelTransmittances(double grey, double T[3]) const
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      T[c] = this->GetChromatic() ? this->ChannelTransmittance(grey, c) : grey;
+    }
+  }
+
   /// The phase function at the cosine mu (Henyey-Greenstein, the medium's anisotropy).
   double Phase(double mu) const
   {
@@ -186,11 +198,11 @@ public:
 
   /**
    * Adds E_l * f_l * p(mu_l) * T_l of every light to `in`, at the world
-   * point x seen along the unit world direction w; `transmittance(l,
-   * tMax)` is the light transmittance T_l along the world direction l (see
-   * LightGeometry()). With several octaves, p(mu_l) T_l becomes the octaves'
-   * sum at the albedo `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
-   * With a coloured extinction, channel k sees ChannelTransmittance(T_l, k).
+   * point x seen along the unit world direction w; `transmittance(l, tMax,
+   * T)` sets T_l per channel along the world direction l (see
+   * LightGeometry(); with a coloured extinction each channel's own, equal
+   * channels without). With several octaves, p(mu_l) T_l becomes the
+   * octaves' sum at the albedo `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
    */
   template <typename LightTransmittance>
   void AddInScattering(const double x[3], const double w[3], const double albedo[3],
@@ -206,18 +218,19 @@ public:
       }
       // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
       const double mu = vtkMath::Dot(l, w);
-      const double T = transmittance(l, tMax);
+      double T[3];
+      transmittance(l, tMax, T);
       double weight[3];
       if (!chromatic)
       {
-        this->LightWeight(mu, T, albedo, weight);
+        this->LightWeight(mu, T[0], albedo, weight);
       }
       else
       {
         for (int c = 0; c < 3; ++c)
         {
           double channel[3];
-          this->LightWeight(mu, this->ChannelTransmittance(T, c), albedo, channel);
+          this->LightWeight(mu, T[c], albedo, channel);
           weight[c] = channel[c];
         }
       }
@@ -225,6 +238,28 @@ public:
       {
         in[c] += light.E[c] * factor * weight[c];
       }
+    }
+  }
+
+  /**
+   * The source term J at a point `point` of the media at the world point x
+   * seen along w: albedo (ambient + AddInScattering()) + EmissionScale
+   * emission, with `transmittance` as AddInScattering()'s.
+   */
+  template <typename LightTransmittance>
+  void Source(const vtkTyndallMedium::Point& point, const double x[3], const double w[3],
+    LightTransmittance&& transmittance, double J[3]) const
+  {
+    const double* albedo = point.Albedo;
+    const double ambient = this->Parameters->AmbientIntensity;
+    double in[3] = { ambient, ambient, ambient };
+    if (albedo[0] != 0.0 || albedo[1] != 0.0 || albedo[2] != 0.0)
+    {
+      this->AddInScattering(x, w, albedo, transmittance, in);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] = albedo[c] * in[c] + this->Parameters->EmissionScale * point.Emission[c];
     }
   }
 

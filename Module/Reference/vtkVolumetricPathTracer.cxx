@@ -333,12 +333,9 @@ private:
     }
     if (s.ClosedForm[k])
     {
-      const double grey = std::exp(-medium.OpticalDepth(
-        o, d, t0, t1, 0.0, kInfinity, true, &path.Caches[k], &timing.ShadowWork));
-      for (int c = 0; c < 3; ++c)
-      {
-        T[c] = s.GetChromatic() ? s.ChannelTransmittance(grey, c) : grey;
-      }
+      s.ChannelTransmittances(std::exp(-medium.OpticalDepth(o, d, t0, t1, 0.0, kInfinity, true,
+                                &path.Caches[k], &timing.ShadowWork)),
+        T);
       return;
     }
     this->RatioTrack(k, o, d, t0, t1, rng, timing, T);
@@ -377,62 +374,16 @@ private:
   }
 
   // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision at the
-  // world distance t of `ray` (world point x).
+  // world distance t of `ray` (world point x): the light transmittance per
+  // channel is each channel's own estimate with a coloured extinction.
   void Source(const Ray& ray, double t, const double x[3], const Point& point, Random& rng,
     Timing& timing, const PathState& path, double J[3]) const
   {
-    const Scene& s = *this->S;
-    const double* color = point.Albedo;
-    const double ambient = s.Parameters->AmbientIntensity;
-    double in[3] = { ambient, ambient, ambient };
-    if (color[0] != 0.0 || color[1] != 0.0 || color[2] != 0.0)
-    {
-      if (!s.GetChromatic())
-      {
-        s.AddInScattering(
-          x, ray.W, color,
-          [&](const double l[3], double tMax)
-          {
-            double T[3];
-            this->LightTransmittance(ray, t, x, l, tMax, rng, timing, path, T);
-            return T[0];
-          },
-          in);
-      }
-      else
-      {
-        this->ChromaticInScattering(ray, t, x, color, rng, timing, path, in);
-      }
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      J[c] = color[c] * in[c] + s.Parameters->EmissionScale * point.Emission[c];
-    }
-  }
-
-  // AddInScattering()'s sum with a transmittance per channel (a coloured
-  // extinction: each channel's own estimate, not a power of the densest's).
-  void ChromaticInScattering(const Ray& ray, double t, const double x[3], const double color[3],
-    Random& rng, Timing& timing, const PathState& path, double in[3]) const
-  {
-    const Scene& s = *this->S;
-    for (const Scene::LightSource& light : s.Lights)
-    {
-      double l[3], factor, tMax;
-      if (!s.LightGeometry(light, x, l, factor, tMax))
-      {
-        continue;
-      }
-      const double mu = vtkMath::Dot(l, ray.W);
-      double T[3];
-      this->LightTransmittance(ray, t, x, l, tMax, rng, timing, path, T);
-      for (int c = 0; c < 3; ++c)
-      {
-        double weight[3];
-        s.LightWeight(mu, T[c], color, weight);
-        in[c] += light.E[c] * factor * weight[c];
-      }
-    }
+    this->S->Source(
+      point, x, ray.W,
+      [&](const double l[3], double tMax, double T[3])
+      { this->LightTransmittance(ray, t, x, l, tMax, rng, timing, path, T); },
+      J);
   }
 
   // Adds beta times an estimate of the emission from arrays along the ray's
@@ -606,10 +557,7 @@ private:
       tau += s.Media[k].Medium->OpticalDepth(
         ray.Local.O[k], ray.Local.D[k], ray.Low[k], ray.High[k], 0.0, kInfinity);
     }
-    for (int c = 0; c < 3; ++c)
-    {
-      T[c] = s.GetChromatic() ? s.ChannelTransmittance(std::exp(-tau), c) : std::exp(-tau);
-    }
+    s.ChannelTransmittances(std::exp(-tau), T);
     return true;
   }
 
