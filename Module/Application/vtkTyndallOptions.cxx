@@ -218,6 +218,10 @@ const Spec kOptions[] = {
     Both,
     "standard deviation of the noise factor, whose mean is 1 (the shape's density is kept); "
     "above about 0.3 it dips below 0 in places, where it is clamped (see the rendering model)" },
+  { "detail-filter", "", Kind::Number, 0, 4, false, "", "W", "0.5", "Procedural detail", Both,
+    "width (standard deviation, in pixels) of the Gaussian that filters the noise's waves on "
+    "camera rays: waves finer than about 2 pixels fade instead of aliasing and are not evaluated "
+    "where the volume is too far to show them; 0: unfiltered" },
   { "detail-samples", "", Kind::Integer, 0, 64, false, "", "N", "0", "Procedural detail", Both,
     "0: camera rays march the detail at a quarter of its shortest wavelength; N > 0: each pixel "
     "draws N free-flight samples in closed form instead (the paper's section 7), and still "

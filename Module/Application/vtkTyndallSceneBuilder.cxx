@@ -794,6 +794,7 @@ void vtkTyndallSceneBuilder::ApplyDetail()
   noise->SetOffset(1.0);
   noise->SetExtinctionScale(1.0);
   this->Property->SetDetailNoise(noise);
+  this->Property->SetDetailFilterWidth(o->GetNumber("detail-filter"));
 }
 
 //------------------------------------------------------------------------------

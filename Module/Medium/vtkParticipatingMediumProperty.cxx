@@ -76,6 +76,7 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetSceneShadows(medium->SceneShadows);
   this->SetSceneCompositing(medium->SceneCompositing);
   this->SetDetailNoise(medium->DetailNoise);
+  this->SetDetailFilterWidth(medium->DetailFilterWidth);
 }
 
 //------------------------------------------------------------------------------
@@ -119,6 +120,7 @@ void vtkParticipatingMediumProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SceneShadows: " << (this->SceneShadows ? "On" : "Off") << "\n";
   os << indent << "SceneCompositing: " << (this->SceneCompositing ? "On" : "Off") << "\n";
   os << indent << "DetailNoise: " << this->DetailNoise << "\n";
+  os << indent << "DetailFilterWidth: " << this->DetailFilterWidth << "\n";
 }
 
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)

@@ -228,6 +228,23 @@ public:
 
   ///@{
   /**
+   * The width of the filter of procedural detail on camera rays, in pixels
+   * (range [0, 4], default 0.5): a camera sample sees each wave of the
+   * noise filtered by a Gaussian whose standard deviation is DetailFilterWidth
+   * times the world width of a pixel at the sample (vtkTyndallFootprint),
+   * that is the wave with its amplitude times exp(-|k|^2 sigma^2 / 2), and
+   * a wave whose factor falls below 1/100 not at all. Waves finer than a
+   * pixel or two fade out instead of aliasing, and cost nothing where none
+   * of the volume is near enough to show them. 0: unfiltered (every wave
+   * everywhere, as before). Light rays and the transmittance maps see the
+   * unfiltered noise (Documentation/rendering-model.md, "Procedural detail").
+   */
+  vtkSetClampMacro(DetailFilterWidth, double, 0.0, 4.0);
+  vtkGetMacro(DetailFilterWidth, double);
+  ///@}
+
+  ///@{
+  /**
    * Whether the medium is lit through the other media of its renderer (On,
    * the default): every other visible vtkVolume drawn by a
    * vtkTransmittanceVolumeMapper (at most three) absorbs the light on its way
@@ -301,6 +318,7 @@ protected:
   bool SceneShadows = true;
   bool SceneCompositing = true;
   vtkCosineNoise* DetailNoise = nullptr;
+  double DetailFilterWidth = 0.5;
 
 private:
   vtkParticipatingMediumProperty(const vtkParticipatingMediumProperty&) = delete;

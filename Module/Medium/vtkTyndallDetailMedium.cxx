@@ -3,6 +3,7 @@
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseMoments.h"
 #include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkObject.h"
 #include "vtkTyndallGridMedium.h"
 
@@ -45,11 +46,24 @@ double Integral(const double c[4], double s)
 {
   return c[0] + s * (c[1] / 2.0 + s * (c[2] / 3.0 + s * c[3] / 4.0));
 }
+
+// |A^T k|^2: the squared world wave number of the field index wave vector k
+// (A: the world -> field index matrix, row-major 4x4).
+double WorldK2(const double k[3], const double* a)
+{
+  double sum = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double kc = k[0] * a[c] + k[1] * a[4 + c] + k[2] * a[8 + c];
+    sum += kc * kc;
+  }
+  return sum;
+}
 }
 
 //------------------------------------------------------------------------------
 bool vtkTyndallDetailMedium::Update(
-  const vtkTyndallGridMedium& grid, vtkCosineNoise* noise, vtkObject* reporter)
+  const vtkTyndallGridMedium& grid, vtkCosineNoise* noise, vtkObject* reporter, double filterWidth)
 {
   this->IsEnabled = false;
   this->Grid = &grid;
@@ -81,6 +95,7 @@ bool vtkTyndallDetailMedium::Update(
     }
     w.Phase = phase + k[0] * m[3] + k[1] * m[7] + k[2] * m[11];
     w.Amplitude = amplitude;
+    w.WorldK2 = WorldK2(w.K, grid.GetWorldToIndex());
     amplitudes += std::abs(amplitude);
     if (!std::isfinite(w.K[0] + w.K[1] + w.K[2] + w.Phase + w.Amplitude))
     {
@@ -88,10 +103,28 @@ bool vtkTyndallDetailMedium::Update(
       return false;
     }
   }
+  // Coarsest first: the footprint filter keeps a prefix of them.
+  std::stable_sort(
+    waves.begin(), waves.end(), [](const Wave& a, const Wave& b) { return a.WorldK2 < b.WorldK2; });
+  for (size_t g = 0; g < waves.size(); g += 4)
+  {
+    const size_t end = std::min(waves.size(), g + 4);
+    double sum = 0.0;
+    for (size_t i = g; i < end; ++i)
+    {
+      sum += waves[i].WorldK2;
+    }
+    for (size_t i = g; i < end; ++i)
+    {
+      waves[i].FilterK2 = sum / static_cast<double>(end - g);
+    }
+  }
   const vtkMTimeType source = std::max({ grid.GetScalarsTime(), grid.GetExtinctionTime() });
   const bool shapeStale = source != this->SourceTime ||
     grid.GetParameters().DensityScale != this->Density || this->ShapeValues.empty();
-  const bool wavesChanged = shapeStale || noise->GetMTime() != this->NoiseTime;
+  const bool wavesChanged =
+    shapeStale || noise->GetMTime() != this->NoiseTime || filterWidth != this->FilterWidth;
+  this->FilterWidth = std::max(0.0, filterWidth);
   this->Waves = std::move(waves);
   this->Offset = noise->GetOffset();
   this->Scale = noise->GetExtinctionScale();
@@ -192,6 +225,102 @@ double vtkTyndallDetailMedium::Noise(const double p[3]) const
 }
 
 //------------------------------------------------------------------------------
+double vtkTyndallDetailMedium::FilterFactor(int i, double sigma) const
+{
+  const double f = std::exp(-0.5 * this->Waves[i].FilterK2 * sigma * sigma);
+  return f >= FilterCutoff ? f : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallDetailMedium::GetLiveWaves(double pixel) const
+{
+  const int n = static_cast<int>(this->Waves.size());
+  const double sigma = this->FilterWidth * pixel;
+  if (!(sigma > 0.0))
+  {
+    return n;
+  }
+  int live = 0;
+  while (live<n&& this->FilterFactor(live, sigma)> 0.0)
+  {
+    ++live;
+  }
+  return live;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallDetailMedium::GetFinestWavelength(int n) const
+{
+  double k2 = 0.0;
+  for (int i = 0; i < n && i < static_cast<int>(this->Waves.size()); ++i)
+  {
+    if (this->Waves[i].Amplitude != 0.0)
+    {
+      k2 = std::max(k2, this->Waves[i].WorldK2);
+    }
+  }
+  return k2 > 0.0 ? 2.0 * vtkMath::Pi() / std::sqrt(k2) : 1e30;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallDetailMedium::FilteredNoise(const double p[3], double pixel) const
+{
+  const double sigma = this->FilterWidth * pixel;
+  if (!(sigma > 0.0))
+  {
+    return this->Noise(p);
+  }
+  double sum = this->Offset;
+  const int n = static_cast<int>(this->Waves.size());
+  for (int i = 0; i < n; ++i)
+  {
+    const double f = this->FilterFactor(i, sigma);
+    if (f == 0.0)
+    {
+      break; // coarsest first: the finer ones are below the cutoff too
+    }
+    const Wave& w = this->Waves[i];
+    sum += f * w.Amplitude * std::cos(w.K[0] * p[0] + w.K[1] * p[1] + w.K[2] * p[2] + w.Phase);
+  }
+  return sum;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallDetailMedium::GetCameraStep(double pixel, double maximumStep) const
+{
+  const int live = this->GetLiveWaves(pixel);
+  const double longest = std::min(maximumStep, 0.5 * this->GetFinestWavelength(live));
+  if (live == 0 || !(this->AmplitudeSum > 0.0))
+  {
+    return longest;
+  }
+  auto error = [&](double h)
+  {
+    double sum = 0.0;
+    for (int i = 0; i < live; ++i)
+    {
+      const Wave& w = this->Waves[i];
+      const double x = 0.5 * std::sqrt(w.WorldK2) * h;
+      const double sinc = x > 1e-8 ? std::sin(x) / x : 1.0;
+      sum += std::abs(w.Amplitude) * (1.0 - sinc);
+    }
+    return sum / this->AmplitudeSum;
+  };
+  if (error(longest) <= StepTolerance)
+  {
+    return longest;
+  }
+  // The error grows with h up to half the finest wavelength: bisection.
+  double lo = 0.0, hi = longest;
+  for (int i = 0; i < 40; ++i)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (error(mid) <= StepTolerance ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+//------------------------------------------------------------------------------
 double vtkTyndallDetailMedium::FieldExtinction(const double p[3], Work* work) const
 {
   if (this->Grid->GetNumberOfNaNScalars() > 0 && std::isnan(this->Grid->FieldScalar(p)))
@@ -211,14 +340,22 @@ double vtkTyndallDetailMedium::FieldExtinction(const double p[3], Work* work) co
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallDetailMedium::FieldSample(const double p[3], Point& point) const
+bool vtkTyndallDetailMedium::FieldSample(const double p[3], Point& point, double pixel) const
 {
-  // The colours at the grid's scalar, the extinction the detail's.
+  // The colours at the grid's scalar, the extinction the detail's (filtered
+  // by the pixel's footprint).
   if (!this->FieldMaterial(p, point))
   {
     return false;
   }
-  point.Extinction = this->FieldExtinction(p, nullptr);
+  if (!(this->FilterWidth * pixel > 0.0))
+  {
+    point.Extinction = this->FieldExtinction(p, nullptr);
+    return point.Extinction > 0.0;
+  }
+  const double shape = this->Shape(p);
+  point.Extinction =
+    shape > 0.0 ? shape * this->Scale * std::max(0.0, this->FilteredNoise(p, pixel)) : 0.0;
   return point.Extinction > 0.0;
 }
 

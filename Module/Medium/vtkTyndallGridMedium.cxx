@@ -552,7 +552,7 @@ double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point) const
+bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) const
 {
   int k;
   double f;

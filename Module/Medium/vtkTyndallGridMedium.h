@@ -235,7 +235,7 @@ public:
 
 protected:
   double FieldExtinction(const double p[3], Work* work) const override;
-  bool FieldSample(const double p[3], Point& point) const override;
+  bool FieldSample(const double p[3], Point& point, double pixel) const override;
   bool FieldMaterial(const double p[3], Point& point) const override;
 
   /**

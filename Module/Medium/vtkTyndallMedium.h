@@ -132,15 +132,18 @@ public:
    * Point queries at the local point p: the densest channel's extinction
    * (0 outside the box, the clip region or at missing data), and all the
    * point holds (false where the extinction is 0; the colours are then
-   * undefined). `work` counts what an evaluation costs.
+   * undefined). `work` counts what an evaluation costs. `pixel`: for a
+   * camera sample, the world width of a pixel there (vtkTyndallFootprint),
+   * which procedural detail is filtered by (vtkTyndallDetailMedium); 0
+   * (light rays, the path tracer): unfiltered.
    */
   double Extinction(const double p[3], Work* work = nullptr) const
   {
     return this->Inside(p) ? this->FieldExtinction(p, work) : 0.0;
   }
-  bool Sample(const double p[3], Point& point) const
+  bool Sample(const double p[3], Point& point, double pixel = 0.0) const
   {
-    return this->Inside(p) && this->FieldSample(p, point);
+    return this->Inside(p) && this->FieldSample(p, point, pixel);
   }
   ///@}
 
@@ -267,7 +270,7 @@ protected:
    * the box and the clip region (Extinction() and Sample() test those).
    */
   virtual double FieldExtinction(const double p[3], Work* work) const = 0;
-  virtual bool FieldSample(const double p[3], Point& point) const = 0;
+  virtual bool FieldSample(const double p[3], Point& point, double pixel) const = 0;
   virtual bool FieldMaterial(const double p[3], Point& point) const = 0;
   ///@}
 

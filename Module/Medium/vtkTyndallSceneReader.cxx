@@ -128,8 +128,8 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
     return false;
   }
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
-  if (!this->Detail.Update(
-        *this->Medium, property ? property->GetDetailNoise() : nullptr, reporter))
+  if (!this->Detail.Update(*this->Medium, property ? property->GetDetailNoise() : nullptr, reporter,
+        property ? property->GetDetailFilterWidth() : 0.0))
   {
     return false;
   }

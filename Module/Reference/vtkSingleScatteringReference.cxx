@@ -150,7 +150,8 @@ private:
     {
       const double t = t0 + (m + 0.5) * dt;
       Point point;
-      const bool dense = this->CameraMedium(rays, t, point);
+      const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
+      const bool dense = this->CameraMedium(rays, t, s.Footprint.At(x), point);
       double sigmaC[3]; // per channel
       for (int c = 0; c < 3; ++c)
       {
@@ -192,8 +193,9 @@ private:
   // What the camera rays see at the distance t: the extinction of the
   // camera media summed, with their colours and emission colours (per unit
   // extinction) mixed in proportion to their extinctions (GPU twin:
-  // tyndallCameraMedium()). False for empty medium.
-  bool CameraMedium(const LocalRays& rays, double t, Point& mixed) const
+  // tyndallCameraMedium()); procedural detail filtered by `pixel`, the
+  // world width of a pixel there (vtkTyndallFootprint). False for empty medium.
+  bool CameraMedium(const LocalRays& rays, double t, double pixel, Point& mixed) const
   {
     const Scene& s = *this->S;
     mixed = Point();
@@ -202,7 +204,7 @@ private:
       Point point;
       double p[3];
       rays.At(static_cast<int>(k), t, p);
-      if (s.Media[k].Camera && s.Media[k].Medium->Sample(p, point))
+      if (s.Media[k].Camera && s.Media[k].Medium->Sample(p, point, pixel))
       {
         mixed.Extinction += point.Extinction;
         for (int c = 0; c < 3; ++c)

@@ -159,6 +159,7 @@ bool vtkTyndallReferenceScene::SetUpView(
     return false;
   }
   vtkMatrix4x4::Invert(*projection->Element, this->InverseProjection);
+  this->Footprint.SetCamera(renderer->GetActiveCamera(), this->Width, this->Height);
   this->SetUpLights(reader);
   return true;
 }

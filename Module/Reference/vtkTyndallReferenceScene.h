@@ -41,6 +41,7 @@
 #include "TyndallReferenceModule.h"  // For export macro
 #include "vtkMath.h"                 // For vtkMath::Dot
 #include "vtkTransmittanceMapMath.h" // For the phase function
+#include "vtkTyndallFootprint.h"     // For vtkTyndallFootprint
 #include "vtkTyndallMedium.h"        // For the media
 #include "vtkTyndallSceneReader.h"   // For MaximumNumberOfGuests
 #include "vtkType.h"                 // For vtkIdType
@@ -87,6 +88,8 @@ public:
   int Width = 1;
   int Height = 1;
   double InverseProjection[16]; // world <- normalised device coordinates
+  /// The world width of a pixel along the camera rays (what camera samples filter detail by).
+  vtkTyndallFootprint Footprint;
   /// The media: the volume's own first, then the others the light crosses.
   std::vector<Medium> Media;
   /// The lighting of the camera rays: the volume's own medium's.

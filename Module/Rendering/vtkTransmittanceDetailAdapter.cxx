@@ -5,15 +5,33 @@
 #include "vtkTextureObject.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
+#include "vtkTyndallTransferTable.h"
 
 // The GLSL of procedural detail, embedded at build time.
 #include "vtkTransmittanceDetailFS.h"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace
 {
+// Whether the colour table's albedo is one colour (every entry the first).
+bool UniformAlbedo(const vtkTyndallGridMedium& grid)
+{
+  const std::vector<double>& albedo = grid.GetTable().Albedo;
+  for (size_t i = 3; i < albedo.size(); ++i)
+  {
+    if (albedo[i] != albedo[i % 3])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 // For() gives this adapter detail media only, and only enabled ones have a grid.
 const vtkTyndallDetailMedium& Detail(const vtkTyndallMedium& medium)
 {
@@ -53,11 +71,79 @@ void vtkTransmittanceDetailAdapter::DeclareSwitches(const vtkTyndallMedium& medi
   const vtkTyndallDetailMedium& detail = Detail(medium);
   this->GridAdapter(detail).DeclareSwitches(*detail.GetGrid(), textures, variant);
   variant.DetailGroups = static_cast<int>((detail.GetWaves().size() + 3) / 4);
+  variant.DetailCameraGroups = variant.DetailGroups;
+  variant.DetailFilter = false;
+  // The passes that read no colour take it too; the camera's decide in
+  // DeclareColorSwitches().
+  variant.DetailUniformAlbedo = UniformAlbedo(*detail.GetGrid());
   if (variant.DetailGroups > 0)
   {
-    // Its uniform arrays have one entry per group: none without waves.
+    // Its arrays have one entry per group: none without waves.
     variant.MediumCode = vtkTransmittanceDetailFS;
+    variant.DetailWaves = WaveConstants(detail);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceDetailAdapter::DeclareCameraSwitches(
+  const vtkTyndallMedium& medium, double nearestPixel, Variant& variant) const
+{
+  const vtkTyndallDetailMedium& detail = Detail(medium);
+  // The footprint filter on marched camera rays; a brute-force light march
+  // through guests samples the same function (unfiltered: every wave).
+  const bool lightMarches = variant.BruteForceLights && variant.Guests > 0;
+  if (variant.DetailGroups == 0 || variant.DetailSamples > 0 || lightMarches ||
+    !(detail.GetFilterWidth() > 0.0))
+  {
+    return;
+  }
+  variant.DetailFilter = true;
+  variant.DetailCameraGroups = (detail.GetLiveWaves(nearestPixel) + 3) / 4;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailMedium& detail)
+{
+  // Per group of four: the wave vectors (field index), phases and
+  // amplitudes; per group the filter's decay, exp2(decay pixel^2) =
+  // exp(-|k|^2 (width pixel)^2 / 2) with the group's |k|^2 (FilterK2).
+  const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
+  const int groups = static_cast<int>((waves.size() + 3) / 4);
+  const double width = detail.GetFilterWidth();
+  const char* names[5] = { "detailKx", "detailKy", "detailKz", "detailPhase", "detailAmplitude" };
+  std::ostringstream os;
+  os << std::scientific << std::setprecision(9);
+  for (int a = 0; a < 5; ++a)
+  {
+    os << "const vec4 " << names[a] << "[TYNDALL_DETAIL_GROUPS] = vec4[TYNDALL_DETAIL_GROUPS](";
+    for (int g = 0; g < groups; ++g)
+    {
+      os << (g > 0 ? ",\n  " : "\n  ") << "vec4(";
+      for (int c = 0; c < 4; ++c)
+      {
+        const size_t i = 4 * static_cast<size_t>(g) + c;
+        double value = 0.0; // the unused waves of the last group: amplitude 0
+        if (i < waves.size())
+        {
+          const vtkTyndallDetailMedium::Wave& w = waves[i];
+          const double values[5] = { w.K[0], w.K[1], w.K[2],
+            std::remainder(w.Phase, 2.0 * vtkMath::Pi()), w.Amplitude };
+          value = values[a];
+        }
+        os << (c > 0 ? ", " : "") << static_cast<float>(value);
+      }
+      os << ")";
+    }
+    os << ");\n";
+  }
+  os << "const float detailDecay[TYNDALL_DETAIL_GROUPS] = float[TYNDALL_DETAIL_GROUPS](";
+  for (int g = 0; g < groups; ++g)
+  {
+    const double k2 = waves[4 * static_cast<size_t>(g)].FilterK2;
+    os << (g > 0 ? ", " : "") << static_cast<float>(-0.5 * k2 * width * width / std::log(2.0));
+  }
+  os << ");\n";
+  return os.str();
 }
 
 //------------------------------------------------------------------------------
@@ -66,6 +152,10 @@ void vtkTransmittanceDetailAdapter::DeclareColorSwitches(
 {
   const vtkTyndallDetailMedium& detail = Detail(medium);
   this->GridAdapter(detail).DeclareColorSwitches(*detail.GetGrid(), variant);
+  // Emission from the table and a coloured particle cloud's albedo need the
+  // scalar at the sample.
+  variant.DetailUniformAlbedo =
+    variant.DetailUniformAlbedo && !variant.Emission && !variant.ParticleColors;
 }
 
 //------------------------------------------------------------------------------
@@ -75,24 +165,7 @@ void vtkTransmittanceDetailAdapter::SetUniforms(vtkShaderProgram* program,
   const vtkTyndallDetailMedium& detail = Detail(medium);
   const vtkTyndallGridMedium& grid = *detail.GetGrid();
   this->GridAdapter(detail).SetUniforms(program, grid, textures);
-  // The waves, in groups of four (the unused ones of the last group 0).
-  const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
-  const int groups = static_cast<int>((waves.size() + 3) / 4);
-  std::vector<float> kx(4 * groups, 0.0f), ky(kx), kz(kx), phase(kx), amplitude(kx);
-  for (size_t i = 0; i < waves.size(); ++i)
-  {
-    kx[i] = static_cast<float>(waves[i].K[0]);
-    ky[i] = static_cast<float>(waves[i].K[1]);
-    kz[i] = static_cast<float>(waves[i].K[2]);
-    phase[i] = static_cast<float>(std::remainder(waves[i].Phase, 2.0 * vtkMath::Pi()));
-    amplitude[i] = static_cast<float>(waves[i].Amplitude);
-  }
-  program->SetUniform4fv("detailKx", groups, reinterpret_cast<float(*)[4]>(kx.data()));
-  program->SetUniform4fv("detailKy", groups, reinterpret_cast<float(*)[4]>(ky.data()));
-  program->SetUniform4fv("detailKz", groups, reinterpret_cast<float(*)[4]>(kz.data()));
-  program->SetUniform4fv("detailPhase", groups, reinterpret_cast<float(*)[4]>(phase.data()));
-  program->SetUniform4fv(
-    "detailAmplitude", groups, reinterpret_cast<float(*)[4]>(amplitude.data()));
+  // The waves are the program's constants (WaveConstants()).
   // The shape's samples over the grid's box.
   const int* n = detail.GetDimensions();
   const float dims[3] = { float(n[0]), float(n[1]), float(n[2]) };
@@ -109,6 +182,13 @@ void vtkTransmittanceDetailAdapter::SetUniforms(vtkShaderProgram* program,
   program->SetUniformi("detailMaxCells", n[0] + n[1] + n[2] + 3);
   program->SetUniformf("detailOffset", static_cast<float>(detail.GetOffset()));
   program->SetUniformf("detailScale", static_cast<float>(detail.GetScale()));
+  const std::vector<double>& albedo = grid.GetTable().Albedo;
+  if (albedo.size() >= 3)
+  {
+    // Declared only by the uniform-albedo variant.
+    const float rgb[3] = { float(albedo[0]), float(albedo[1]), float(albedo[2]) };
+    program->SetUniform3f("detailAlbedo", rgb);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -7,10 +7,18 @@
  * sum of cosine waves. It adds to its grid's: the pre-classified shape as
  * a float 3-D texture (detailShapeTexture), the switch
  * TYNDALL_DETAIL_GROUPS (groups of four waves, 0: none), the waves as
- * uniforms (detailKx .. detailAmplitude) and its GLSL,
+ * GLSL constants (detailKx .. detailDecay, WaveConstants(): literal
+ * numbers, which llvmpipe folds into the code where uniform arrays cost it
+ * three times the rest of a sample) and its GLSL,
  * vtkTransmittanceDetailFS.glsl (the closed-form optical depth and free
  * flights of vtkTyndallDetailMedium, on the GPU). Its brute-force light
  * march walks the shape's cells: GetLightMarchIterations().
+ *
+ * Camera rays (DeclareCameraSwitches()) filter the waves by the pixel's
+ * footprint (TYNDALL_DETAIL_FILTER; vtkParticipatingMediumProperty::
+ * DetailFilterWidth) and evaluate only the first TYNDALL_DETAIL_CAMERA_GROUPS
+ * groups: the waves, coarsest first, that a pixel as narrow as the frame's
+ * narrowest over the volume keeps (vtkTyndallDetailMedium::GetLiveWaves()).
  *
  * Internal to Tyndall::Rendering.
  * @sa vtkTransmittanceMediumAdapter
@@ -20,6 +28,8 @@
 #define vtkTransmittanceDetailAdapter_h
 
 #include "vtkTransmittanceMediumAdapter.h"
+
+#include <string> // For std::string
 
 class vtkTyndallDetailMedium;
 
@@ -40,10 +50,19 @@ public:
   void DeclareSwitches(const vtkTyndallMedium& medium,
     const vtkTransmittanceMediumTextures& textures, Variant& variant) const override;
   void DeclareColorSwitches(const vtkTyndallMedium& medium, Variant& variant) const override;
+  void DeclareCameraSwitches(
+    const vtkTyndallMedium& medium, double nearestPixel, Variant& variant) const override;
   void SetUniforms(vtkShaderProgram* program, const vtkTyndallMedium& medium,
     const vtkTransmittanceMediumTextures& textures) const override;
   /// The cells of the closed form's walk along the ray (its wave loops are unrolled).
   double GetLightMarchIterations(const vtkTyndallMedium& medium, double gridMarch) const override;
+
+  /**
+   * The waves of `detail` as the GLSL constant arrays of
+   * vtkTransmittanceDetailFS.glsl, in groups of four (the unused waves of
+   * the last group have amplitude 0).
+   */
+  static std::string WaveConstants(const vtkTyndallDetailMedium& detail);
 
 private:
   // The adapter of the grid under the detail.

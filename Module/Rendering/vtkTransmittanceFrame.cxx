@@ -1,9 +1,11 @@
 #include "vtkTransmittanceFrame.h"
 
+#include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceLightFrustum.h"
@@ -11,6 +13,7 @@
 #include "vtkTransmittanceMediumAdapter.h"
 #include "vtkTransmittanceMediumAdapters.h"
 #include "vtkTransmittanceMediumTextures.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallParticleMedium.h"
 #include "vtkTyndallSceneReader.h"
 
@@ -66,6 +69,7 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->Medium->GetWorldCorners(this->Corners);
   this->Diagonal = this->Medium->GetWorldDiagonal();
   this->MinimumSpacing = this->Medium->GetMinimumWorldSpacing();
+  this->PrepareFootprint();
 
   WorldToBoxMatrix(*this->Medium, this->WorldToBox);
   // Box -> world: its columns are the box's world edges and origin.
@@ -132,6 +136,18 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
       light.Method = M::BRUTE_FORCE; // documented fallback: a light inside the box
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::PrepareFootprint()
+{
+  int size[2], origin[2];
+  this->Renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  this->Footprint.SetCamera(camera, size[0], size[1]);
+  double range[2];
+  camera->GetClippingRange(range);
+  this->NearestPixel = this->Footprint.Minimum(this->Corners, range[0]);
 }
 
 //------------------------------------------------------------------------------
@@ -302,7 +318,12 @@ double vtkTransmittanceFrame::GetStepLength() const
   {
     return this->Integrator.SampleDistance;
   }
-  // The medium's finest feature: its spacing, or half the detail's shortest wavelength.
+  if (this->Detail && this->Detail->Enabled())
+  {
+    // The midpoint rule's error on the waves the camera rays evaluate.
+    return this->Detail->GetCameraStep(this->NearestPixel, 0.5 * this->MinimumSpacing);
+  }
+  // The medium's finest feature: its spacing, or a particle's size.
   return 0.5 * std::min(this->MinimumSpacing, this->OwnMedium->GetFinestFeature());
 }
 

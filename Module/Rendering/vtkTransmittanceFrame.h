@@ -19,6 +19,7 @@
 #include "TyndallRenderingModule.h"       // For export macro
 #include "vtkSmartPointer.h"              // For vtkSmartPointer
 #include "vtkTransmittanceShaderSource.h" // For vtkTransmittanceShaderSource::Variant
+#include "vtkTyndallFootprint.h"          // For vtkTyndallFootprint
 #include "vtkTyndallLight.h"              // For vtkTyndallLight
 
 #include <vector> // For std::vector
@@ -161,10 +162,22 @@ public:
 
   /**
    * The camera-ray step: SampleDistance, or half the smallest spacing and
-   * the medium's finest feature (vtkTyndallMedium::GetFinestFeature(): with
-   * procedural detail, half its shortest wavelength).
+   * the medium's finest feature (vtkTyndallMedium::GetFinestFeature()).
+   * With procedural detail, at most half the smallest spacing, as long as
+   * the midpoint rule's error on the waves the camera rays evaluate allows
+   * (vtkTyndallDetailMedium::GetCameraStep() at NearestPixel): two samples
+   * per period of the finest wave where its amplitude is small (the default
+   * scene: 70 dB against a quarter period, the old step), four where the
+   * fine waves are strong.
    */
   double GetStepLength() const;
+
+  /**
+   * The world width of a pixel along the camera rays (vtkTyndallFootprint),
+   * and its narrowest over the medium's box in this frame.
+   */
+  vtkTyndallFootprint Footprint;
+  double NearestPixel = 0.0;
 
   vtkRenderer* Renderer = nullptr;
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -228,6 +241,7 @@ private:
   void SetClipUniforms(vtkShaderProgram* program) const;
   void SetGuestUniforms(vtkShaderProgram* program) const;
   void PrepareMapBox();
+  void PrepareFootprint();
   void PrepareSplats();
   void FitAxisBox(bool cameraGuestsOnly, double corners[24], float worldToBox[16],
     float boxToWorld[16], double extents[3]) const;

@@ -78,6 +78,20 @@ public:
   virtual void DeclareColorSwitches(const vtkTyndallMedium& medium, Variant& variant) const = 0;
 
   /**
+   * Sets the switches of the camera rays' samples (the ray-cast pass, after
+   * its other switches), given the world width of a pixel at the medium's
+   * nearest point in the frame (vtkTyndallFootprint::Minimum()): procedural
+   * detail keeps the waves such a pixel shows, filtered. Nothing by default.
+   */
+  virtual void DeclareCameraSwitches(
+    const vtkTyndallMedium& medium, double nearestPixel, Variant& variant) const
+  {
+    (void)medium;
+    (void)nearestPixel;
+    (void)variant;
+  }
+
+  /**
    * Sets the uniforms the medium's switches declare (those a program does
    * not declare are skipped by OpenGL).
    */

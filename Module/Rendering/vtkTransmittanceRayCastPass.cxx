@@ -70,6 +70,14 @@ bool vtkTransmittanceRayCastPass::Render(
   const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic;
   vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
   variant.DetailSamples = this->LastDetailSamples;
+  frame.Adapter->DeclareCameraSwitches(*frame.OwnMedium, frame.NearestPixel, variant);
+  this->LastDetailCameraWaves = 0;
+  if (frame.Detail && frame.Detail->Enabled())
+  {
+    this->LastDetailCameraWaves = variant.DetailFilter
+      ? frame.Detail->GetLiveWaves(frame.NearestPixel)
+      : static_cast<int>(frame.Detail->GetWaves().size());
+  }
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
       vtkTransmittanceShaderSource::RAY_CAST, variant));
@@ -220,6 +228,13 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   ToColumnMajor(ndcToWorld, ndcToWorldF);
   program->SetUniformMatrix4x4("ndcToWorld", ndcToWorldF);
   program->SetUniformi("depthTexture", inputs.Depth->GetTextureUnit());
+  // The world width of a pixel along the rays (procedural detail's filter).
+  const vtkTyndallFootprint& f = frame.Footprint;
+  const float plane[4] = { float(f.Plane[0]), float(f.Plane[1]), float(f.Plane[2]),
+    float(f.Plane[3]) };
+  program->SetUniform4f("pixelDepthPlane", plane);
+  const float width[2] = { float(f.Constant), float(f.PerDepth) };
+  program->SetUniform2f("pixelWidth", width);
 
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;
   const vtkTyndallGridMedium& medium = *frame.Medium;
@@ -292,4 +307,5 @@ void vtkTransmittanceRayCastPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LastPassCount: " << this->LastPassCount << "\n";
   os << indent << "LastDetailSamples: " << this->LastDetailSamples << "\n";
+  os << indent << "LastDetailCameraWaves: " << this->LastDetailCameraWaves << "\n";
 }

@@ -100,6 +100,13 @@ public:
   /// Free-flight samples per pixel the last Render() drew (0: it marched).
   int GetLastDetailSamples() const { return this->LastDetailSamples; }
 
+  /**
+   * Waves of procedural detail the last Render()'s camera samples evaluated
+   * (those a pixel of the frame can show with the footprint filter; all
+   * without it; 0 without detail).
+   */
+  int GetLastDetailCameraWaves() const { return this->LastDetailCameraWaves; }
+
   /// Still frames averaged in the last Render()'s picture (0: no average kept).
   int GetLastHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
 
@@ -130,6 +137,7 @@ private:
   vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
   int LastPassCount = 0;
   int LastDetailSamples = 0;
+  int LastDetailCameraWaves = 0;
 };
 
 #endif

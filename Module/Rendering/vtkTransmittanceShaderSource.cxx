@@ -4,6 +4,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallClipRegion.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkTyndallTransferTable.h"
 
@@ -19,6 +20,7 @@
 #include "vtkTransmittanceSplatVS.h"
 #include "vtkTransmittanceSurfaceFS.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -69,12 +71,27 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("DETAIL_GROUPS", variant.DetailGroups);
   define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);
   define("DETAIL_SOLVE_ITERATIONS", DetailSolveIterations);
+  define("DETAIL_FILTER", variant.DetailGroups > 0 && variant.DetailFilter ? 1 : 0);
+  define("DETAIL_CUTOFF", vtkTyndallDetailMedium::FilterCutoff);
+  define("DETAIL_UNIFORM_ALBEDO", variant.DetailGroups > 0 && variant.DetailUniformAlbedo ? 1 : 0);
+  const int cameraGroups = variant.DetailCameraGroups > 0
+    ? std::min(variant.DetailCameraGroups, variant.DetailGroups)
+    : variant.DetailGroups;
   os << "#define TYNDALL_DETAIL_FOR_GROUPS(X)";
   for (int g = 0; g < variant.DetailGroups; ++g)
   {
     os << " X(" << g << ")";
   }
+  os << "\n#define TYNDALL_DETAIL_FOR_CAMERA_GROUPS(X)";
+  for (int g = 0; g < cameraGroups; ++g)
+  {
+    os << " X(" << g << ")";
+  }
   os << "\n";
+  if (variant.DetailGroups > 0)
+  {
+    os << variant.DetailWaves;
+  }
   // Guests: the other media the light crosses, and the loop over them.
   define("GUESTS", variant.Guests);
   define("MAP_BEYOND_MEDIUM", variant.MapBeyondMedium ? 1 : 0);

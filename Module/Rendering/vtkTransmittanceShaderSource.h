@@ -82,6 +82,25 @@ public:
     bool Clip = false; // the medium is clipped or cropped (vtkTyndallClipRegion)
     /// Groups of four waves of procedural detail (vtkTyndallDetailMedium); 0: none.
     int DetailGroups = 0;
+    /**
+     * The waves as GLSL constants (vtkTransmittanceDetailAdapter): literal
+     * numbers, which llvmpipe folds into its code (read from uniform arrays,
+     * they cost 3x the whole sample), so a change of the waves compiles anew.
+     */
+    std::string DetailWaves;
+    /**
+     * The camera samples of the detail (RAY_CAST): the groups they evaluate
+     * (the waves a pixel of the frame shows; the first groups) and whether
+     * they filter them by the pixel's footprint.
+     */
+    int DetailCameraGroups = 0;
+    bool DetailFilter = false;
+    /**
+     * Procedural detail whose colour is one albedo (the colour table is
+     * constant) and that emits nothing from the table: a sample needs the
+     * shape alone, not the scalar (one trilinear fetch less).
+     */
+    bool DetailUniformAlbedo = false;
     /// Free-flight samples per camera ray through the detail (RAY_CAST); 0: a march.
     int DetailSamples = 0;
     /**

@@ -762,6 +762,12 @@ int vtkTransmittanceVolumeMapper::GetLastDetailSamplesPerPixel()
 }
 
 //------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetLastDetailCameraWaves()
+{
+  return this->Internals->Complete ? this->Internals->RayCast->GetLastDetailCameraWaves() : 0;
+}
+
+//------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetAccumulatedFrames()
 {
   const vtkInternals& in = *this->Internals;

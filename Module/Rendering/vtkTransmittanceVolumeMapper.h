@@ -330,6 +330,15 @@ public:
   int GetLastDetailSamplesPerPixel();
 
   /**
+   * The waves of procedural detail the last Render()'s camera samples
+   * evaluated: with the footprint filter
+   * (vtkParticipatingMediumProperty::DetailFilterWidth) those a pixel of the
+   * frame can show, coarsest first (a far volume needs fewer); all without
+   * it; 0 without detail or when nothing was rendered.
+   */
+  int GetLastDetailCameraWaves();
+
+  /**
    * The still frames the last Render()'s picture averages (DetailSamplesPerPixel
    * > 0; 0 otherwise).
    */

@@ -4,7 +4,8 @@ vtk_add_test_cxx(TyndallMediumCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestTransferFunctionFileReader.cxx
   TestTransferFunctionPresets.cxx
-  TestTyndallDetailMedium.cxx)
+  TestTyndallDetailMedium.cxx
+  TestTyndallFootprintFilter.cxx)
 vtk_test_cxx_executable(TyndallMediumCxxTests tests
   RENDERING_FACTORY
   DISABLE_FLOATING_POINT_EXCEPTIONS)

@@ -27,7 +27,6 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
-#include "vtkMatrix3x3.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
@@ -40,6 +39,7 @@
 #include "vtkVolume.h"
 
 #include "TyndallTestCheck.h"
+#include "TyndallTestScene.h"
 #include "TyndallTestQuadrature.h"
 
 #include <algorithm>
@@ -119,16 +119,7 @@ struct Scene
 
   Scene(Random& random)
   {
-    this->Image->SetDimensions(9, 7, 6);
-    this->Image->SetSpacing(0.3, 0.25, 0.4);
-    this->Image->SetOrigin(-1.2, -0.7, -0.9);
-    vtkNew<vtkMatrix3x3> direction; // a rotation about z by 30 degrees
-    const double a = vtkMath::RadiansFromDegrees(30.0);
-    direction->SetElement(0, 0, std::cos(a));
-    direction->SetElement(0, 1, -std::sin(a));
-    direction->SetElement(1, 0, std::sin(a));
-    direction->SetElement(1, 1, std::cos(a));
-    this->Image->SetDirectionMatrix(direction);
+    tyndall_test::SetSkewedGeometry(this->Image);
     vtkNew<vtkFloatArray> values;
     values->SetName("density");
     values->SetNumberOfTuples(this->Image->GetNumberOfPoints());

@@ -128,6 +128,11 @@ bool tyndallClipped(vec3 x)
 }
 #endif
 
+// The world width of a pixel at the camera sample being taken, which
+// procedural detail is filtered by (the ray-cast pass sets it around its
+// samples of the medium); 0 for every other sample (light rays, maps).
+float tyndallFootprint = 0.0;
+
 // The medium's own functions, from its adapter (vtkTransmittanceMediumAdapter):
 // procedural detail brings vtkTransmittanceDetailFS.glsl (TYNDALL_DETAIL_GROUPS > 0).
 //TYNDALL::Medium
@@ -155,6 +160,13 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
     tableCoord = 0.0;
     return 0.0;
   }
+#endif
+#if TYNDALL_DETAIL_UNIFORM_ALBEDO
+  // Procedural detail of one colour that emits nothing from the table: the
+  // shape is the extinction, and the scalar is not needed.
+  color = detailAlbedo;
+  tableCoord = 0.0;
+  return tyndallDetailExtinction(q);
 #endif
   float value = texture(volumeTexture, texel).r;
   tableCoord = value * scalarToTable.x + scalarToTable.y;

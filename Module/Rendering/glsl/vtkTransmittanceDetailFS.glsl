@@ -3,7 +3,11 @@
 // noise). Extinction = shape(p) * detailScale * max(0, noise(p)), p in field
 // index coordinates; the shape is the pre-classified extinction, one texel
 // per sample of the grid; the noise is detailOffset plus the waves, four per
-// group (TYNDALL_DETAIL_GROUPS groups, unused waves have amplitude 0).
+// group (TYNDALL_DETAIL_GROUPS groups, coarsest first; unused waves have
+// amplitude 0). The waves are constants of the program (detailKx, detailKy,
+// detailKz: wave vectors in field index units; detailPhase, detailAmplitude;
+// detailDecay: the footprint filter's, vtkTransmittanceDetailAdapter::
+// WaveConstants()).
 // TYNDALL_DETAIL_FOR_GROUPS(X) expands to X(0) X(1) .. X(groups - 1): the
 // wave loops are unrolled by the preprocessor, so they count no loop
 // iterations against llvmpipe's limit.
@@ -14,13 +18,26 @@ uniform vec3 detailBoxSize;
 uniform int detailMaxCells; // cells a ray can cross: the sum of detailDims, plus 3
 uniform float detailOffset;
 uniform float detailScale;
-uniform vec4 detailKx[TYNDALL_DETAIL_GROUPS]; // wave vectors (field index), phases, amplitudes
-uniform vec4 detailKy[TYNDALL_DETAIL_GROUPS];
-uniform vec4 detailKz[TYNDALL_DETAIL_GROUPS];
-uniform vec4 detailPhase[TYNDALL_DETAIL_GROUPS];
-uniform vec4 detailAmplitude[TYNDALL_DETAIL_GROUPS];
+#if TYNDALL_DETAIL_UNIFORM_ALBEDO
+uniform vec3 detailAlbedo; // the colour table's one colour
+#endif
 
-#define TYNDALL_DETAIL_NOISE_GROUP(g) sum += dot(detailAmplitude[g], cos(detailKx[g] * p.x + detailKy[g] * p.y + detailKz[g] * p.z + detailPhase[g]));
+// cos(x) per component: x reduced to [-pi, pi] in periods, then the Taylor
+// series to x^16 in Horner's form; within 4e-7 of cos on [-pi, pi], and
+// beyond within the rounding of the reduction (2e-6 at |x| = 50, 2e-5 at
+// 500: the float phase's own uncertainty there). Cheaper than llvmpipe's
+// built-in cos: the default scene's frame 8% faster.
+vec4 tyndallCos(vec4 x)
+{
+  vec4 y = x * 0.15915494309189535;
+  vec4 r = (y - floor(y + 0.5)) * 6.283185307179586;
+  vec4 z = r * r;
+  return 1.0 + z * (-1.0 / 2.0 + z * (1.0 / 24.0 + z * (-1.0 / 720.0 + z * (1.0 / 40320.0 +
+    z * (-1.0 / 3628800.0 + z * (1.0 / 479001600.0 + z * (-1.0 / 87178291200.0 +
+    z * (1.0 / 20922789888000.0))))))));
+}
+
+#define TYNDALL_DETAIL_NOISE_GROUP(g) sum += dot(detailAmplitude[g], tyndallCos(detailKx[g] * p.x + detailKy[g] * p.y + detailKz[g] * p.z + detailPhase[g]));
 
 // The noise at field index point p.
 float tyndallDetailNoise(vec3 p)
@@ -30,12 +47,41 @@ float tyndallDetailNoise(vec3 p)
   return sum;
 }
 
-// The extinction at box point q ([0,1]^3).
+#if TYNDALL_DETAIL_FILTER
+// The footprint filter of camera samples (vtkTyndallDetailMedium::
+// FilteredNoise()): each group of waves times exp(-|k|^2 sigma^2 / 2) =
+// exp2(decay pixel^2) (|k|^2 the group's mean), sigma the filter's width
+// times the pixel's, or 0 below TYNDALL_DETAIL_CUTOFF; only the first
+// TYNDALL_DETAIL_CAMERA_GROUPS groups, the waves a pixel of this frame can
+// show.
+#define TYNDALL_DETAIL_FILTERED_GROUP(g) { float f = exp2(detailDecay[g] * pixel2); f *= step(TYNDALL_DETAIL_CUTOFF, f); sum += f * dot(detailAmplitude[g], tyndallCos(detailKx[g] * p.x + detailKy[g] * p.y + detailKz[g] * p.z + detailPhase[g])); }
+
+float tyndallDetailFilteredNoise(vec3 p, float pixel)
+{
+  float pixel2 = pixel * pixel;
+  float sum = detailOffset;
+  TYNDALL_DETAIL_FOR_CAMERA_GROUPS(TYNDALL_DETAIL_FILTERED_GROUP)
+  return sum;
+}
+#endif
+
+// The extinction at box point q ([0,1]^3): filtered by the footprint of
+// the camera sample being taken (tyndallFootprint, the world width of its
+// pixel), unfiltered elsewhere (tyndallFootprint 0: light rays, maps).
 float tyndallDetailExtinction(vec3 q)
 {
   vec3 p = detailBoxLow + q * detailBoxSize;
   float shape = texture(detailShapeTexture, (p + 0.5) / detailDims).r;
-  return shape > 0.0 ? shape * detailScale * max(tyndallDetailNoise(p), 0.0) : 0.0;
+  if (!(shape > 0.0))
+  {
+    return 0.0; // no waves where the shape is empty (a GPU branches; llvmpipe masks)
+  }
+#if TYNDALL_DETAIL_FILTER
+  float noise = tyndallDetailFilteredNoise(p, tyndallFootprint);
+#else
+  float noise = tyndallDetailNoise(p);
+#endif
+  return shape * detailScale * max(noise, 0.0);
 }
 
 // Re(e^{i alpha} sum_n e_n K_n(theta)) per component, K_n(theta) =

@@ -555,9 +555,28 @@ struct TyndallCameraSample
   float TableCoord; // alone: the sample's position in the transfer table
 };
 
+#if TYNDALL_DETAIL_FILTER
+// The world width of a pixel at x: pixelWidth.x + pixelWidth.y * depth,
+// depth = pixelDepthPlane . (x, 1) (vtkTyndallFootprint).
+uniform vec4 pixelDepthPlane;
+uniform vec2 pixelWidth;
+#endif
+
+// What procedural detail is filtered by at the camera sample x (the
+// footprint of its pixel); 0: unfiltered.
+float tyndallPixelFootprint(vec3 x)
+{
+#if TYNDALL_DETAIL_FILTER
+  return pixelWidth.x + pixelWidth.y * max(dot(pixelDepthPlane.xyz, x) + pixelDepthPlane.w, 0.0);
+#else
+  return 0.0;
+#endif
+}
+
 TyndallCameraSample tyndallCameraSample(vec3 x)
 {
   TyndallCameraSample s;
+  tyndallFootprint = tyndallPixelFootprint(x);
 #if TYNDALL_CAMERA_GUESTS
   s.TableCoord = 0.0;
   s.Sigma = tyndallCameraMedium(x, s.Color, s.Emission);
@@ -565,6 +584,7 @@ TyndallCameraSample tyndallCameraSample(vec3 x)
   s.Emission = vec3(0.0);
   s.Sigma = tyndallMedium(x, s.Color, s.TableCoord);
 #endif
+  tyndallFootprint = 0.0; // the light rays from here see the unfiltered medium
   return s;
 }
 

@@ -1,0 +1,330 @@
+// The footprint filter of procedural detail (issue 39) on the CPU, the
+// oracle the GPU's camera rays are compared with:
+//
+// 1. vtkTyndallFootprint: the world width of a pixel at a point equals the
+//    distance between the unprojections of two neighbouring pixel centres
+//    at that point's depth (the camera's composite projection matrix),
+//    perspective (vertical and horizontal view angle) and parallel;
+// 2. the waves are sorted by world wave number, their world |k|^2 is the
+//    squared gradient of their phase in world coordinates (finite
+//    differences through the rotated, anisotropically spaced, translated
+//    image), and each group of four is filtered by its mean |k|^2;
+// 3. a single wave filtered by the Gaussian of sigma = width x pixel equals
+//    the noise convolved with that Gaussian in world space (a trapezoid rule
+//    in three dimensions, spectrally accurate for it), to 1e-9;
+// 4. the cutoff: GetLiveWaves() is the count of waves whose factor is at
+//    least FilterCutoff, and FilteredNoise() is the sum over them;
+// 5. GetCameraStep(): the midpoint rule's bound at the returned step is
+//    within StepTolerance, and 5% longer it is not (unless capped at half
+//    the spacing or half the finest wavelength).
+//
+// Costs about 0.3 s.
+#include "vtkCamera.h"
+#include "vtkCosineNoise.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkSmartVolumeMapper.h"
+#include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallFootprint.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkVolume.h"
+
+#include "TyndallTestCheck.h"
+#include "TyndallTestScene.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace
+{
+using tyndall_test::Check;
+
+// A rotated, anisotropically spaced and translated image with a noise of
+// `directions` x `octaves` waves over it.
+struct Scene
+{
+  vtkNew<vtkImageData> Image;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkSmartVolumeMapper> Mapper;
+  vtkNew<vtkParticipatingMediumProperty> Property;
+  vtkNew<vtkCosineNoise> Noise;
+  vtkTyndallGridMedium Grid;
+  vtkTyndallDetailMedium Detail;
+
+  Scene(int directions, int octaves, double width)
+  {
+    tyndall_test::SetSkewedGeometry(this->Image);
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfTuples(this->Image->GetNumberOfPoints());
+    values->Fill(1.0);
+    this->Image->GetPointData()->SetScalars(values);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(1.0, 0.5);
+    this->Property->SetScalarOpacity(opacity);
+    this->Mapper->SetInputData(this->Image);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Volume->SetPosition(0.3, -0.2, 0.1);
+    this->Volume->RotateX(20.0);
+    this->Volume->SetScale(1.0, 1.5, 0.8);
+    this->Noise->SetNumberOfDirections(directions);
+    this->Noise->SetNumberOfOctaves(octaves);
+    this->Noise->SetFrequency(0.9);
+    this->Noise->SetOffset(0.3);
+    this->Update(width);
+  }
+
+  bool Update(double width)
+  {
+    return this->Grid.Update(this->Volume, this->Volume) &&
+      this->Detail.Update(this->Grid, this->Noise, this->Volume, width);
+  }
+
+  void ToIndex(const double x[3], double p[3]) const
+  {
+    const double* m = this->Grid.GetWorldToIndex();
+    for (int r = 0; r < 3; ++r)
+    {
+      p[r] = m[4 * r] * x[0] + m[4 * r + 1] * x[1] + m[4 * r + 2] * x[2] + m[4 * r + 3];
+    }
+  }
+};
+
+// The world point of normalised device coordinates (x, y, z).
+void Unproject(const double inverse[16], double x, double y, double z, double world[3])
+{
+  const double in[4] = { x, y, z, 1.0 };
+  double out[4];
+  vtkMatrix4x4::MultiplyPoint(inverse, in, out);
+  for (int c = 0; c < 3; ++c)
+  {
+    world[c] = out[c] / out[3];
+  }
+}
+
+void TestFootprint()
+{
+  const int width = 160, height = 100;
+  for (int kind = 0; kind < 3; ++kind)
+  {
+    vtkNew<vtkCamera> camera;
+    camera->SetPosition(1.0, 2.0, 6.0);
+    camera->SetFocalPoint(0.2, -0.1, 0.3);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(35.0);
+    camera->SetUseHorizontalViewAngle(kind == 1);
+    camera->SetParallelProjection(kind == 2);
+    camera->SetParallelScale(1.7);
+    camera->SetClippingRange(0.5, 20.0);
+    vtkTyndallFootprint footprint;
+    Check(footprint.SetCamera(camera, width, height), "the footprint reads the camera");
+    double inverse[16];
+    vtkMatrix4x4::Invert(
+      camera->GetCompositeProjectionTransformMatrix(double(width) / height, -1.0, 1.0)->GetData(),
+      inverse);
+    double worst = 0.0;
+    for (const double z : { -0.9, 0.0, 0.7 })
+    {
+      // The centre pixel and its right-hand neighbour at one depth.
+      double a[3], b[3];
+      Unproject(inverse, 1.0 / width, 1.0 / height, z, a);
+      Unproject(inverse, 3.0 / width, 1.0 / height, z, b);
+      const double measured = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      worst = std::max(worst, std::abs(footprint.At(a) / measured - 1.0));
+    }
+    const char* names[3] = { "perspective", "horizontal view angle", "parallel" };
+    std::cout << names[kind] << ": pixel width against unprojected pixel centres, worst " << worst
+              << " relative\n";
+    Check(
+      worst < 1e-3, std::string("the footprint is a pixel's world width (") + names[kind] + ")");
+  }
+  vtkTyndallFootprint none;
+  Check(!none.SetCamera(nullptr, 10, 10) && none.At(std::array<double, 3>{ 1, 2, 3 }.data()) == 0.0,
+    "no camera: no footprint");
+}
+
+void TestWaves()
+{
+  Scene scene(24, 3, 0.5);
+  const auto& waves = scene.Detail.GetWaves();
+  bool sorted = true, groups = true;
+  double worstK2 = 0.0;
+  for (size_t i = 0; i < waves.size(); ++i)
+  {
+    sorted = sorted && (i == 0 || waves[i - 1].WorldK2 <= waves[i].WorldK2);
+    const size_t g = i / 4 * 4, end = std::min(waves.size(), g + 4);
+    double mean = 0.0;
+    for (size_t j = g; j < end; ++j)
+    {
+      mean += waves[j].WorldK2 / (end - g);
+    }
+    groups = groups && std::abs(waves[i].FilterK2 - mean) <= 1e-12 * mean;
+    // The factor the group's mean gives (or 0 below the cutoff).
+    const double sigma = 0.1;
+    const double factor = std::exp(-0.5 * mean * sigma * sigma);
+    groups = groups &&
+      std::abs(scene.Detail.FilterFactor(static_cast<int>(i), sigma) -
+        (factor >= vtkTyndallDetailMedium::FilterCutoff ? factor : 0.0)) <= 1e-12;
+    // |grad_x (k . p(x))|^2 by central differences in world space.
+    const double x[3] = { 0.1, -0.2, 0.3 };
+    double k2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      double xp[3] = { x[0], x[1], x[2] }, xm[3] = { x[0], x[1], x[2] }, pp[3], pm[3];
+      xp[a] += 1e-4;
+      xm[a] -= 1e-4;
+      scene.ToIndex(xp, pp);
+      scene.ToIndex(xm, pm);
+      const double phaseDifference = waves[i].K[0] * (pp[0] - pm[0]) +
+        waves[i].K[1] * (pp[1] - pm[1]) + waves[i].K[2] * (pp[2] - pm[2]);
+      k2 += std::pow(phaseDifference / 2e-4, 2);
+    }
+    worstK2 = std::max(worstK2, std::abs(k2 / waves[i].WorldK2 - 1.0));
+  }
+  std::cout << "world |k|^2 against the phase's gradient: worst " << worstK2 << " relative\n";
+  Check(waves.size() == 72 && sorted, "the waves are sorted by world wave number");
+  Check(groups, "each group of four is filtered by its mean |k|^2");
+  Check(worstK2 < 1e-6, "world |k|^2 is the squared gradient of the phase in world space");
+}
+
+void TestGaussian()
+{
+  Scene scene(1, 1, 0.8);
+  const double pixel = 0.45;
+  const double sigma = 0.8 * pixel;
+  const auto& wave = scene.Detail.GetWaves().at(0);
+  std::cout << "one wave, |k| sigma = " << std::sqrt(wave.WorldK2) * sigma << "\n";
+  double worst = 0.0;
+  for (const double* x : { std::array<double, 3>{ 0.1, -0.2, 0.3 }.data(),
+         std::array<double, 3>{ -0.4, 0.5, 0.05 }.data() })
+  {
+    // The Gaussian convolution in world space: a trapezoid rule over
+    // [-8 sigma, 8 sigma]^3 (spectrally accurate for a Gaussian times a wave).
+    const int n = 64;
+    const double h = 16.0 * sigma / n;
+    double sum = 0.0, weights = 0.0;
+    for (int i = 0; i <= n; ++i)
+    {
+      for (int j = 0; j <= n; ++j)
+      {
+        for (int k = 0; k <= n; ++k)
+        {
+          const double u[3] = { -8 * sigma + i * h, -8 * sigma + j * h, -8 * sigma + k * h };
+          const double g =
+            std::exp(-(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) / (2 * sigma * sigma));
+          const double y[3] = { x[0] + u[0], x[1] + u[1], x[2] + u[2] };
+          double p[3];
+          scene.ToIndex(y, p);
+          sum += g * scene.Detail.Noise(p);
+          weights += g;
+        }
+      }
+    }
+    double p[3];
+    scene.ToIndex(x, p);
+    worst = std::max(worst, std::abs(sum / weights - scene.Detail.FilteredNoise(p, pixel)));
+  }
+  std::cout << "filtered wave against its Gaussian convolution: worst " << worst << "\n";
+  Check(worst < 1e-9, "a filtered wave is the wave convolved with the Gaussian of the footprint");
+}
+
+void TestCutoff()
+{
+  Scene scene(24, 4, 0.5);
+  const vtkTyndallDetailMedium& detail = scene.Detail;
+  const int n = static_cast<int>(detail.GetWaves().size());
+  const double x[3] = { 0.2, 0.1, -0.1 };
+  double p[3];
+  scene.ToIndex(x, p);
+  int cut = 0;
+  double worst = 0.0;
+  for (double pixel = 0.0; pixel < 2.0; pixel += 0.01)
+  {
+    const int live = detail.GetLiveWaves(pixel);
+    const double sigma = 0.5 * pixel;
+    bool consistent = live == n || detail.FilterFactor(live, sigma) == 0.0;
+    consistent = consistent && (live == 0 || detail.FilterFactor(live - 1, sigma) >= 0.01);
+    double sum = detail.GetOffset();
+    for (int i = 0; i < live; ++i)
+    {
+      const auto& w = detail.GetWaves()[i];
+      sum += detail.FilterFactor(i, sigma) * w.Amplitude *
+        std::cos(w.K[0] * p[0] + w.K[1] * p[1] + w.K[2] * p[2] + w.Phase);
+    }
+    worst = std::max(worst, std::abs(sum - detail.FilteredNoise(p, pixel)));
+    cut += live < n ? 1 : 0;
+    if (!consistent)
+    {
+      Check(false, "GetLiveWaves() keeps exactly the waves above the cutoff");
+      break;
+    }
+  }
+  std::cout << "cutoff: " << cut << " of 200 footprints leave waves out; filtered noise against "
+            << "the sum over the live waves: worst " << worst << "\n";
+  Check(cut > 100 && worst < 1e-12, "the filtered noise is the sum over the live waves");
+  Check(detail.GetLiveWaves(0.0) == n &&
+      std::abs(detail.FilteredNoise(p, 0.0) - detail.Noise(p)) == 0.0,
+    "an empty footprint filters nothing");
+}
+
+void TestCameraStep()
+{
+  for (const double gain : { 0.5, 0.9 })
+  {
+    Scene scene(24, 4, 0.5);
+    scene.Noise->SetGain(gain);
+    scene.Update(0.5);
+    const vtkTyndallDetailMedium& detail = scene.Detail;
+    double sum = 0.0;
+    for (const auto& w : detail.GetWaves())
+    {
+      sum += std::abs(w.Amplitude);
+    }
+    for (const double pixel : { 0.0, 0.02, 0.2 })
+    {
+      const int live = detail.GetLiveWaves(pixel);
+      auto bound = [&](double h)
+      {
+        double e = 0.0;
+        for (int i = 0; i < live; ++i)
+        {
+          const auto& w = detail.GetWaves()[i];
+          const double a = 0.5 * std::sqrt(w.WorldK2) * h;
+          e += std::abs(w.Amplitude) * (1.0 - std::sin(a) / a);
+        }
+        return e / sum;
+      };
+      const double cap = std::min(1.0, 0.5 * detail.GetFinestWavelength(live));
+      const double h = detail.GetCameraStep(pixel, 1.0);
+      const bool capped = h >= cap * (1 - 1e-12);
+      std::cout << "gain " << gain << ", pixel " << pixel << ": step " << h << " ("
+                << detail.GetFinestWavelength(live) / h << " per finest wavelength), bound "
+                << bound(h) << (capped ? ", capped" : "") << "\n";
+      Check(h > 0.0 && h <= cap * (1 + 1e-12) &&
+          bound(h) <= vtkTyndallDetailMedium::StepTolerance * (1 + 1e-9) &&
+          (capped || bound(1.05 * h) > vtkTyndallDetailMedium::StepTolerance),
+        "the camera step is the longest within the midpoint rule's tolerance");
+    }
+  }
+}
+}
+
+int TestTyndallFootprintFilter(int, char*[])
+{
+  TestFootprint();
+  TestWaves();
+  TestGaussian();
+  TestCutoff();
+  TestCameraStep();
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
