@@ -106,25 +106,18 @@ bool vtkTyndallDetailMedium::Update(
   // Coarsest first: the footprint filter keeps a prefix of them.
   std::stable_sort(
     waves.begin(), waves.end(), [](const Wave& a, const Wave& b) { return a.WorldK2 < b.WorldK2; });
-  for (size_t g = 0; g < waves.size(); g += 4)
+  // Each group of four is filtered by its coarsest wave (the first).
+  for (size_t i = 0; i < waves.size(); ++i)
   {
-    const size_t end = std::min(waves.size(), g + 4);
-    double sum = 0.0;
-    for (size_t i = g; i < end; ++i)
-    {
-      sum += waves[i].WorldK2;
-    }
-    for (size_t i = g; i < end; ++i)
-    {
-      waves[i].FilterK2 = sum / static_cast<double>(end - g);
-    }
+    waves[i].FilterK2 = waves[i / 4 * 4].WorldK2;
   }
   const vtkMTimeType source = std::max({ grid.GetScalarsTime(), grid.GetExtinctionTime() });
   const bool shapeStale = source != this->SourceTime ||
     grid.GetParameters().DensityScale != this->Density || this->ShapeValues.empty();
+  const double width = filterWidth > 0.0 ? filterWidth : 0.0; // NaN: 0
   const bool wavesChanged =
-    shapeStale || noise->GetMTime() != this->NoiseTime || filterWidth != this->FilterWidth;
-  this->FilterWidth = std::max(0.0, filterWidth);
+    shapeStale || noise->GetMTime() != this->NoiseTime || width != this->FilterWidth;
+  this->FilterWidth = width;
   this->Waves = std::move(waves);
   this->Offset = noise->GetOffset();
   this->Scale = noise->GetExtinctionScale();

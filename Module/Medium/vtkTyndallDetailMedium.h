@@ -93,7 +93,8 @@ public:
    * One cosine wave in field index coordinates: a cos(k . p + phase); |k|^2
    * in world units (WorldK2: k is A^T k in world coordinates, A the world ->
    * field index matrix), and the |k|^2 the footprint filter reads
-   * (FilterK2: the mean WorldK2 of its group of four, see FilterFactor()).
+   * (FilterK2: the WorldK2 of the coarsest wave of its group of four, see
+   * FilterFactor()).
    */
   struct Wave
   {
@@ -132,11 +133,15 @@ public:
    * filtered by a Gaussian of standard deviation sigma = FilterWidth x
    * pixel: wave i with its amplitude times FilterFactor(i, sigma), that is
    * exp(-|k|^2 sigma^2 / 2), or 0 below FilterCutoff. The waves are filtered
-   * in groups of four consecutive ones (coarsest first, so of nearly the
-   * same |k|: within an octave the directions' lengths differ by 20% at
-   * most) with the group's mean |k|^2 (Wave::FilterK2): one exponential per
-   * group on the GPU, where one per wave cost a quarter of the frame; a
-   * single wave is filtered exactly. The filter acts on the
+   * in groups of four consecutive ones (sorted coarsest first) with the
+   * |k|^2 of the group's coarsest wave (Wave::FilterK2): one exponential
+   * per group on the GPU, where one per wave made the default scene's frame
+   * 19% slower. So no wave is filtered more than its own Gaussian asks,
+   * the finer ones of a group a little less (with the directions a multiple
+   * of four a group stays within an octave, whose directions' lengths
+   * differ by 20% at most; otherwise a group can span octaves, and its
+   * finer waves keep more of their amplitude than a pixel can show); a
+   * group of one wave is filtered exactly. The filter acts on the
    * noise before its clamp at 0 (the extinction is shape x max(0, filtered
    * noise)): a filtered noise is smoother, not the mean of the clamped one.
    * GetLiveWaves(pixel): how many of the waves (coarsest first) a sample

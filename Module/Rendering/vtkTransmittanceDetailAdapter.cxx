@@ -71,7 +71,7 @@ void vtkTransmittanceDetailAdapter::DeclareSwitches(const vtkTyndallMedium& medi
   const vtkTyndallDetailMedium& detail = Detail(medium);
   this->GridAdapter(detail).DeclareSwitches(*detail.GetGrid(), textures, variant);
   variant.DetailGroups = static_cast<int>((detail.GetWaves().size() + 3) / 4);
-  variant.DetailCameraGroups = variant.DetailGroups;
+  variant.DetailCameraGroups = -1; // all
   variant.DetailFilter = false;
   // The passes that read no colour take it too; the camera's decide in
   // DeclareColorSwitches().
@@ -89,16 +89,20 @@ void vtkTransmittanceDetailAdapter::DeclareCameraSwitches(
   const vtkTyndallMedium& medium, double nearestPixel, Variant& variant) const
 {
   const vtkTyndallDetailMedium& detail = Detail(medium);
-  // The footprint filter on marched camera rays; a brute-force light march
-  // through guests samples the same function (unfiltered: every wave).
-  const bool lightMarches = variant.BruteForceLights && variant.Guests > 0;
-  if (variant.DetailGroups == 0 || variant.DetailSamples > 0 || lightMarches ||
-    !(detail.GetFilterWidth() > 0.0))
+  // The footprint filter on marched camera rays (the sampled ones follow the
+  // unfiltered closed form).
+  if (variant.DetailGroups == 0 || variant.DetailSamples > 0 || !(detail.GetFilterWidth() > 0.0))
   {
     return;
   }
   variant.DetailFilter = true;
-  variant.DetailCameraGroups = (detail.GetLiveWaves(nearestPixel) + 3) / 4;
+  // A brute-force light march through guests samples the same function
+  // with a footprint of 0 (every wave, unfiltered): it keeps them all.
+  const bool lightMarches = variant.BruteForceLights && variant.Guests > 0;
+  if (!lightMarches)
+  {
+    variant.DetailCameraGroups = (detail.GetLiveWaves(nearestPixel) + 3) / 4;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -106,7 +110,8 @@ std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailM
 {
   // Per group of four: the wave vectors (field index), phases and
   // amplitudes; per group the filter's decay, exp2(decay pixel^2) =
-  // exp(-|k|^2 (width pixel)^2 / 2) with the group's |k|^2 (FilterK2).
+  // exp(-|k|^2 (width pixel)^2 / 2) with the |k|^2 of the group's coarsest
+  // wave (FilterK2).
   const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
   const int groups = static_cast<int>((waves.size() + 3) / 4);
   const double width = detail.GetFilterWidth();

@@ -312,7 +312,7 @@ bool vtkTransmittanceFrame::NeedsMaps() const
 }
 
 //------------------------------------------------------------------------------
-double vtkTransmittanceFrame::GetStepLength() const
+double vtkTransmittanceFrame::GetStepLength(double nearestPixel) const
 {
   if (this->Integrator.SampleDistance > 0.0)
   {
@@ -321,7 +321,7 @@ double vtkTransmittanceFrame::GetStepLength() const
   if (this->Detail && this->Detail->Enabled())
   {
     // The midpoint rule's error on the waves the camera rays evaluate.
-    return this->Detail->GetCameraStep(this->NearestPixel, 0.5 * this->MinimumSpacing);
+    return this->Detail->GetCameraStep(nearestPixel, 0.5 * this->MinimumSpacing);
   }
   // The medium's finest feature: its spacing, or a particle's size.
   return 0.5 * std::min(this->MinimumSpacing, this->OwnMedium->GetFinestFeature());

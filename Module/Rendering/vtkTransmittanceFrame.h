@@ -165,12 +165,14 @@ public:
    * the medium's finest feature (vtkTyndallMedium::GetFinestFeature()).
    * With procedural detail, at most half the smallest spacing, as long as
    * the midpoint rule's error on the waves the camera rays evaluate allows
-   * (vtkTyndallDetailMedium::GetCameraStep() at NearestPixel): two samples
+   * (vtkTyndallDetailMedium::GetCameraStep() at `nearestPixel`, the
+   * narrowest pixel of the image drawn: NearestPixel, times a reduced
+   * image's reduction): two samples
    * per period of the finest wave where its amplitude is small (the default
    * scene: 70 dB against a quarter period, the old step), four where the
    * fine waves are strong.
    */
-  double GetStepLength() const;
+  double GetStepLength(double nearestPixel) const;
 
   /**
    * The world width of a pixel along the camera rays (vtkTyndallFootprint),

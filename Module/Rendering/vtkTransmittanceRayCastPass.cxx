@@ -60,23 +60,26 @@ bool vtkTransmittanceRayCastPass::Render(
   // Sampled detail: one pass of free flights, averaged with the frames before.
   this->LastDetailSamples = DetailSamplesFor(frame, inputs.DetailSamples);
   const bool sampled = this->LastDetailSamples > 0;
-  const double step = frame.GetStepLength() * std::max(inputs.StepScale, 1.0);
+  const int reduction = std::max(inputs.Reduction, 1);
+  // A reduced image's pixels are `reduction` times wider: detail is filtered by them.
+  const double nearestPixel = frame.NearestPixel * reduction;
+  const double step = frame.GetStepLength(nearestPixel) * std::max(inputs.StepScale, 1.0);
   const int steps = static_cast<int>(std::min(kMaxSteps, frame.Diagonal / step + 2.0));
   const int perPass = sampled ? steps : StepsPerPass(frame);
   const int passes = (steps + perPass - 1) / perPass;
-  const int reduction = std::max(inputs.Reduction, 1);
   // A coloured extinction needs a second render target: never drawn direct.
   const bool chromatic = frame.Medium->GetParameters().GetChromatic();
   const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic;
   vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
   variant.DetailSamples = this->LastDetailSamples;
-  frame.Adapter->DeclareCameraSwitches(*frame.OwnMedium, frame.NearestPixel, variant);
+  frame.Adapter->DeclareCameraSwitches(*frame.OwnMedium, nearestPixel, variant);
   this->LastDetailCameraWaves = 0;
   if (frame.Detail && frame.Detail->Enabled())
   {
-    this->LastDetailCameraWaves = variant.DetailFilter
-      ? frame.Detail->GetLiveWaves(frame.NearestPixel)
-      : static_cast<int>(frame.Detail->GetWaves().size());
+    const int all = static_cast<int>(frame.Detail->GetWaves().size());
+    this->LastDetailCameraWaves = variant.DetailCameraGroups >= 0
+      ? std::min(all, frame.Detail->GetLiveWaves(nearestPixel))
+      : all;
   }
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
@@ -233,7 +236,8 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   const float plane[4] = { float(f.Plane[0]), float(f.Plane[1]), float(f.Plane[2]),
     float(f.Plane[3]) };
   program->SetUniform4f("pixelDepthPlane", plane);
-  const float width[2] = { float(f.Constant), float(f.PerDepth) };
+  const double reduction = std::max(inputs.Reduction, 1); // a reduced image's pixels are wider
+  const float width[2] = { float(reduction * f.Constant), float(reduction * f.PerDepth) };
   program->SetUniform2f("pixelWidth", width);
 
   const vtkTransmittanceFrame::Settings& s = frame.Integrator;

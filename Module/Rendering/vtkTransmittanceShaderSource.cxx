@@ -74,7 +74,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("DETAIL_FILTER", variant.DetailGroups > 0 && variant.DetailFilter ? 1 : 0);
   define("DETAIL_CUTOFF", vtkTyndallDetailMedium::FilterCutoff);
   define("DETAIL_UNIFORM_ALBEDO", variant.DetailGroups > 0 && variant.DetailUniformAlbedo ? 1 : 0);
-  const int cameraGroups = variant.DetailCameraGroups > 0
+  const int cameraGroups = variant.DetailCameraGroups >= 0
     ? std::min(variant.DetailCameraGroups, variant.DetailGroups)
     : variant.DetailGroups;
   os << "#define TYNDALL_DETAIL_FOR_GROUPS(X)";
