@@ -217,8 +217,8 @@ void TestGaussian()
   const auto& wave = scene.Detail.GetWaves().at(0);
   std::cout << "one wave, |k| sigma = " << std::sqrt(wave.WorldK2) * sigma << "\n";
   double worst = 0.0;
-  for (const double* x : { std::array<double, 3>{ 0.1, -0.2, 0.3 }.data(),
-         std::array<double, 3>{ -0.4, 0.5, 0.05 }.data() })
+  const double points[2][3] = { { 0.1, -0.2, 0.3 }, { -0.4, 0.5, 0.05 } };
+  for (const double* x : points)
   {
     // The Gaussian convolution in world space: a trapezoid rule over
     // [-8 sigma, 8 sigma]^3 (spectrally accurate for a Gaussian times a wave).
