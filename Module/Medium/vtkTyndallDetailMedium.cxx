@@ -59,6 +59,50 @@ double WorldK2(const double k[3], const double* a)
   }
   return sum;
 }
+
+// The footprint filter's levels (vtkTyndallDetailMedium::FilterFactor()):
+// group g of four (waves sorted by WorldK2) is filtered with |k|^2 =
+// K0 FilterLevelRatio^n, n the largest level at or below its first (coarsest)
+// wave's WorldK2, K0 the coarsest positive WorldK2; a group whose first wave
+// has k = 0 takes FilterK2 0 (level -1: no filter).
+void SetFilterLevels(std::vector<vtkTyndallDetailMedium::Wave>& waves)
+{
+  double base = 0.0;
+  for (const auto& w : waves)
+  {
+    if (w.WorldK2 > 0.0)
+    {
+      base = w.WorldK2;
+      break;
+    }
+  }
+  const double ratio = vtkTyndallDetailMedium::FilterLevelRatio;
+  for (size_t g = 0; g < waves.size(); g += 4)
+  {
+    const double first = waves[g].WorldK2;
+    int level = -1;
+    double k2 = 0.0;
+    if (first > 0.0 && base > 0.0)
+    {
+      level = static_cast<int>(std::floor(std::log(first / base) / std::log(ratio)));
+      level = std::max(level, 0);
+      while (base * std::pow(ratio, level + 1) <= first)
+      {
+        ++level;
+      }
+      while (level > 0 && base * std::pow(ratio, level) > first)
+      {
+        --level;
+      }
+      k2 = base * std::pow(ratio, level);
+    }
+    for (size_t i = g; i < std::min(g + 4, waves.size()); ++i)
+    {
+      waves[i].FilterK2 = k2;
+      waves[i].FilterLevel = level;
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -106,11 +150,7 @@ bool vtkTyndallDetailMedium::Update(
   // Coarsest first: the footprint filter keeps a prefix of them.
   std::stable_sort(
     waves.begin(), waves.end(), [](const Wave& a, const Wave& b) { return a.WorldK2 < b.WorldK2; });
-  // Each group of four is filtered by its coarsest wave (the first).
-  for (size_t i = 0; i < waves.size(); ++i)
-  {
-    waves[i].FilterK2 = waves[i / 4 * 4].WorldK2;
-  }
+  SetFilterLevels(waves);
   const vtkMTimeType source = std::max({ grid.GetScalarsTime(), grid.GetExtinctionTime() });
   const bool shapeStale = source != this->SourceTime ||
     grid.GetParameters().DensityScale != this->Density || this->ShapeValues.empty();

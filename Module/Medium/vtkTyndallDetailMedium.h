@@ -93,8 +93,8 @@ public:
    * One cosine wave in field index coordinates: a cos(k . p + phase); |k|^2
    * in world units (WorldK2: k is A^T k in world coordinates, A the world ->
    * field index matrix), and the |k|^2 the footprint filter reads
-   * (FilterK2: the WorldK2 of the coarsest wave of its group of four, see
-   * FilterFactor()).
+   * (FilterK2, at most WorldK2: the |k|^2 of its group's level of the
+   * filter, FilterLevel, see FilterFactor()).
    */
   struct Wave
   {
@@ -103,6 +103,7 @@ public:
     double Amplitude;
     double WorldK2;
     double FilterK2;
+    int FilterLevel;
   };
 
   /**
@@ -111,6 +112,13 @@ public:
    * amplitude).
    */
   static constexpr double FilterCutoff = 0.01;
+
+  /**
+   * The footprint filter's levels: |k|^2 = K0 FilterLevelRatio^n (K0 the
+   * coarsest wave's), so the factor of level n + 1 is the factor of level n
+   * to the power 1.5, f sqrt(f) (FilterFactor()).
+   */
+  static constexpr double FilterLevelRatio = 1.5;
 
   /**
    * Reads `noise` (null: no detail, Enabled() false) over `grid`'s shape.
@@ -132,16 +140,19 @@ public:
    * pixel is `pixel` wide (world; vtkTyndallFootprint) sees the waves
    * filtered by a Gaussian of standard deviation sigma = FilterWidth x
    * pixel: wave i with its amplitude times FilterFactor(i, sigma), that is
-   * exp(-|k|^2 sigma^2 / 2), or 0 below FilterCutoff. The waves are filtered
-   * in groups of four consecutive ones (sorted coarsest first) with the
-   * |k|^2 of the group's coarsest wave (Wave::FilterK2): one exponential
-   * per group on the GPU, where one per wave made the default scene's frame
-   * 19% slower. So no wave is filtered more than its own Gaussian asks,
-   * the finer ones of a group a little less (with the directions a multiple
-   * of four a group stays within an octave, whose directions' lengths
-   * differ by 20% at most; otherwise a group can span octaves, and its
-   * finer waves keep more of their amplitude than a pixel can show); a
-   * group of one wave is filtered exactly. The filter acts on the
+   * exp(-|k|^2 sigma^2 / 2), or 0 below FilterCutoff. The waves (sorted
+   * coarsest first) are filtered in groups of four (the GPU's vectors),
+   * each group with the |k|^2 of its level (Wave::FilterK2): the largest
+   * K0 FilterLevelRatio^n at or below the |k|^2 of the group's coarsest
+   * wave, K0 the coarsest wave's. On the GPU a level's factor is the one
+   * below it times its square root, so a camera sample takes one
+   * exponential and a square root per level crossed (an exponential per
+   * wave made the default scene's frame 19% slower than one per group; with
+   * one per group the filter cost 10% of the frame, with the levels 4%). So no wave is filtered more than its own
+   * Gaussian asks; the finer ones a little less (a wave whose own factor is
+   * f keeps f^(FilterK2 / WorldK2) of its amplitude: at most f^(1/1.5) for
+   * its group's coarsest wave, more for the others of a group that spans
+   * more); the coarsest wave is filtered exactly. The filter acts on the
    * noise before its clamp at 0 (the extinction is shape x max(0, filtered
    * noise)): a filtered noise is smoother, not the mean of the clamped one.
    * GetLiveWaves(pixel): how many of the waves (coarsest first) a sample

@@ -109,9 +109,9 @@ void vtkTransmittanceDetailAdapter::DeclareCameraSwitches(
 std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailMedium& detail)
 {
   // Per group of four: the wave vectors (field index), phases and
-  // amplitudes; per group the filter's decay, exp2(decay pixel^2) =
-  // exp(-|k|^2 (width pixel)^2 / 2) with the |k|^2 of the group's coarsest
-  // wave (FilterK2).
+  // amplitudes; per group the filter's steps of level and its decay,
+  // exp2(decay pixel^2) = exp(-|k|^2 (width pixel)^2 / 2) with the |k|^2 of
+  // its level (FilterK2).
   const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
   const int groups = static_cast<int>((waves.size() + 3) / 4);
   const double width = detail.GetFilterWidth();
@@ -141,6 +141,23 @@ std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailM
     }
     os << ");\n";
   }
+  // Per group: the levels of the filter from the group before (its factor
+  // is that group's to the power 1.5 per level), or MaximumLevelSteps + 1
+  // where it takes its own exponential (the first group, one at level -1,
+  // k = 0, and one after a wider gap).
+  os << "const int detailLevelSteps[TYNDALL_DETAIL_GROUPS] = int[TYNDALL_DETAIL_GROUPS](";
+  for (int g = 0; g < groups; ++g)
+  {
+    const int level = waves[4 * static_cast<size_t>(g)].FilterLevel;
+    const int before = g > 0 ? waves[4 * static_cast<size_t>(g) - 4].FilterLevel : -1;
+    int steps = level - before;
+    if (g == 0 || before < 0 || level < 0 || steps > MaximumLevelSteps)
+    {
+      steps = MaximumLevelSteps + 1;
+    }
+    os << (g > 0 ? ", " : "") << steps;
+  }
+  os << ");\n";
   os << "const float detailDecay[TYNDALL_DETAIL_GROUPS] = float[TYNDALL_DETAIL_GROUPS](";
   for (int g = 0; g < groups; ++g)
   {

@@ -64,6 +64,16 @@ public:
    */
   static std::string WaveConstants(const vtkTyndallDetailMedium& detail);
 
+  /**
+   * The most levels of the footprint filter a camera sample climbs from
+   * one group's factor to the next's by powers of 1.5 (two operations
+   * each); a wider gap takes an exponential of its own. The shader's
+   * TYNDALL_DETAIL_FILTERED_GROUP must climb this many.
+   */
+  static constexpr int MaximumLevelSteps = 5;
+  static_assert(MaximumLevelSteps == 5,
+    "TYNDALL_DETAIL_FILTERED_GROUP in vtkTransmittanceDetailFS.glsl climbs five levels");
+
 private:
   // The adapter of the grid under the detail.
   const vtkTransmittanceMediumAdapter& GridAdapter(const vtkTyndallDetailMedium& detail) const;

@@ -47,9 +47,11 @@
 // some 20 pixels wide at 256^2): where a dense medium's first mean free path
 // shows the finest octaves.
 //
-// Usage: BenchDetail [--voxels N] [--size W] [--output DIR] [--quick] [--sampling-only]
-//                    [--projection-only] [--no-sampling] [--density S] [--gain G]
-//                    [--view NAME]
+// Usage: BenchDetail [--voxels N] [--size W[xH]] [--frames N] [--output DIR] [--quick]
+//                    [--sampling-only] [--projection-only] [--no-sampling] [--density S]
+//                    [--gain G] [--view NAME]
+// (--size: the window, W x W or W x H; --frames N: the later frame's time is
+// the mean of N, each finished with WaitForCompletion())
 // (--density S multiplies the medium's density: a denser cloud shows its
 // first mean free path, where the finest octaves are not averaged away;
 // --gain G the noise's gain, default 0.65: each octave's amplitude over the
@@ -88,7 +90,9 @@ namespace
 struct Options
 {
   int Voxels = 512;
-  int Size = 256;
+  int Size = 256; // width
+  int Height = 0; // 0: square
+  int Frames = 1; // later frames timed (their mean)
   std::string Output;
   bool SamplingOnly = false;
   bool ProjectionOnly = false;
@@ -110,8 +114,9 @@ struct View
   vtkNew<vtkVolume> Volume;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
+  int Frames = 1; // later frames timed: their mean
 
-  View(vtkImageData* data, vtkParticipatingMediumProperty* property, int size)
+  View(vtkImageData* data, vtkParticipatingMediumProperty* property, int width, int height)
   {
     this->Mapper->SetInputData(data);
     this->Mapper->JitterOff();
@@ -122,8 +127,17 @@ struct View
     this->Renderer->SetBackground(0.2, 0.3, 0.45);
     this->Renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3));
     this->Window->SetMultiSamples(0);
-    this->Window->SetSize(size, size);
+    this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
+  }
+
+  // One frame, finished (a GPU's commands done): its time.
+  double Frame()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    this->Window->Render();
+    this->Window->WaitForCompletion();
+    return Seconds(start);
   }
 
   // Renders from (x, y, z): first and later frame times, and the picture.
@@ -135,12 +149,12 @@ struct View
     camera->SetViewUp(0.0, 1.0, 0.0);
     camera->SetViewAngle(30.0);
     this->Renderer->ResetCameraClippingRange();
-    auto start = std::chrono::steady_clock::now();
-    this->Window->Render();
-    times[0] = Seconds(start);
-    start = std::chrono::steady_clock::now();
-    this->Window->Render();
-    times[1] = Seconds(start);
+    times[0] = this->Frame();
+    times[1] = 0.0;
+    for (int i = 0; i < this->Frames; ++i)
+    {
+      times[1] += this->Frame() / this->Frames;
+    }
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(this->Window);
     grab->ReadFrontBufferOff();
@@ -254,9 +268,7 @@ void SamplingStudy(View& view, const char* name, const double eye[3], const doub
     grab->ShouldRerenderOff();
     for (int frame = 1; frame <= 64; ++frame)
     {
-      const auto start = std::chrono::steady_clock::now();
-      view.Window->Render();
-      total += Seconds(start);
+      total += view.Frame();
       const bool report = frame == 1 || frame == 4 || frame == 16 || frame == 64;
       if (!report && reached >= 0.0)
       {
@@ -431,7 +443,15 @@ bool Parse(int argc, char* argv[], Options& options)
     }
     else if (a == "--size" && i + 1 < argc)
     {
-      options.Size = std::max(16, std::atoi(argv[++i]));
+      // W or WxH
+      const std::string size = argv[++i];
+      const size_t x = size.find('x');
+      options.Size = std::max(16, std::atoi(size.c_str()));
+      options.Height = x == std::string::npos ? 0 : std::max(16, std::atoi(size.c_str() + x + 1));
+    }
+    else if (a == "--frames" && i + 1 < argc)
+    {
+      options.Frames = std::max(1, std::atoi(argv[++i]));
     }
     else if (a == "--output" && i + 1 < argc)
     {
@@ -439,9 +459,10 @@ bool Parse(int argc, char* argv[], Options& options)
     }
     else
     {
-      std::printf("Usage: BenchDetail [--voxels N] [--size W] [--output DIR] [--quick] "
-                  "[--sampling-only] [--projection-only] [--no-sampling] [--density S] "
-                  "[--gain G] [--view NAME]\n");
+      std::printf(
+        "Usage: BenchDetail [--voxels N] [--size W[xH]] [--frames N] [--output DIR] [--quick] "
+        "[--sampling-only] [--projection-only] [--no-sampling] [--density S] "
+        "[--gain G] [--view NAME]\n");
       return false;
     }
   }
@@ -476,7 +497,9 @@ int main(int argc, char* argv[])
   noise->SetOffset(1.0);
   property->SetDetailNoise(noise);
 
-  View procedural(shape, property, options.Size);
+  const int height = options.Height > 0 ? options.Height : options.Size;
+  View procedural(shape, property, options.Size, height);
+  procedural.Frames = options.Frames;
   vtkTyndallGridMedium grid;
   vtkTyndallDetailMedium detail;
   if (!grid.Update(procedural.Volume, procedural.Mapper) ||
@@ -500,9 +523,9 @@ int main(int argc, char* argv[])
   // light half-way between the camera's direction and the surface normal.
   const double approach[3] = { 0.1 + 1.6, 0.25 + 1.2, 0.0 + 2.0 };
   const int views = SurfaceView(grid, detail, approach, focus[1], eyes[4], focus[4]) ? 5 : 4;
-  std::printf("BenchDetail: 64^3 shape x %d waves, %d^2, AdaptiveETM; camera rays sampled in "
+  std::printf("BenchDetail: 64^3 shape x %d waves, %d x %d, AdaptiveETM; camera rays sampled in "
               "closed form against marched\n",
-    noise->GetNumberOfWaves(), options.Size);
+    noise->GetNumberOfWaves(), options.Size, height);
   for (int e = 0; e < 3 && !options.NoSampling; ++e)
   {
     SamplingStudy(procedural, names[e], eyes[e], focus[e]);
@@ -516,22 +539,25 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkImageData> voxels = Voxelise(detail, shape, options.Voxels, maximum);
   const double voxeliseTime = Seconds(start);
   auto voxelProperty = ExtinctionProperty(property, maximum);
-  View voxelised(voxels, voxelProperty, options.Size);
+  View voxelised(voxels, voxelProperty, options.Size, height);
+  voxelised.Frames = options.Frames;
   auto plainProperty = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   plainProperty->DeepCopy(property);
   plainProperty->SetDetailNoise(nullptr);
-  View plain(shape, plainProperty, options.Size);
+  View plain(shape, plainProperty, options.Size, height);
+  plain.Frames = options.Frames;
   // The same procedural medium without the footprint filter.
   auto unfilteredProperty = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
   unfilteredProperty->DeepCopy(property);
   unfilteredProperty->SetDetailFilterWidth(0.0);
-  View unfiltered(shape, unfilteredProperty, options.Size);
+  View unfiltered(shape, unfilteredProperty, options.Size, height);
+  unfiltered.Frames = options.Frames;
 
   const double n = options.Voxels;
   const double shapeBytes = 64.0 * 64 * 64 * 4;
   std::printf("BenchDetail: 64^3 shape x %d waves against the same medium voxelised at %d^3, "
-              "%d^2, AdaptiveETM\n",
-    noise->GetNumberOfWaves(), options.Voxels, options.Size);
+              "%d x %d, AdaptiveETM (later frames: the mean of %d)\n",
+    noise->GetNumberOfWaves(), options.Voxels, options.Size, height, options.Frames);
   std::printf("GPU memory of the medium: procedural %.2f MiB (scalars + shape, 64^3 floats "
               "each), voxelised %.1f MiB (%d^3 floats): %.0fx\n",
     2 * shapeBytes / 1048576.0, n * n * n * 4 / 1048576.0, options.Voxels,
@@ -555,6 +581,9 @@ int main(int argc, char* argv[])
                 "%.2f / %.2f s\n",
       names[e], tp[0], tp[1], cameraWaves, noise->GetNumberOfWaves(), tu[0], tu[1], tp[1] / tu[1],
       tv[0], tv[1], tp[1] / tv[1], tc[0], tc[1]);
+    std::printf("%-9s frames per second: procedural %.1f, unfiltered %.1f, voxelised %.1f, plain "
+                "shape %.1f\n",
+      names[e], 1.0 / tp[1], 1.0 / tu[1], 1.0 / tv[1], 1.0 / tc[1]);
     std::printf("%-9s PSNR of the procedural picture: %.1f dB against the unfiltered one, %.1f dB "
                 "against the voxelised one, %.1f dB against the plain shape; unfiltered against "
                 "voxelised %.1f dB\n",

@@ -45,6 +45,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -155,19 +156,59 @@ void TestFootprint()
     "no camera: no footprint");
 }
 
+// The levels of the filter: group g of four is filtered with |k|^2 = K0
+// 1.5^n, n the largest level at or below its first (coarsest) wave's |k|^2,
+// K0 the coarsest wave's (`ok` false where a wave is not). Returns the number
+// of levels the groups use.
+int CountLevels(const std::vector<vtkTyndallDetailMedium::Wave>& waves, bool& ok)
+{
+  const double k0 = waves.at(0).WorldK2;
+  const double ratio = vtkTyndallDetailMedium::FilterLevelRatio;
+  int levels = 0, last = -1;
+  for (size_t i = 0; i < waves.size(); ++i)
+  {
+    const double first = waves[i / 4 * 4].WorldK2;
+    int n = 0;
+    while (k0 * std::pow(ratio, n + 1) <= first)
+    {
+      ++n;
+    }
+    const double k2 = k0 * std::pow(ratio, n);
+    ok = ok && waves[i].FilterLevel == n && std::abs(waves[i].FilterK2 / k2 - 1.0) < 1e-12 &&
+      waves[i].FilterK2 <= waves[i].WorldK2;
+    if (n != last)
+    {
+      ++levels;
+      last = n;
+    }
+  }
+  return levels;
+}
+
 void TestWaves()
 {
   Scene scene(24, 3, 0.5);
   const auto& waves = scene.Detail.GetWaves();
   bool sorted = true, groups = true;
   double worstK2 = 0.0;
+  const int skewedLevels = CountLevels(waves, groups);
+  // vtkCosineNoise's directions are 0.8 to 1.2 long: 3 octaves' |k|^2 span
+  // up to 16 x 2.25 = 1.5^8.8 (without the actor's anisotropic scale; 18
+  // groups of four).
+  Scene isotropic(24, 3, 0.5);
+  isotropic.Volume->SetScale(1.0);
+  isotropic.Update(0.5);
+  const int isotropicLevels = CountLevels(isotropic.Detail.GetWaves(), groups);
+  std::cout << "24 directions x 3 octaves: " << isotropicLevels << " levels of the filter ("
+            << skewedLevels << " under the anisotropic scale)\n";
   for (size_t i = 0; i < waves.size(); ++i)
   {
     sorted = sorted && (i == 0 || waves[i - 1].WorldK2 <= waves[i].WorldK2);
-    // Filtered by the group's coarsest wave: never more than its own
-    // Gaussian asks (or 0 below the cutoff).
-    const double coarsest = waves[i / 4 * 4].WorldK2;
-    groups = groups && waves[i].FilterK2 == coarsest;
+    // Filtered at its group's level: never more than its own Gaussian asks
+    // (or 0 below the cutoff), the group's first wave within a level of it.
+    const double coarsest = waves[i].FilterK2;
+    groups =
+      groups && waves[i / 4 * 4].WorldK2 < vtkTyndallDetailMedium::FilterLevelRatio * coarsest;
     const double sigma = 0.1;
     const double factor = std::exp(-0.5 * coarsest * sigma * sigma);
     const double f = scene.Detail.FilterFactor(static_cast<int>(i), sigma);
@@ -190,7 +231,8 @@ void TestWaves()
     }
     worstK2 = std::max(worstK2, std::abs(k2 / waves[i].WorldK2 - 1.0));
   }
-  // One direction x 4 octaves: one group spanning the octaves.
+  // One direction x 4 octaves: one group spanning the octaves, filtered
+  // by its coarsest wave.
   Scene spanning(1, 4, 0.5);
   const auto& few = spanning.Detail.GetWaves();
   for (size_t i = 0; i < few.size(); ++i)
@@ -205,7 +247,10 @@ void TestWaves()
   }
   std::cout << "world |k|^2 against the phase's gradient: worst " << worstK2 << " relative\n";
   Check(waves.size() == 72 && sorted, "the waves are sorted by world wave number");
-  Check(groups, "each group of four is filtered by its coarsest wave's |k|^2");
+  Check(isotropicLevels >= 6 && isotropicLevels <= 10,
+    "24 directions x 3 octaves use six to ten levels of the filter");
+  Check(skewedLevels < 18, "the groups share levels under an anisotropic scale too");
+  Check(groups, "each group is filtered at the level of its coarsest wave's |k|^2");
   Check(worstK2 < 1e-6, "world |k|^2 is the squared gradient of the phase in world space");
 }
 

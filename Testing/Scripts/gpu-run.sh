@@ -30,12 +30,14 @@ loader="$root/base/lib/$(ls "$root/base/lib" | grep '^ld-linux' | head -1)"
 path="$root/app/lib:$root/base/lib:$nvidia"
 run() { "$loader" --library-path "$path" "$@"; }
 
-# Xvfb finds the keyboard compiler on PATH and its data and Mesa's driver at
+# Xvfb finds the keyboard compiler on PATH (or at /usr/bin) and its data and Mesa's driver at
 # the paths Debian built it with.
 mkdir -p "$root/path" /usr/share/X11 /usr/lib/x86_64-linux-gnu/dri
 printf '#!/bin/sh\nexec "%s" --library-path "%s" "%s" "$@"\n' "$loader" "$path" \
   "$root/base/bin/xkbcomp" > "$root/path/xkbcomp"
 chmod +x "$root/path/xkbcomp"
+# Xvfb may also call it by the absolute path it was built with.
+[ -e /usr/bin/xkbcomp ] || cp "$root/path/xkbcomp" /usr/bin/xkbcomp
 [ -e /usr/share/X11/xkb ] || cp -r "$root/base/xkb" /usr/share/X11/xkb
 cp -n "$root/base/dri/swrast_dri.so" /usr/lib/x86_64-linux-gnu/dri/
 display=:${TYNDALL_GPU_DISPLAY:-9}
