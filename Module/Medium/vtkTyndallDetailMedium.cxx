@@ -82,7 +82,7 @@ void SetFilterLevels(std::vector<vtkTyndallDetailMedium::Wave>& waves)
     const double first = waves[g].WorldK2;
     int level = -1;
     double k2 = 0.0;
-    if (first > 0.0 && base > 0.0)
+    if (first > 0.0 && base > 0.0 && std::isfinite(std::log(first / base)))
     {
       level = static_cast<int>(std::floor(std::log(first / base) / std::log(ratio)));
       level = std::max(level, 0);
@@ -141,7 +141,7 @@ bool vtkTyndallDetailMedium::Update(
     w.Amplitude = amplitude;
     w.WorldK2 = WorldK2(w.K, grid.GetWorldToIndex());
     amplitudes += std::abs(amplitude);
-    if (!std::isfinite(w.K[0] + w.K[1] + w.K[2] + w.Phase + w.Amplitude))
+    if (!std::isfinite(w.K[0] + w.K[1] + w.K[2] + w.Phase + w.Amplitude + w.WorldK2))
     {
       vtkErrorWithObjectMacro(reporter, << "The detail noise has a non-finite wave.");
       return false;

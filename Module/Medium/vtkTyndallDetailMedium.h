@@ -152,7 +152,7 @@ public:
    * Gaussian asks; the finer ones a little less (a wave whose own factor is
    * f keeps f^(FilterK2 / WorldK2) of its amplitude: at most f^(1/1.5) for
    * its group's coarsest wave, more for the others of a group that spans
-   * more); the coarsest wave is filtered exactly. The filter acts on the
+   * more); the coarsest wave of all is filtered exactly. The filter acts on the
    * noise before its clamp at 0 (the extinction is shape x max(0, filtered
    * noise)): a filtered noise is smoother, not the mean of the clamped one.
    * GetLiveWaves(pixel): how many of the waves (coarsest first) a sample

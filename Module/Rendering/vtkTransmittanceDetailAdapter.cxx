@@ -141,21 +141,14 @@ std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailM
     }
     os << ");\n";
   }
-  // Per group: the levels of the filter from the group before (its factor
-  // is that group's to the power 1.5 per level), or MaximumLevelSteps + 1
-  // where it takes its own exponential (the first group, one at level -1,
-  // k = 0, and one after a wider gap).
+  // Per group: the levels of the filter climbed from the group before, or
+  // MaximumLevelSteps + 1 where it takes its own exponential (LevelSteps()).
+  const std::vector<int> steps = LevelSteps(detail);
+  os << "#define TYNDALL_DETAIL_MAX_LEVEL_STEPS " << MaximumLevelSteps << "\n";
   os << "const int detailLevelSteps[TYNDALL_DETAIL_GROUPS] = int[TYNDALL_DETAIL_GROUPS](";
   for (int g = 0; g < groups; ++g)
   {
-    const int level = waves[4 * static_cast<size_t>(g)].FilterLevel;
-    const int before = g > 0 ? waves[4 * static_cast<size_t>(g) - 4].FilterLevel : -1;
-    int steps = level - before;
-    if (g == 0 || before < 0 || level < 0 || steps > MaximumLevelSteps)
-    {
-      steps = MaximumLevelSteps + 1;
-    }
-    os << (g > 0 ? ", " : "") << steps;
+    os << (g > 0 ? ", " : "") << steps[static_cast<size_t>(g)];
   }
   os << ");\n";
   os << "const float detailDecay[TYNDALL_DETAIL_GROUPS] = float[TYNDALL_DETAIL_GROUPS](";
@@ -166,6 +159,32 @@ std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailM
   }
   os << ");\n";
   return os.str();
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> vtkTransmittanceDetailAdapter::LevelSteps(const vtkTyndallDetailMedium& detail)
+{
+  const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
+  std::vector<int> steps;
+  int chained = 0; // levels climbed since the last exponential
+  for (size_t i = 0; i < waves.size(); i += 4)
+  {
+    const int level = waves[i].FilterLevel;
+    const int before = i > 0 ? waves[i - 4].FilterLevel : -1;
+    const int climb = level - before;
+    if (i == 0 || before < 0 || level < 0 || climb > MaximumLevelSteps ||
+      chained + climb > MaximumChainedLevels)
+    {
+      steps.push_back(MaximumLevelSteps + 1);
+      chained = 0;
+    }
+    else
+    {
+      steps.push_back(climb);
+      chained += climb;
+    }
+  }
+  return steps;
 }
 
 //------------------------------------------------------------------------------

@@ -30,6 +30,7 @@
 #include "vtkTransmittanceMediumAdapter.h"
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkTyndallDetailMedium;
 
@@ -73,6 +74,24 @@ public:
   static constexpr int MaximumLevelSteps = 5;
   static_assert(MaximumLevelSteps == 5,
     "TYNDALL_DETAIL_FILTERED_GROUP in vtkTransmittanceDetailFS.glsl climbs five levels");
+
+  /**
+   * The most levels climbed by powers of 1.5 after an exponential before
+   * the next group takes its own: each level multiplies the float's
+   * relative error by 1.5, and a factor that rounds to 1 stays 1 (12
+   * levels: 1.5^12 = 130, the factor within 1e-5 of the CPU's).
+   */
+  static constexpr int MaximumChainedLevels = 12;
+
+  /**
+   * Per group of four waves (vtkTyndallDetailMedium::Wave::FilterLevel):
+   * the levels its footprint factor climbs from the group before's (0: the
+   * same level; each a power of 1.5), or MaximumLevelSteps + 1 where the
+   * group takes its own exponential (the first group, a group at level -1,
+   * a gap wider than MaximumLevelSteps, or more than MaximumChainedLevels
+   * since the last exponential). The shader's detailLevelSteps.
+   */
+  static std::vector<int> LevelSteps(const vtkTyndallDetailMedium& detail);
 
 private:
   // The adapter of the grid under the detail.

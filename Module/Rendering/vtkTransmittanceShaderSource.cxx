@@ -2,7 +2,6 @@
 
 #include "vtkMath.h"
 #include "vtkShaderProgram.h"
-#include "vtkTransmittanceDetailAdapter.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallClipRegion.h"
 #include "vtkTyndallDetailMedium.h"
@@ -74,7 +73,6 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("DETAIL_SOLVE_ITERATIONS", DetailSolveIterations);
   define("DETAIL_FILTER", variant.DetailGroups > 0 && variant.DetailFilter ? 1 : 0);
   define("DETAIL_CUTOFF", vtkTyndallDetailMedium::FilterCutoff);
-  define("DETAIL_MAX_LEVEL_STEPS", vtkTransmittanceDetailAdapter::MaximumLevelSteps);
   define("DETAIL_UNIFORM_ALBEDO", variant.DetailGroups > 0 && variant.DetailUniformAlbedo ? 1 : 0);
   const int cameraGroups = variant.DetailCameraGroups >= 0
     ? std::min(variant.DetailCameraGroups, variant.DetailGroups)

@@ -403,6 +403,30 @@ bool SurfaceView(const vtkTyndallGridMedium& grid, const vtkTyndallDetailMedium&
   return false;
 }
 
+// "W" (height 0: square) or "WxH", each a whole number of 16 or more.
+bool ParseSize(const char* text, int& width, int& height)
+{
+  char* end = nullptr;
+  const long w = std::strtol(text, &end, 10);
+  long h = 0;
+  if (*end == 'x')
+  {
+    const char* rest = end + 1;
+    h = std::strtol(rest, &end, 10);
+    if (end == rest || h < 16 || h > 16384)
+    {
+      return false;
+    }
+  }
+  if (*end != '\0' || w < 16 || w > 16384)
+  {
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  return true;
+}
+
 bool Parse(int argc, char* argv[], Options& options)
 {
   for (int i = 1; i < argc; ++i)
@@ -412,6 +436,7 @@ bool Parse(int argc, char* argv[], Options& options)
     {
       options.Voxels = 96;
       options.Size = 64;
+      options.Height = 0;
     }
     else if (a == "--density" && i + 1 < argc)
     {
@@ -443,11 +468,12 @@ bool Parse(int argc, char* argv[], Options& options)
     }
     else if (a == "--size" && i + 1 < argc)
     {
-      // W or WxH
-      const std::string size = argv[++i];
-      const size_t x = size.find('x');
-      options.Size = std::max(16, std::atoi(size.c_str()));
-      options.Height = x == std::string::npos ? 0 : std::max(16, std::atoi(size.c_str() + x + 1));
+      // W or WxH, each 16 or more
+      if (!ParseSize(argv[++i], options.Size, options.Height))
+      {
+        std::printf("BenchDetail: --size wants W or WxH (16 or more each), not %s\n", argv[i]);
+        return false;
+      }
     }
     else if (a == "--frames" && i + 1 < argc)
     {

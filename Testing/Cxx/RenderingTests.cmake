@@ -1,7 +1,8 @@
 # Tests of Tyndall::Rendering (included from CMakeLists.txt).
-# The light frusta (CPU).
+# The light frusta, the detail filter's constants (CPU).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
+  TestTransmittanceDetailFilterChain.cxx
   TestTransmittanceLightFrustum.cxx)
 # vtkTransmittanceVolumeMapper (needs a display).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests

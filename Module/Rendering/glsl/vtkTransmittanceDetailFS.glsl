@@ -27,8 +27,9 @@ uniform vec3 detailAlbedo; // the colour table's one colour
 // an odd polynomial of degree 7 fitted to sin there (minimax: within 6e-7;
 // beyond the reduction's rounding, 1e-5 at |y| = 100 cycles, the float
 // phase's own uncertainty there). Cheaper than llvmpipe's built-in cos, and
-// than the Taylor series of cos to x^16 on [-pi, pi] it replaced (the
-// default scene's frame 8% and N% faster). The waves' constants are in
+// than the Taylor series of cos to x^16 on [-pi, pi] it replaced: 13
+// operations a wave instead of 18, the unfiltered default scene's frame
+// 0.93 s instead of 1.17 (llvmpipe, 512^2). The waves' constants are in
 // radians; times 1 / (2 pi) they fold into literals.
 #define TYNDALL_CYCLES 0.15915494309189535
 vec4 tyndallCosCycles(vec4 y)
