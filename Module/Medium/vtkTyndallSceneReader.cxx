@@ -11,6 +11,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkRenderer.h"
 #include "vtkTyndallParticleMedium.h"
+#include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
 
@@ -133,6 +134,7 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   {
     return false;
   }
+  this->WarnNotDrawn(renderer, volume, reporter);
   this->UpdateLights(renderer, reporter);
   this->UpdateGuests(renderer, volume, reporter);
   this->UpdateCameraGroup(renderer, volume, reporter);
@@ -228,6 +230,19 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
     vtkWarningWithObjectMacro(reporter, << warning.str());
   }
   this->LastLightWarning = warning.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::WarnNotDrawn(
+  vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+{
+  const std::string warning =
+    vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(renderer, volume));
+  if (!warning.empty() && warning != this->LastNotDrawnWarning)
+  {
+    vtkWarningWithObjectMacro(reporter, << warning);
+  }
+  this->LastNotDrawnWarning = warning;
 }
 
 //------------------------------------------------------------------------------

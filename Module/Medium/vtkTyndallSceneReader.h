@@ -52,6 +52,11 @@
  * volume's own first, then the guests), the GPU mapper the grids beneath
  * them (GetMedium(), GetDetail(), GetGuests()) for its textures.
  *
+ * The settings of the volume and the renderer that VTK's volume mappers
+ * draw and Tyndall does not yet (vtkTyndallVolumeSettings: a blend mode
+ * other than composite, a plain property's gradient shading, ...) are named
+ * in a warning.
+ *
  * A Tyndall volume is one whose mapper is a vtkParticipatingMediumMapper
  * (the GL-free base of Tyndall's mappers).
  *
@@ -172,6 +177,10 @@ private:
   std::vector<const vtkTyndallMedium*> Media;
   std::vector<vtkTyndallLight> Lights;
   std::string LastLightWarning;
+  /// Warns once per change of the settings VTK draws and Tyndall does not
+  /// (vtkTyndallVolumeSettings).
+  void WarnNotDrawn(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+  std::string LastNotDrawnWarning;
 };
 
 #endif

@@ -5,7 +5,8 @@ vtk_add_test_cxx(TyndallMediumCxxTests tests
   TestTransferFunctionFileReader.cxx
   TestTransferFunctionPresets.cxx
   TestTyndallDetailMedium.cxx
-  TestTyndallFootprintFilter.cxx)
+  TestTyndallFootprintFilter.cxx
+  TestTyndallVolumeSettings.cxx)
 vtk_test_cxx_executable(TyndallMediumCxxTests tests
   RENDERING_FACTORY
   DISABLE_FLOATING_POINT_EXCEPTIONS)

@@ -42,6 +42,8 @@ opacity.AddPoint(8, 0.5)
 albedo = vtkColorTransferFunction()
 albedo.AddRGBPoint(0, 0.9, 0.9, 0.9)
 prop = vtkVolumeProperty()
+# Tyndall interpolates trilinearly; VTK's default (nearest) would be named in a warning.
+prop.SetInterpolationTypeToLinear()
 prop.SetScalarOpacity(opacity)
 prop.SetColor(albedo)
 prop.SetScalarOpacityUnitDistance(0.05)

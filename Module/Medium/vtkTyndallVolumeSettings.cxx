@@ -1,0 +1,134 @@
+#include "vtkTyndallVolumeSettings.h"
+
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+namespace
+{
+// VTK's name of a blend mode other than composite.
+const char* BlendModeName(int mode)
+{
+  switch (mode)
+  {
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      return "maximum intensity";
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      return "minimum intensity";
+    case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
+      return "average intensity";
+    case vtkVolumeMapper::ADDITIVE_BLEND:
+      return "additive";
+    case vtkVolumeMapper::ISOSURFACE_BLEND:
+      return "isosurface";
+    case vtkVolumeMapper::SLICE_BLEND:
+      return "slice";
+    default:
+      return "unknown";
+  }
+}
+
+// Whether a visible prop of `renderer` other than a volume has translucent
+// polygonal geometry (what VTK's depth peeling peels).
+bool HasTranslucentGeometry(vtkRenderer* renderer)
+{
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
+      prop->HasTranslucentPolygonalGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether the first component's gradient opacity changes VTK's picture:
+// enabled, and a function below 1 somewhere.
+bool HasGradientOpacity(vtkVolumeProperty* property)
+{
+  if (property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
+    property->GetDisableGradientOpacity(0) || !property->HasGradientOpacity(0))
+  {
+    return false;
+  }
+  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(0);
+  const int size = function ? function->GetSize() : 0;
+  for (int i = 0; i < size; ++i)
+  {
+    double node[4];
+    function->GetNodeValue(i, node);
+    if (!(node[1] >= 1.0))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
+  vtkRenderer* renderer, vtkVolume* volume)
+{
+  std::vector<std::string> notDrawn;
+  vtkVolumeProperty* property = volume ? volume->GetProperty() : nullptr;
+  if (!property)
+  {
+    return notDrawn;
+  }
+  auto* mapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
+  if (mapper && mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    notDrawn.push_back(std::string("the ") + BlendModeName(mapper->GetBlendMode()) +
+      " blend mode (drawn as composite)");
+  }
+  if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes() &&
+    HasTranslucentGeometry(renderer))
+  {
+    notDrawn.push_back("depth peeling for volumes with translucent geometry (not supported: the "
+                       "volume and the geometry can be drawn wrong)");
+  }
+  if (vtkParticipatingMediumProperty::SafeDownCast(property))
+  {
+    return notDrawn; // Tyndall's meaning: VTK's classification settings are documented as ignored
+  }
+  if (property->GetShade(0))
+  {
+    notDrawn.push_back("gradient shading (ShadeOn: lit as a scattering medium instead)");
+  }
+  if (HasGradientOpacity(property))
+  {
+    notDrawn.push_back("gradient opacity (ignored)");
+  }
+  if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
+  {
+    notDrawn.push_back("2-D transfer functions (TF_2D: the 1-D functions are used)");
+  }
+  if (property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION)
+  {
+    notDrawn.push_back("nearest interpolation (vtkVolumeProperty's default: drawn trilinear; "
+                       "SetInterpolationTypeToLinear() to match)");
+  }
+  return notDrawn;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTyndallVolumeSettings::Describe(const std::vector<std::string>& notDrawn)
+{
+  std::string text;
+  for (size_t i = 0; i < notDrawn.size(); ++i)
+  {
+    text += (i == 0 ? "" : "; ") + notDrawn[i];
+  }
+  return text.empty()
+    ? text
+    : "VTK's volume mappers draw these settings and Tyndall does not yet: " + text + ".";
+}

@@ -1,0 +1,53 @@
+/**
+ * @class   vtkTyndallVolumeSettings
+ * @brief   the settings of a volume that VTK's volume mappers draw and Tyndall does not yet
+ *
+ * An application that swaps vtkGPUVolumeRayCastMapper for a Tyndall mapper
+ * must not get a different picture without a word. NotDrawn() names each
+ * setting of the volume's mapper, its property and the renderer that VTK
+ * draws and Tyndall does not yet (Documentation/mapper.md, "Compatibility
+ * with VTK's mapper"), with what Tyndall draws instead:
+ * - a blend mode other than composite (drawn as composite);
+ * - the renderer's depth peeling for volumes, with translucent geometry in
+ *   the renderer (not supported);
+ * and, for a plain vtkVolumeProperty (VTK's meaning; a
+ * vtkParticipatingMediumProperty documents these as ignored, Tyndall's
+ * meaning):
+ * - gradient shading (ShadeOn: the volume is lit as a scattering medium
+ *   instead);
+ * - gradient opacity (enabled, with a function that is not 1 everywhere);
+ * - 2-D transfer functions (TF_2D: the 1-D functions are used);
+ * - nearest interpolation (vtkVolumeProperty's default; drawn trilinear).
+ * The first component's settings are read (more components are refused
+ * elsewhere). vtkTyndallSceneReader warns with the list once when it
+ * changes, for both renderers.
+ *
+ * Internal to Tyndall::Medium; not wrapped.
+ */
+
+#ifndef vtkTyndallVolumeSettings_h
+#define vtkTyndallVolumeSettings_h
+
+#include "TyndallMediumModule.h" // For export macro
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkRenderer;
+class vtkVolume;
+
+class TYNDALLMEDIUM_EXPORT vtkTyndallVolumeSettings
+{
+public:
+  /**
+   * The settings of `volume` (its mapper and property) and `renderer` (may
+   * be null) that Tyndall does not draw, one text each; empty when there
+   * are none or the volume has no property.
+   */
+  static std::vector<std::string> NotDrawn(vtkRenderer* renderer, vtkVolume* volume);
+
+  /// The texts of NotDrawn() as one sentence (empty for none).
+  static std::string Describe(const std::vector<std::string>& notDrawn);
+};
+
+#endif

@@ -1,0 +1,205 @@
+// The settings VTK's volume mappers draw and Tyndall does not yet
+// (vtkTyndallVolumeSettings, issue 36): an application that swaps
+// vtkGPUVolumeRayCastMapper for a Tyndall mapper gets a warning naming each,
+// never a silently different picture. Read through vtkTyndallSceneReader,
+// which both renderers use (no OpenGL):
+//
+// 1. a plain vtkVolumeProperty's default nearest interpolation is named;
+//    composite, shade off, no gradient opacity, TF_1D, linear give no
+//    warning, nor does a vtkParticipatingMediumProperty with Shade on and
+//    nearest interpolation (Tyndall's meaning);
+// 2. each setting alone: one warning that names it, not repeated while the
+//    setting stays, none once it is back to its default;
+// 3. a gradient opacity function of 1 everywhere, or disabled: no warning;
+// 4. two settings at once: one warning naming both; a change of the set
+//    warns again;
+// 5. depth peeling for volumes (ParaView's default) only with translucent
+//    geometry in the renderer.
+#include "vtkActor.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSmartVolumeMapper.h"
+#include "vtkTyndallSceneReader.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include "TyndallTestCheck.h"
+
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using tyndall_test::Check;
+
+// Collects the warnings of the object it observes.
+class WarningLog : public vtkCommand
+{
+public:
+  static WarningLog* New() { return new WarningLog; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Messages.emplace_back(data ? static_cast<const char*>(data) : "");
+  }
+  std::vector<std::string> Messages;
+};
+
+struct Scene
+{
+  vtkNew<vtkImageData> Image;
+  vtkNew<vtkSmartVolumeMapper> Mapper;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Reporter; // any vtkObject: where the warnings go
+  vtkNew<WarningLog> Log;
+  vtkTyndallSceneReader Reader;
+
+  explicit Scene(vtkVolumeProperty* property)
+  {
+    this->Image->SetDimensions(6, 6, 6);
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfTuples(this->Image->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    {
+      values->SetValue(i, static_cast<float>(i % 7));
+    }
+    this->Image->GetPointData()->SetScalars(values);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(6.0, 0.5);
+    property->SetScalarOpacity(opacity);
+    this->Mapper->SetInputData(this->Image);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Reporter->AddObserver(vtkCommand::WarningEvent, this->Log);
+  }
+
+  // Reads the scene; the warnings it gave that mention `what` (all: "").
+  int Read(const std::string& what = "")
+  {
+    this->Log->Messages.clear();
+    const bool read = this->Reader.Update(this->Renderer, this->Volume, this->Reporter);
+    Check(read, "the scene is read");
+    int count = 0;
+    for (const std::string& m : this->Log->Messages)
+    {
+      count += m.find(what) != std::string::npos ? 1 : 0;
+    }
+    return count;
+  }
+};
+
+// One setting: warned once while it holds, named, and not after `reset`.
+void CheckSetting(Scene& scene, const std::string& name, const std::function<void()>& set,
+  const std::function<void()>& reset)
+{
+  set();
+  const int first = scene.Read(name);
+  const std::string said = scene.Log->Messages.empty() ? "" : scene.Log->Messages.front();
+  const int again = scene.Read();
+  reset();
+  const int after = scene.Read();
+  std::cout << name << ": " << said << "\n";
+  Check(first == 1 && said.find("Tyndall does not yet") != std::string::npos,
+    name + ": one warning names it");
+  Check(again == 0, name + ": not repeated while it holds");
+  Check(after == 0, name + ": none once it is back to its default");
+}
+}
+
+int TestTyndallVolumeSettings(int, char*[])
+{
+  vtkNew<vtkVolumeProperty> plain;
+  Scene scene(plain);
+  // vtkVolumeProperty's default interpolation is nearest, which Tyndall
+  // does not draw.
+  Check(scene.Read("nearest interpolation") == 1, "a plain property's default nearest: named");
+  plain->SetInterpolationTypeToLinear();
+  Check(scene.Read() == 0, "composite, shade off, no gradient opacity, TF_1D, linear: no warning");
+
+  vtkSmartVolumeMapper* mapper = scene.Mapper;
+  const std::pair<int, const char*> modes[] = { { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND,
+                                                  "maximum intensity blend mode" },
+    { vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, "minimum intensity blend mode" },
+    { vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, "average intensity blend mode" },
+    { vtkVolumeMapper::ADDITIVE_BLEND, "additive blend mode" },
+    { vtkVolumeMapper::ISOSURFACE_BLEND, "isosurface blend mode" } };
+  for (const auto& mode : modes)
+  {
+    CheckSetting(
+      scene, mode.second, [&] { mapper->SetBlendMode(mode.first); },
+      [&] { mapper->SetBlendModeToComposite(); });
+  }
+  CheckSetting(
+    scene, "gradient shading", [&] { plain->ShadeOn(); }, [&] { plain->ShadeOff(); });
+  vtkNew<vtkPiecewiseFunction> gradient;
+  gradient->AddPoint(0.0, 0.0);
+  gradient->AddPoint(10.0, 1.0);
+  CheckSetting(
+    scene, "gradient opacity", [&] { plain->SetGradientOpacity(gradient); },
+    [&] { plain->DisableGradientOpacityOn(); });
+  plain->DisableGradientOpacityOff();
+  Check(scene.Read() == 1, "gradient opacity enabled again: warned again");
+  gradient->RemoveAllPoints();
+  gradient->AddPoint(0.0, 1.0);
+  gradient->AddPoint(10.0, 1.0);
+  Check(scene.Read() == 0, "a gradient opacity of 1 everywhere changes nothing: no warning");
+  CheckSetting(
+    scene, "2-D transfer functions",
+    [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); },
+    [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D); });
+  // Depth peeling for volumes (ParaView's default): said only with
+  // translucent geometry in the renderer.
+  scene.Renderer->UseDepthPeelingOn();
+  scene.Renderer->UseDepthPeelingForVolumesOn();
+  Check(scene.Read() == 0, "depth peeling for volumes without translucent geometry: no warning");
+  vtkNew<vtkPolyData> surface; // what it holds does not matter: the actor's opacity does
+  vtkNew<vtkPolyDataMapper> surfaceMapper;
+  surfaceMapper->SetInputData(surface);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(surfaceMapper);
+  scene.Renderer->AddActor(actor);
+  Check(scene.Read() == 0, "depth peeling for volumes with opaque geometry: no warning");
+  CheckSetting(
+    scene, "depth peeling for volumes with translucent geometry",
+    [&] { actor->GetProperty()->SetOpacity(0.5); },
+    [&] { scene.Renderer->UseDepthPeelingForVolumesOff(); });
+
+  // Two at once: one warning naming both; a change of the set warns again.
+  mapper->SetBlendModeToMaximumIntensity();
+  plain->ShadeOn();
+  Check(scene.Read("maximum intensity blend mode") == 1 &&
+      scene.Log->Messages.front().find("gradient shading") != std::string::npos &&
+      scene.Log->Messages.size() == 1,
+    "two settings: one warning naming both");
+  plain->ShadeOff();
+  Check(scene.Read("maximum intensity blend mode") == 1 &&
+      scene.Log->Messages.front().find("gradient shading") == std::string::npos,
+    "one of them back to its default: warned again, naming the other");
+  mapper->SetBlendModeToComposite();
+
+  // Tyndall's own property: its Shade is documented as ignored.
+  vtkNew<vtkParticipatingMediumProperty> medium;
+  medium->ShadeOn();
+  medium->SetInterpolationTypeToNearest();
+  Scene tyndall(medium);
+  Check(tyndall.Read() == 0,
+    "a vtkParticipatingMediumProperty with Shade on and nearest interpolation: no warning");
+  tyndall.Mapper->SetBlendModeToMinimumIntensity();
+  Check(tyndall.Read("minimum intensity blend mode") == 1,
+    "a vtkParticipatingMediumProperty: a blend mode is named");
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
