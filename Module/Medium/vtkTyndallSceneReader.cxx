@@ -123,6 +123,13 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
     vtkErrorWithObjectMacro(reporter, << (renderer ? "The volume" : "The renderer") << " is null.");
     return false;
   }
+  if (volume->IsA("vtkMultiVolume"))
+  {
+    vtkErrorWithObjectMacro(reporter,
+      << "A vtkMultiVolume is not drawn by Tyndall: give each volume its own vtkVolume and "
+         "Tyndall mapper (their lights share one set of maps).");
+    return false;
+  }
   MakeMedium(volume, this->Medium);
   if (!this->Medium->Update(volume, reporter))
   {
@@ -238,11 +245,12 @@ void vtkTyndallSceneReader::WarnNotDrawn(
 {
   const std::string warning =
     vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(renderer, volume));
-  if (!warning.empty() && warning != this->LastNotDrawnWarning)
+  std::string& last = this->LastNotDrawnWarning[volume];
+  if (!warning.empty() && warning != last)
   {
     vtkWarningWithObjectMacro(reporter, << warning);
   }
-  this->LastNotDrawnWarning = warning;
+  last = warning;
 }
 
 //------------------------------------------------------------------------------

@@ -72,6 +72,7 @@
 #include "vtkTyndallGridMedium.h"   // For the medium
 #include "vtkTyndallLight.h"        // For the lights
 
+#include <map>    // For std::map
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -178,9 +179,9 @@ private:
   std::vector<vtkTyndallLight> Lights;
   std::string LastLightWarning;
   /// Warns once per change of the settings VTK draws and Tyndall does not
-  /// (vtkTyndallVolumeSettings).
+  /// (vtkTyndallVolumeSettings), per volume (a mapper may draw several).
   void WarnNotDrawn(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
-  std::string LastNotDrawnWarning;
+  std::map<vtkVolume*, std::string> LastNotDrawnWarning; // keys only compared
 };
 
 #endif

@@ -14,11 +14,14 @@
 // 4. two settings at once: one warning naming both; a change of the set
 //    warns again;
 // 5. depth peeling for volumes (ParaView's default) only with translucent
-//    geometry in the renderer.
+//    geometry in the renderer;
+// 6. one mapper drawing two volumes of different settings: each said once,
+//    not every frame; a vtkMultiVolume: an error.
 #include "vtkActor.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkMultiVolume.h"
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
@@ -28,6 +31,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartVolumeMapper.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -136,7 +140,8 @@ int TestTyndallVolumeSettings(int, char*[])
     { vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, "minimum intensity blend mode" },
     { vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, "average intensity blend mode" },
     { vtkVolumeMapper::ADDITIVE_BLEND, "additive blend mode" },
-    { vtkVolumeMapper::ISOSURFACE_BLEND, "isosurface blend mode" } };
+    { vtkVolumeMapper::ISOSURFACE_BLEND, "isosurface blend mode" },
+    { vtkVolumeMapper::SLICE_BLEND, "slice blend mode" } };
   for (const auto& mode : modes)
   {
     CheckSetting(
@@ -153,9 +158,12 @@ int TestTyndallVolumeSettings(int, char*[])
     [&] { plain->DisableGradientOpacityOn(); });
   plain->DisableGradientOpacityOff();
   Check(scene.Read() == 1, "gradient opacity enabled again: warned again");
+  plain->DisableGradientOpacityOn();
+  Check(scene.Read() == 0, "gradient opacity disabled: no warning");
   gradient->RemoveAllPoints();
   gradient->AddPoint(0.0, 1.0);
   gradient->AddPoint(10.0, 1.0);
+  plain->DisableGradientOpacityOff();
   Check(scene.Read() == 0, "a gradient opacity of 1 everywhere changes nothing: no warning");
   CheckSetting(
     scene, "2-D transfer functions",
@@ -190,6 +198,36 @@ int TestTyndallVolumeSettings(int, char*[])
       scene.Log->Messages.front().find("gradient shading") == std::string::npos,
     "one of them back to its default: warned again, naming the other");
   mapper->SetBlendModeToComposite();
+
+  // One mapper drawing two volumes whose settings differ: each is said
+  // once, not every frame.
+  vtkNew<vtkVolume> other;
+  other->SetMapper(mapper);
+  vtkNew<vtkVolumeProperty> shaded;
+  shaded->DeepCopy(plain);
+  shaded->ShadeOn();
+  other->SetProperty(shaded);
+  scene.Renderer->AddVolume(other);
+  mapper->SetBlendModeToComposite();
+  int said = 0;
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    said += scene.Read();
+    scene.Log->Messages.clear();
+    Check(scene.Reader.Update(scene.Renderer, other, scene.Reporter), "the other volume is read");
+    said += static_cast<int>(scene.Log->Messages.size());
+  }
+  Check(said == 1, "two volumes of one mapper: the shaded one said once over three frames");
+  scene.Renderer->RemoveVolume(other);
+
+  // A vtkMultiVolume: an error, nothing read.
+  vtkNew<vtkMultiVolume> multi;
+  multi->SetMapper(mapper);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  scene.Reporter->AddObserver(vtkCommand::ErrorEvent, errors);
+  Check(!scene.Reader.Update(scene.Renderer, multi, scene.Reporter) && errors->GetError() &&
+      errors->GetErrorMessage().find("vtkMultiVolume") != std::string::npos,
+    "a vtkMultiVolume: an error that names it");
 
   // Tyndall's own property: its Shade is documented as ignored.
   vtkNew<vtkParticipatingMediumProperty> medium;
