@@ -114,7 +114,6 @@ std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailM
   // its level (FilterK2).
   const std::vector<vtkTyndallDetailMedium::Wave>& waves = detail.GetWaves();
   const int groups = static_cast<int>((waves.size() + 3) / 4);
-  const double width = detail.GetFilterWidth();
   const char* names[5] = { "detailKx", "detailKy", "detailKz", "detailPhase", "detailAmplitude" };
   std::ostringstream os;
   os << std::scientific << std::setprecision(9);
@@ -154,11 +153,18 @@ std::string vtkTransmittanceDetailAdapter::WaveConstants(const vtkTyndallDetailM
   os << "const float detailDecay[TYNDALL_DETAIL_GROUPS] = float[TYNDALL_DETAIL_GROUPS](";
   for (int g = 0; g < groups; ++g)
   {
-    const double k2 = waves[4 * static_cast<size_t>(g)].FilterK2;
-    os << (g > 0 ? ", " : "") << static_cast<float>(-0.5 * k2 * width * width / std::log(2.0));
+    os << (g > 0 ? ", " : "") << FilterDecay(detail, g);
   }
   os << ");\n";
   return os.str();
+}
+
+//------------------------------------------------------------------------------
+float vtkTransmittanceDetailAdapter::FilterDecay(const vtkTyndallDetailMedium& detail, int group)
+{
+  const double k2 = detail.GetWaves().at(4 * static_cast<size_t>(group)).FilterK2;
+  const double width = detail.GetFilterWidth();
+  return static_cast<float>(-0.5 * k2 * width * width / std::log(2.0));
 }
 
 //------------------------------------------------------------------------------

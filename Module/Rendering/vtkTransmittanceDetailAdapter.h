@@ -93,6 +93,13 @@ public:
    */
   static std::vector<int> LevelSteps(const vtkTyndallDetailMedium& detail);
 
+  /**
+   * The shader's detailDecay of group `group`: exp2(decay pixel^2) =
+   * exp(-FilterK2 (width pixel)^2 / 2), FilterK2 the level of the group's
+   * waves and width the filter's (vtkTyndallDetailMedium).
+   */
+  static float FilterDecay(const vtkTyndallDetailMedium& detail, int group);
+
 private:
   // The adapter of the grid under the detail.
   const vtkTransmittanceMediumAdapter& GridAdapter(const vtkTyndallDetailMedium& detail) const;

@@ -9,26 +9,17 @@
 //
 // 1. the default noise (6 octaves x 24 directions, 144 waves): every factor
 //    within 1e-4 of the CPU's, relative, and 0 exactly where the CPU's is;
-// 2. ten octaves x 24 directions (240 waves, 32 levels): the same,
+// 2. ten octaves x 24 directions (240 waves, 33 levels): the same,
 //    which needs the chain restarted (MaximumChainedLevels: a factor that
 //    rounds to 1 in float stays 1 up the chain, and the error grows 1.5x a
 //    level);
 // 3. the steps: the first group takes an exponential, no climb is larger
 //    than MaximumLevelSteps, no chain longer than MaximumChainedLevels.
-#include "vtkCosineNoise.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
-#include "vtkNew.h"
-#include "vtkParticipatingMediumProperty.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
-#include "vtkSmartVolumeMapper.h"
 #include "vtkTransmittanceDetailAdapter.h"
 #include "vtkTyndallDetailMedium.h"
-#include "vtkTyndallGridMedium.h"
-#include "vtkVolume.h"
 
 #include "TyndallTestCheck.h"
+#include "TyndallTestDetailScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,8 +47,7 @@ double Compare(const vtkTyndallDetailMedium& detail, double pixel, bool& zeros)
   for (size_t g = 0; g < steps.size(); ++g)
   {
     const size_t i = 4 * g;
-    const float decay =
-      static_cast<float>(-0.5 * waves[i].FilterK2 * width * width / std::log(2.0));
+    const float decay = vtkTransmittanceDetailAdapter::FilterDecay(detail, static_cast<int>(g));
     if (steps[g] > vtkTransmittanceDetailAdapter::MaximumLevelSteps)
     {
       e = std::exp2(decay * pixel2);
@@ -86,46 +76,9 @@ double Compare(const vtkTyndallDetailMedium& detail, double pixel, bool& zeros)
   return worst;
 }
 
-// A 16^3 grid over [-1, 1]^3 with `octaves` x 24 directions of detail.
-struct Scene
-{
-  vtkNew<vtkImageData> Image;
-  vtkNew<vtkSmartVolumeMapper> Mapper;
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkParticipatingMediumProperty> Property;
-  vtkNew<vtkCosineNoise> Noise;
-  vtkTyndallGridMedium Grid;
-  vtkTyndallDetailMedium Detail;
-
-  explicit Scene(int octaves)
-  {
-    this->Image->SetDimensions(16, 16, 16);
-    this->Image->SetSpacing(2.0 / 15, 2.0 / 15, 2.0 / 15);
-    this->Image->SetOrigin(-1.0, -1.0, -1.0);
-    vtkNew<vtkFloatArray> values;
-    values->SetNumberOfTuples(this->Image->GetNumberOfPoints());
-    values->Fill(1.0);
-    this->Image->GetPointData()->SetScalars(values);
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(0.0, 0.0);
-    opacity->AddPoint(1.0, 0.5);
-    this->Property->SetScalarOpacity(opacity);
-    this->Noise->SetNumberOfOctaves(octaves);
-    this->Noise->SetNumberOfDirections(24);
-    this->Noise->SetFrequency(4.0);
-    this->Property->SetDetailNoise(this->Noise);
-    this->Mapper->SetInputData(this->Image);
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    Check(this->Grid.Update(this->Volume, this->Volume) &&
-        this->Detail.Update(this->Grid, this->Noise, this->Volume, 0.5),
-      "the detail is read");
-  }
-};
-
 void CheckNoise(int octaves)
 {
-  Scene scene(octaves);
+  tyndall_test::DetailScene scene(24, octaves, 0.5);
   const vtkTyndallDetailMedium& detail = scene.Detail;
   const std::vector<int> steps = vtkTransmittanceDetailAdapter::LevelSteps(detail);
   bool valid = !steps.empty() && steps[0] > vtkTransmittanceDetailAdapter::MaximumLevelSteps;
