@@ -145,6 +145,11 @@ const Spec kOptions[] = {
     "single-scattering", "Scattering", Both,
     "single-scattering (colour = albedo) or emission-absorption (colour = emitted colour, as "
     "vtkGPUVolumeRayCastMapper)" },
+  { "blend-mode", "", Kind::Choice, 0, 0, false, "composite|maximum|minimum|average|additive", "B",
+    "composite", "Scattering", Both,
+    "composite draws the medium; maximum, minimum and average intensity and additive project "
+    "the volume's scalars as vtkGPUVolumeRayCastMapper does (unlit; the colour and opacity "
+    "functions of the preset)" },
   { "coefficients", "", Kind::Integer, 1, 16, false, "", "N", "8", "Scattering", Both,
     "series coefficients per map texel", KeyMode::Add, "+=", "-_", 1.0 },
   { "map-size", "", Kind::Integer, 16, 4096, false, "", "N", "256", "Scattering", Both,

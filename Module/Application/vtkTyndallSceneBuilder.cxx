@@ -638,6 +638,8 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
 {
   vtkTyndallOptions* o = this->Options;
   mapper->SetTransmittanceMethod(o->GetChoice("method"));
+  static_assert(vtkVolumeMapper::ADDITIVE_BLEND == 4, "--blend-mode's choices are VTK's order");
+  mapper->SetBlendMode(o->GetChoice("blend-mode"));
   mapper->SetNumberOfCoefficients(static_cast<int>(o->GetNumber("coefficients")));
   mapper->SetTransmittanceMapSize(static_cast<int>(o->GetNumber("map-size")));
   mapper->SetLightSampleCount(static_cast<int>(o->GetNumber("light-samples")));

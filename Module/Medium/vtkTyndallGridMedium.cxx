@@ -20,6 +20,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -106,6 +107,7 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
   {
     this->ExtinctionTime.Modified(); // the maps see the clipped medium
   }
+  this->Projection.Read(vtkVolumeMapper::SafeDownCast(volume->GetMapper()), volume->GetProperty());
   return this->Valid;
 }
 
@@ -428,7 +430,7 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
   vtkColorTransferFunction* emission = medium ? medium->GetEmissionColor() : nullptr;
   const bool fromArray = !this->EmissionValues.empty();
-  if (!this->Parameters.Read(medium, emission || fromArray, reporter))
+  if (!this->Parameters.Read(property, emission || fromArray, reporter))
   {
     this->TableKey.clear();
     return false;

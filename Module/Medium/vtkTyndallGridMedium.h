@@ -29,7 +29,10 @@
  *   vtkParticipatingMediumProperty, or the defaults for a plain
  *   vtkVolumeProperty;
  * - the mapper's clipping planes and cropping (vtkTyndallClipRegion): the
- *   medium is empty outside them, for the camera and for the light.
+ *   medium is empty outside them, for the camera and for the light;
+ * - the mapper's blend mode (vtkTyndallProjection): a projection (maximum,
+ *   minimum, average intensity, additive) is drawn as VTK draws it, the
+ *   composite mode as a medium.
  *
  * "Field index" coordinates name the samples: index (i, j, k) is the
  * sample (point or cell centre) i, j, k from the first one; the medium
@@ -47,6 +50,7 @@
 #include "vtkTimeStamp.h"            // For vtkTimeStamp
 #include "vtkTyndallClipRegion.h"    // For the clip region
 #include "vtkTyndallMedium.h"        // For the interface
+#include "vtkTyndallProjection.h"    // For the projection
 #include "vtkTyndallTransferTable.h" // For the table
 #include "vtkType.h"                 // For vtkIdType
 
@@ -143,6 +147,9 @@ public:
   }
   /// What the mapper's clipping planes and cropping keep (whether or not they clip).
   const vtkTyndallClipRegion& GetClipRegion() const { return this->Clip; }
+
+  /// The mapper's projection blend mode (Enabled() for one; then not a medium).
+  const vtkTyndallProjection& GetProjection() const { return this->Projection; }
 
   ///@{
   /// vtkTyndallMedium: emission from an array, the majorant (the table's largest extinction), a
@@ -282,6 +289,7 @@ private:
   double WorldToIndex[16];
 
   vtkTyndallClipRegion Clip;
+  vtkTyndallProjection Projection;
   std::vector<float> EmissionValues;
   double EmissionRange[2] = { 0.0, 0.0 };
   std::vector<double> EmissionKey;

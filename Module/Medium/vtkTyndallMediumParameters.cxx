@@ -39,11 +39,18 @@ bool FiniteSettings(vtkParticipatingMediumProperty* p, vtkObject* reporter)
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallMediumParameters::Read(
-  vtkParticipatingMediumProperty* property, bool emits, vtkObject* reporter)
+bool vtkTyndallMediumParameters::Read(vtkVolumeProperty* property, bool emits, vtkObject* reporter)
 {
   vtkNew<vtkParticipatingMediumProperty> defaults;
-  vtkParticipatingMediumProperty* source = property ? property : defaults.Get();
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  vtkParticipatingMediumProperty* source = medium ? medium : defaults.Get();
+  if (!medium && property)
+  {
+    // VTK's meaning: shade off is VTK's unlit emission-absorption picture.
+    defaults->SetScatteringModel(property->GetShade(0)
+        ? vtkParticipatingMediumProperty::SINGLE_SCATTERING
+        : vtkParticipatingMediumProperty::EMISSION_ABSORPTION);
+  }
   if (!FiniteSettings(source, reporter))
   {
     return false;

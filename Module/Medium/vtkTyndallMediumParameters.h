@@ -3,10 +3,9 @@
  * @brief   a medium's lighting and extinction settings, read once from its property
  *
  * What every renderer needs of a volume's vtkParticipatingMediumProperty
- * beyond its transfer functions, in the convention they use, read once by
- * Read() (each medium holds one: vtkTyndallMedium::GetParameters()) and never
- * copied again: the GPU passes set their uniforms from it, the CPU
- * integrators read it in place.
+ * (or plain vtkVolumeProperty) beyond its transfer functions, in the convention they use, read once
+ * by Read() (each medium holds one: vtkTyndallMedium::GetParameters()) and never copied again: the
+ * GPU passes set their uniforms from it, the CPU integrators read it in place.
  *
  * - DensityScale holds the property's DensityScale times its largest
  *   ExtinctionColor component, and ExtinctionColor the components relative
@@ -25,7 +24,7 @@
 #include "TyndallMediumModule.h" // For export macro
 
 class vtkObject;
-class vtkParticipatingMediumProperty;
+class vtkVolumeProperty;
 
 class TYNDALLMEDIUM_EXPORT vtkTyndallMediumParameters
 {
@@ -45,13 +44,17 @@ public:
   bool HasEmission = false;
 
   /**
-   * Reads `property` (its defaults when null); `emits` says whether the
+   * Reads `property`: a vtkParticipatingMediumProperty's settings; for a
+   * plain vtkVolumeProperty (or null) vtkParticipatingMediumProperty's
+   * defaults, except that a plain property with Shade off (component 0) is
+   * emission-absorption, VTK's unlit picture (Documentation/rendering-model.md,
+   * "What is read from the scene"); `emits` says whether the
    * medium has an emission source (an emission colour function or an
    * emission array), which HasEmission needs. False, with an error through
    * `reporter` naming the setting, when a number is not finite (VTK's clamp
    * macros let NaN through): nothing of the medium can then be drawn.
    */
-  bool Read(vtkParticipatingMediumProperty* property, bool emits, vtkObject* reporter);
+  bool Read(vtkVolumeProperty* property, bool emits, vtkObject* reporter);
 
   bool GetSingleScattering() const { return this->ScatteringModel == 1; }
 

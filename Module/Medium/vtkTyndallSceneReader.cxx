@@ -55,7 +55,8 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
 {
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
-    !property->GetDetailNoise() && medium->GetNumberOfNaNScalars() == 0 && !medium->GetClip() &&
+    !medium->GetProjection().Enabled() && !property->GetDetailNoise() &&
+    medium->GetNumberOfNaNScalars() == 0 && !medium->GetClip() &&
     !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray();
 }
 
@@ -143,10 +144,12 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   }
   this->WarnNotDrawn(renderer, volume, reporter);
   this->UpdateLights(renderer, reporter);
-  this->UpdateGuests(renderer, volume, reporter);
+  // A projection (vtkTyndallProjection) is lit by nothing and lit through nothing.
+  const bool projection = this->Medium->GetProjection().Enabled();
+  this->UpdateGuests(renderer, volume, projection, reporter);
   this->UpdateCameraGroup(renderer, volume, reporter);
   const vtkTyndallMediumParameters& parameters = this->Medium->GetParameters();
-  if (!parameters.GetSingleScattering())
+  if (!parameters.GetSingleScattering() || projection)
   {
     this->Lights.clear();
   }
@@ -157,9 +160,11 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
       light.Irradiance[c] = parameters.LightScale * light.Color[c];
     }
   }
-  // The media: this volume's own (its detail when it has one) first.
-  this->Media.push_back(this->Detail.Enabled() ? static_cast<const vtkTyndallMedium*>(&this->Detail)
-                                               : this->Medium.get());
+  // The media: this volume's own (its detail when it has one, not in a
+  // projection) first.
+  this->Media.push_back(this->Detail.Enabled() && !projection
+      ? static_cast<const vtkTyndallMedium*>(&this->Detail)
+      : this->Medium.get());
   this->Media.insert(this->Media.end(), this->Guests.begin(), this->Guests.end());
   return true;
 }
@@ -285,10 +290,15 @@ bool vtkTyndallSceneReader::IsDrawnVolume(vtkVolume* entry, vtkVolume* volume)
 
 //------------------------------------------------------------------------------
 void vtkTyndallSceneReader::UpdateGuests(
-  vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+  vtkRenderer* renderer, vtkVolume* volume, bool projection, vtkObject* reporter)
 {
   this->Guests.clear();
   this->GuestVolumes.clear();
+  if (projection)
+  {
+    this->LastGuestWarning.clear();
+    return;
+  }
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
   std::ostringstream warning;
   int ignored = 0;
@@ -326,6 +336,10 @@ void vtkTyndallSceneReader::UpdateGuests(
     if (!g.Medium->Update(other, reporter))
     {
       reason = "cannot be read";
+    }
+    else if (g.Medium->GetProjection().Enabled())
+    {
+      continue; // a projection is not a medium: it casts no shadow (documented)
     }
     else if (g.Medium->GetNumberOfNaNScalars() > 0)
     {

@@ -21,6 +21,10 @@
  * - a directional or spot light whose position and focal point coincide has
  *   no direction: it is ignored with a warning;
  * - in the emission-absorption model no light is used (nothing is shaded);
+ * - a volume drawn in a projection blend mode (vtkTyndallProjection:
+ *   maximum, minimum, average intensity, additive) is not a medium: it uses
+ *   no light, has no guests and no procedural detail, and is no other
+ *   volume's guest nor in a camera group;
  *   in single scattering each light's irradiance is the medium's LightScale
  *   times the light's colour;
  * - the medium is read by vtkTyndallGridMedium's rules (a particle cloud's,
@@ -149,7 +153,7 @@ public:
 
 private:
   void UpdateLights(vtkRenderer* renderer, vtkObject* reporter);
-  void UpdateGuests(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+  void UpdateGuests(vtkRenderer* renderer, vtkVolume* volume, bool projection, vtkObject* reporter);
   void UpdateCameraGroup(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
   /// Warns when this volume (volumes[me]) overlaps one it cannot be drawn with.
   void WarnLayers(const std::vector<vtkVolume*>& volumes,

@@ -34,12 +34,14 @@ bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransfe
   this->Extinction.assign(Size, 0.0);
   this->Albedo.assign(3 * Size, 0.0);
   this->Emission.assign(3 * Size, 0.0);
+  this->Opacity.assign(Size, 0.0);
   for (int i = 0; i < Size; ++i)
   {
     const double s = std::min(this->Scale > 0.0 ? lo + i / this->Scale : lo, hi);
+    this->Opacity[i] = opacity->GetValue(s);
     this->Extinction[i] = linearExtinction
       ? std::max(s, 0.0)
-      : vtkTransmittanceMapMath::ExtinctionFromOpacity(opacity->GetValue(s), unitDistance, 1.0);
+      : vtkTransmittanceMapMath::ExtinctionFromOpacity(this->Opacity[i], unitDistance, 1.0);
     double* albedo = this->Albedo.data() + 3 * i;
     if (gray)
     {
@@ -87,5 +89,6 @@ void vtkTyndallTransferTable::GetTexture(std::vector<float>& rgba) const
       emission[4 * i + c] = static_cast<float>(this->Emission[3 * i + c]);
     }
     albedo[4 * i + 3] = static_cast<float>(this->Extinction[i]);
+    emission[4 * i + 3] = static_cast<float>(this->Opacity[i]);
   }
 }

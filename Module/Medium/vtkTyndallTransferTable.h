@@ -14,7 +14,9 @@
  *   part 0), the opacity unused;
  * - Albedo: the colour transfer function (RGB, or grey when the property has
  *   one colour channel);
- * - Emission: the emission colour transfer function (zero without one).
+ * - Emission: the emission colour transfer function (zero without one);
+ * - Opacity: the scalar opacity function itself (what VTK's projection
+ *   blend modes read, vtkTyndallProjection).
  *
  * Minimum and Maximum are the data's finite scalar range.
  *
@@ -66,6 +68,7 @@ public:
   std::vector<double> Extinction;
   std::vector<double> Albedo;   // RGB
   std::vector<double> Emission; // RGB
+  std::vector<double> Opacity;
 
   ///@{
   /**
@@ -108,6 +111,10 @@ public:
   {
     return this->Extinction[k] + f * (this->Extinction[k + 1] - this->Extinction[k]);
   }
+  double OpacityAt(int k, double f) const
+  {
+    return this->Opacity[k] + f * (this->Opacity[k + 1] - this->Opacity[k]);
+  }
   static void RGBAt(const std::vector<double>& table, int k, double f, double rgb[3])
   {
     const double* a = table.data() + 3 * k;
@@ -128,7 +135,7 @@ public:
 
   /**
    * The GPU layout: Rows RGBA float rows of Size texels; row AlbedoRow =
-   * (albedo, extinction), row EmissionRow = (emission, 0).
+   * (albedo, extinction), row EmissionRow = (emission, opacity).
    */
   void GetTexture(std::vector<float>& rgba) const;
 };

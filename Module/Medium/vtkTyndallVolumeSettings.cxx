@@ -4,25 +4,24 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
+#include "vtkTyndallProjection.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 namespace
 {
-// VTK's name of a blend mode other than composite.
-const char* BlendModeName(int mode)
+// VTK's name of a blend mode Tyndall does not draw (null for one it draws).
+const char* NotDrawnBlendMode(int mode)
 {
   switch (mode)
   {
+    case vtkVolumeMapper::COMPOSITE_BLEND:
     case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
-      return "maximum intensity";
     case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
-      return "minimum intensity";
     case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
-      return "average intensity";
     case vtkVolumeMapper::ADDITIVE_BLEND:
-      return "additive";
+      return nullptr;
     case vtkVolumeMapper::ISOSURFACE_BLEND:
       return "isosurface";
     case vtkVolumeMapper::SLICE_BLEND:
@@ -85,10 +84,19 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
     return notDrawn;
   }
   auto* mapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
-  if (mapper && mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  const char* blendMode = mapper ? NotDrawnBlendMode(mapper->GetBlendMode()) : nullptr;
+  if (blendMode)
   {
-    notDrawn.push_back(std::string("the ") + BlendModeName(mapper->GetBlendMode()) +
-      " blend mode (drawn as composite)");
+    notDrawn.push_back(std::string("the ") + blendMode + " blend mode (drawn as composite)");
+  }
+  vtkTyndallProjection projection;
+  projection.Read(mapper, property);
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  if (projection.Enabled() && medium && medium->GetDetailNoise())
+  {
+    notDrawn.push_back(std::string("procedural detail in the ") +
+      vtkTyndallProjection::GetModeName(projection.GetMode()) +
+      " blend mode (the grid's scalars are projected)");
   }
   if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes() &&
     HasTranslucentGeometry(renderer))
@@ -96,13 +104,16 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
     notDrawn.push_back("depth peeling for volumes with translucent geometry (not supported: the "
                        "volume and the geometry can be drawn wrong)");
   }
-  if (vtkParticipatingMediumProperty::SafeDownCast(property))
+  if (medium)
   {
     return notDrawn; // Tyndall's meaning: VTK's classification settings are documented as ignored
   }
   if (property->GetShade(0))
   {
-    notDrawn.push_back("gradient shading (ShadeOn: lit as a scattering medium instead)");
+    notDrawn.push_back(projection.Enabled()
+        ? std::string("gradient shading in the ") +
+          vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)"
+        : std::string("gradient shading (ShadeOn: lit as a scattering medium instead)"));
   }
   if (HasGradientOpacity(property))
   {

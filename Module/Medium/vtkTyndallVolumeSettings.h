@@ -7,14 +7,17 @@
  * setting of the volume's mapper, its property and the renderer that VTK
  * draws and Tyndall does not yet (Documentation/mapper.md, "Compatibility
  * with VTK's mapper"), with what Tyndall draws instead:
- * - a blend mode other than composite (drawn as composite);
+ * - the isosurface and slice blend modes (drawn as composite; the
+ *   projections are drawn, vtkTyndallProjection);
+ * - procedural detail in a projection blend mode (the grid's scalars are
+ *   projected);
  * - the renderer's depth peeling for volumes, with translucent geometry in
  *   the renderer (not supported);
  * and, for a plain vtkVolumeProperty (VTK's meaning; a
  * vtkParticipatingMediumProperty documents these as ignored, Tyndall's
  * meaning):
  * - gradient shading (ShadeOn: the volume is lit as a scattering medium
- *   instead);
+ *   instead; a projection is unshaded);
  * - gradient opacity (enabled, with a function that is not 1 everywhere);
  * - 2-D transfer functions (TF_2D: the 1-D functions are used);
  * - nearest interpolation (vtkVolumeProperty's default; drawn trilinear).

@@ -9,6 +9,8 @@
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkTyndallProjection.h"
 #include "vtkTyndallReferenceScene.h"
 #include "vtkTyndallSceneReader.h"
 
@@ -137,6 +139,11 @@ private:
     {
       return;
     }
+    if (s.Projected)
+    {
+      this->ProjectPixel(rays, t0, t1, radiance, transmittance);
+      return;
+    }
     const double steps = std::max(1.0, std::ceil((t1 - t0) / s.Step));
     const int n = static_cast<int>(steps);
     const double dt = (t1 - t0) / n;
@@ -187,6 +194,35 @@ private:
       {
         break;
       }
+    }
+  }
+
+  // A projection blend mode (vtkTyndallProjection; GPU twin:
+  // vtkTransmittanceProjectionFS.glsl): the grid's scalars at the middles of
+  // n equal steps of [t0, t1], gathered by vtkTyndallProjection::Ray; the
+  // premultiplied pixel, its transmittance 1 - alpha.
+  void ProjectPixel(
+    const LocalRays& rays, double t0, double t1, double* radiance, double transmittance[3]) const
+  {
+    const vtkTyndallGridMedium& grid = *this->S->Projected;
+    vtkTyndallProjection::Ray ray(grid.GetProjection(), grid.GetTable());
+    const int n = static_cast<int>(std::max(1.0, std::ceil((t1 - t0) / this->S->Step)));
+    const double dt = (t1 - t0) / n;
+    for (int m = 0; m < n; ++m)
+    {
+      double p[3];
+      rays.At(0, t0 + (m + 0.5) * dt, p);
+      const double value = grid.GetClipRegion().InsideIndex(p) ? grid.FieldScalar(p) : std::nan("");
+      if (!std::isnan(value))
+      {
+        ray.Add(value, dt);
+      }
+    }
+    double rgba[4];
+    if (ray.Pixel(rgba))
+    {
+      std::copy(rgba, rgba + 3, radiance);
+      std::fill(transmittance, transmittance + 3, 1.0 - rgba[3]);
     }
   }
 

@@ -46,8 +46,10 @@
  * therefore have no lights, and then single scattering gives only ambient
  * light and emission (no error). The mapper's clipping planes and cropping
  * cut the medium (vtkTyndallClipRegion's rules, as on the GPU): for camera
- * rays and for the light, unless LightIgnoresClipping is on. The blend mode
- * is ignored.
+ * rays and for the light, unless LightIgnoresClipping is on. VTK's
+ * projection blend modes (maximum, minimum and average intensity, additive)
+ * are drawn by vtkTyndallProjection's rules (its Ray, at the middles of the
+ * camera steps); the other blend modes are drawn as composite.
  *
  * Numerical method: a camera ray's segment inside the medium's box is cut
  * into n = ceil(length / StepSize) equal steps. The medium is sampled at each

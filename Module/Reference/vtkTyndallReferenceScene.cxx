@@ -84,6 +84,8 @@ void vtkTyndallReferenceScene::SetUpMedia(const vtkTyndallSceneReader& reader)
   }
   this->Parameters = &media[0]->GetParameters();
   this->Octaves = this->Parameters->ScatteringOctaves;
+  const vtkTyndallGridMedium& grid = reader.GetMedium();
+  this->Projected = grid.GetProjection().Enabled() ? &grid : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -95,6 +95,11 @@ public:
   /// The lighting of the camera rays: the volume's own medium's.
   const vtkTyndallMediumParameters* Parameters = nullptr;
   std::vector<LightSource> Lights;
+  /**
+   * The volume's grid when it is drawn in a projection blend mode
+   * (vtkTyndallProjection; Media's first then), else null.
+   */
+  const vtkTyndallGridMedium* Projected = nullptr;
   /// Whether this medium is drawn by another volume's camera rays
   /// (vtkTyndallSceneReader::GetDrawnBy()): it draws nothing itself.
   bool DrawnByAnother = false;

@@ -384,6 +384,32 @@ void vtkTransmittanceFrame::SetMediumUniforms(vtkShaderProgram* program) const
 }
 
 //------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetCameraUniforms(vtkShaderProgram* program, vtkTextureObject* depth,
+  bool direct, const int viewport[4], int width, int height) const
+{
+  vtkNew<vtkMatrix4x4> ndcToWorld;
+  vtkMatrix4x4::Invert(this->Renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+                         this->Renderer->GetTiledAspectRatio(), -1, 1),
+    ndcToWorld);
+  float columns[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      columns[c * 4 + r] = static_cast<float>(ndcToWorld->GetElement(r, c));
+    }
+  }
+  program->SetUniformMatrix4x4("ndcToWorld", columns);
+  program->SetUniformi("depthTexture", depth->GetTextureUnit());
+  const float direct1[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
+  const float reduced[4] = { static_cast<float>(viewport[2]) / width,
+    static_cast<float>(viewport[3]) / height, static_cast<float>(viewport[0]),
+    static_cast<float>(viewport[1]) };
+  program->SetUniform4f("fragToWindow", direct ? direct1 : reduced);
+  program->SetUniformi("jitter", this->Integrator.Jitter ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
 {
   program->SetUniformMatrix4x4("worldToMapBox", const_cast<float*>(this->WorldToMapBox));

@@ -129,6 +129,16 @@ public:
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
   /**
+   * Sets the camera ray's uniforms (vtkTransmittanceCameraRayFS.glsl):
+   * ndcToWorld from the renderer's active camera, depthTexture, and
+   * fragToWindow for an image of `width` x `height` pixels over the
+   * renderer's viewport `viewport` (x, y, width, height in the window;
+   * `direct`: the quad's pixels are the window's).
+   */
+  void SetCameraUniforms(vtkShaderProgram* program, vtkTextureObject* depth, bool direct,
+    const int viewport[4], int width, int height) const;
+
+  /**
    * The shaders' variant for this frame (vtkTransmittanceShaderSource): the
    * medium's switches (its adapter's DeclareSwitches()), empty-space
    * skipping when the settings ask for it, the guests.

@@ -1,7 +1,5 @@
 #include "vtkTransmittanceRayCastPass.h"
 
-#include "vtkCamera.h"
-#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderUtilities.h"
@@ -35,17 +33,6 @@ constexpr double kMaxSteps = 1 << 20;
 // Brute-force light marches take this many samples per loop iteration.
 constexpr double kBruteForceUnroll = 8.0;
 
-// Column-major float copy of a VTK (row-major) matrix, for glUniformMatrix.
-void ToColumnMajor(vtkMatrix4x4* m, float out[16])
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[c * 4 + r] = static_cast<float>(m->GetElement(r, c));
-    }
-  }
-}
 }
 
 //------------------------------------------------------------------------------
@@ -92,6 +79,11 @@ bool vtkTransmittanceRayCastPass::Render(
   vtkTransmittanceScopedTextures textures(
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   this->SetUniforms(frame, inputs, program);
+  int viewport[4];
+  frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  const int width = (viewport[2] + reduction - 1) / reduction;
+  const int height = (viewport[3] + reduction - 1) / reduction;
+  frame.SetCameraUniforms(program, inputs.Depth, direct, viewport, width, height);
   program->SetUniformf("stepLength", static_cast<float>(step));
   if (sampled)
   {
@@ -103,14 +95,6 @@ bool vtkTransmittanceRayCastPass::Render(
     this->DrawDirect(frame, program, steps);
     return true;
   }
-  int viewport[4];
-  frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
-  const int width = (viewport[2] + reduction - 1) / reduction;
-  const int height = (viewport[3] + reduction - 1) / reduction;
-  const float toWindow[4] = { static_cast<float>(viewport[2]) / width,
-    static_cast<float>(viewport[3]) / height, static_cast<float>(viewport[0]),
-    static_cast<float>(viewport[1]) };
-  program->SetUniform4f("fragToWindow", toWindow);
   auto draw = [&](int pass, vtkTextureObject* previous, vtkTextureObject* previousOpacity)
   {
     program->SetUniformi("previousTexture", previous->GetTextureUnit());
@@ -199,8 +183,6 @@ int vtkTransmittanceRayCastPass::StepsPerPass(const vtkTransmittanceFrame& frame
 void vtkTransmittanceRayCastPass::DrawDirect(
   const vtkTransmittanceFrame& frame, vtkShaderProgram* program, int steps)
 {
-  const float toWindow[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
-  program->SetUniform4f("fragToWindow", toWindow);
   program->SetUniformi("firstStep", 0);
   program->SetUniformi("endStep", steps);
   this->Quad.RenderOver(frame.State);
@@ -223,14 +205,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   {
     frame.SetMapUniforms(program, inputs.Maps, inputs.MapSlices);
   }
-  vtkNew<vtkMatrix4x4> ndcToWorld;
-  vtkMatrix4x4::Invert(frame.Renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-                         frame.Renderer->GetTiledAspectRatio(), -1, 1),
-    ndcToWorld);
-  float ndcToWorldF[16];
-  ToColumnMajor(ndcToWorld, ndcToWorldF);
-  program->SetUniformMatrix4x4("ndcToWorld", ndcToWorldF);
-  program->SetUniformi("depthTexture", inputs.Depth->GetTextureUnit());
   // The world width of a pixel along the rays (procedural detail's filter).
   const vtkTyndallFootprint& f = frame.Footprint;
   const float plane[4] = { float(f.Plane[0]), float(f.Plane[1]), float(f.Plane[2]),
@@ -244,7 +218,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   const vtkTyndallGridMedium& medium = *frame.Medium;
   program->SetUniformi("scatteringModel", medium.GetParameters().ScatteringModel);
   program->SetUniformi("lightSampleCount", s.LightSampleCount);
-  program->SetUniformi("jitter", s.Jitter ? 1 : 0);
   program->SetUniformf(
     "anisotropy", static_cast<float>(medium.GetParameters().ScatteringAnisotropy));
   program->SetUniformf("ambient", static_cast<float>(medium.GetParameters().AmbientIntensity));

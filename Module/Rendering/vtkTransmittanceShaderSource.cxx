@@ -5,16 +5,19 @@
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallClipRegion.h"
 #include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallProjection.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkTyndallTransferTable.h"
 
 // The GLSL sources, embedded at build time from glsl/*.glsl.
+#include "vtkTransmittanceCameraRayFS.h"
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceCompositeFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceLightMapFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
+#include "vtkTransmittanceProjectionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
 #include "vtkTransmittanceSplatFS.h"
 #include "vtkTransmittanceSplatVS.h"
@@ -67,6 +70,12 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("OCTAVES", variant.Octaves);
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
+  using P = vtkTyndallProjection;
+  define("PROJECTION", variant.Projection);
+  define("PROJECTION_MAXIMUM", static_cast<int>(P::MAXIMUM));
+  define("PROJECTION_MINIMUM", static_cast<int>(P::MINIMUM));
+  define("PROJECTION_AVERAGE", static_cast<int>(P::AVERAGE));
+  define("PROJECTION_ADDITIVE", static_cast<int>(P::ADDITIVE));
   // Procedural detail: wave groups, and the preprocessor loop over them.
   define("DETAIL_GROUPS", variant.DetailGroups);
   define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);
@@ -149,7 +158,12 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
     case LIGHT_CACHE:
       source += vtkTransmittanceLightCacheFS;
       break;
+    case PROJECTION:
+      source += vtkTransmittanceCameraRayFS;
+      source += vtkTransmittanceProjectionFS;
+      break;
     default:
+      source += vtkTransmittanceCameraRayFS;
       source += vtkTransmittanceRayCastFS;
       break;
   }

@@ -52,6 +52,13 @@
  * none): only what the frame uses is compiled in (a None frame fetched 6 textures per sample, all
  * but 2 of them unused, and ran a masked brute-force light march, before).
  *
+ * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
+ *   one of TYNDALL_PROJECTION_MAXIMUM .. TYNDALL_PROJECTION_ADDITIVE
+ *   (vtkTyndallProjection::Modes).
+ *
+ * The passes that march camera rays (RAY_CAST, PROJECTION) have
+ * vtkTransmittanceCameraRayFS.glsl (the pixel's ray) before their own file.
+ *
  * Internal to Tyndall::Rendering.
  */
 
@@ -71,7 +78,8 @@ public:
     OCCLUSION,
     RAY_CAST,
     LIGHT_CACHE, // with the map variant of the camera rays' (MapCoefficients ...)
-    COMPOSITE    // alone: it shares nothing with the others
+    COMPOSITE,   // alone: it shares nothing with the others
+    PROJECTION   // VTK's projection blend modes (Variant::Projection)
   };
 
   /// The compile-time variants of the shaders.
@@ -146,6 +154,8 @@ public:
     bool GuestColors = false;
     /// Extinction per channel: light and view transmittances per channel.
     bool Chromatic = false;
+    /// The projection blend mode (PROJECTION; vtkTyndallProjection::Modes).
+    int Projection = 0;
     /// Transmittance-function maps of a coloured extinction: one set per channel.
     bool ChannelMaps = false;
   };

@@ -27,6 +27,7 @@
 #include "vtkTransmittanceMediumAdapters.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOcclusionPass.h"
+#include "vtkTransmittanceProjectionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTyndallSceneReader.h"
@@ -226,6 +227,7 @@ public:
   vtkNew<vtkTransmittanceLightCachePass> Cache;
   vtkNew<vtkTransmittanceDepthPass> Depth;
   vtkNew<vtkTransmittanceRayCastPass> RayCast;
+  vtkNew<vtkTransmittanceProjectionPass> Projection;
   // The window the resources live in (weak: it may go before the mapper).
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   // Whether the last Render() went through every pass: the lights, methods,
@@ -256,6 +258,9 @@ public:
   void ChooseDetail(vtkRenderer* renderer, vtkVolume* volume, bool adjust, int maximum,
     vtkTransmittanceRayCastPass::Inputs& inputs) const;
   bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter);
+  // The camera rays of VTK's projection blend modes (vtkTyndallProjection):
+  // no light, map or occluder; timed as CastRays() times its rays.
+  bool Project(vtkTransmittanceVolumeMapper* self, bool timed);
 
   /**
    * Reads the scene, uploads what changed and fills Frame for (renderer,
@@ -433,6 +438,29 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::CastRays(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::Project(
+  vtkTransmittanceVolumeMapper* self, bool timed)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  if (!this->Depth->Render(this->Frame, self) ||
+    !this->Projection->Render(this->Frame, this->Depth->GetTexture(), self))
+  {
+    return false;
+  }
+  this->Reduction = 1;
+  this->StepScale = 1.0;
+  this->RayCastTime = 0.0;
+  if (timed)
+  {
+    glFinish();
+    timer->StopTimer();
+    this->RayCastTime = timer->GetElapsedTime();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 vtkTransmittanceVolumeMapper::vtkTransmittanceVolumeMapper()
   : Internals(new vtkInternals)
 {
@@ -502,6 +530,7 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.Cache->ReleaseGraphicsResources(window);
   in.Depth->ReleaseGraphicsResources(window);
   in.RayCast->ReleaseGraphicsResources(window);
+  in.Projection->ReleaseGraphicsResources(window);
   in.Window = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -657,6 +686,12 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     return;
   }
   vtkTransmittanceScopedTextures medium = in.BindMedium();
+  if (in.Frame.Medium->GetProjection().Enabled())
+  {
+    in.Lit = true; // no light: a projection is not lit
+    in.Complete = in.Project(this, this->InteractiveAdjustment);
+    return;
+  }
   vtkTransmittanceRayCastPass::Inputs inputs;
   if (in.Occlusion->Render(in.Frame, this))
   {

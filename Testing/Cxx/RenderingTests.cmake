@@ -28,6 +28,10 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperMaps.cxx
   TestTransmittanceMapperSceneRules.cxx
   TestTransmittanceMapReducer.cxx)
+# VTK's scenes against VTK's mapper (no baseline; -T: where their pictures go).
+vtk_add_test_cxx(TyndallRenderingCxxTests tests
+  NO_DATA NO_VALID
+  TestTransmittanceMapperVTKScenes.cxx)
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperEmissionAbsorption.cxx
   TestTransmittanceMapperScenes.cxx
@@ -35,3 +39,6 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
 vtk_test_cxx_executable(TyndallRenderingCxxTests tests
   RENDERING_FACTORY
   DISABLE_FLOATING_POINT_EXCEPTIONS)
+# VTK's scenes read VTK's CT head from ../shared/data when it is there.
+target_compile_definitions(TyndallRenderingCxxTests PRIVATE
+  "TYNDALL_SHARED_DATA=\"${TYNDALL_SHARED_DATA}\"")

@@ -4,6 +4,9 @@
 // never a silently different picture. Read through vtkTyndallSceneReader,
 // which both renderers use (no OpenGL):
 //
+// 0. VTK's projection blend modes are drawn (vtkTyndallProjection): not
+//    named; the isosurface and slice modes are, and procedural detail and
+//    gradient shading in a projection;
 // 1. a plain vtkVolumeProperty's default nearest interpolation is named;
 //    composite, shade off, no gradient opacity, TF_1D, linear give no
 //    warning, nor does a vtkParticipatingMediumProperty with Shade on and
@@ -19,6 +22,7 @@
 //    not every frame; a vtkMultiVolume: an error.
 #include "vtkActor.h"
 #include "vtkCommand.h"
+#include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMultiVolume.h"
@@ -135,12 +139,16 @@ int TestTyndallVolumeSettings(int, char*[])
   Check(scene.Read() == 0, "composite, shade off, no gradient opacity, TF_1D, linear: no warning");
 
   vtkSmartVolumeMapper* mapper = scene.Mapper;
-  const std::pair<int, const char*> modes[] = { { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND,
-                                                  "maximum intensity blend mode" },
-    { vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, "minimum intensity blend mode" },
-    { vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, "average intensity blend mode" },
-    { vtkVolumeMapper::ADDITIVE_BLEND, "additive blend mode" },
-    { vtkVolumeMapper::ISOSURFACE_BLEND, "isosurface blend mode" },
+  // The projections are drawn (vtkTyndallProjection): nothing said.
+  for (int mode :
+    { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND,
+      vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, vtkVolumeMapper::ADDITIVE_BLEND })
+  {
+    mapper->SetBlendMode(mode);
+    Check(scene.Read() == 0, "a projection blend mode is drawn: no warning");
+  }
+  const std::pair<int, const char*> modes[] = { { vtkVolumeMapper::ISOSURFACE_BLEND,
+                                                  "isosurface blend mode" },
     { vtkVolumeMapper::SLICE_BLEND, "slice blend mode" } };
   for (const auto& mode : modes)
   {
@@ -148,6 +156,12 @@ int TestTyndallVolumeSettings(int, char*[])
       scene, mode.second, [&] { mapper->SetBlendMode(mode.first); },
       [&] { mapper->SetBlendModeToComposite(); });
   }
+  // Shading in a projection: VTK's projections are unshaded here.
+  mapper->SetBlendModeToMaximumIntensity();
+  CheckSetting(
+    scene, "gradient shading in the maximum intensity blend mode", [&] { plain->ShadeOn(); },
+    [&] { plain->ShadeOff(); });
+  mapper->SetBlendModeToComposite();
   CheckSetting(
     scene, "gradient shading", [&] { plain->ShadeOn(); }, [&] { plain->ShadeOff(); });
   vtkNew<vtkPiecewiseFunction> gradient;
@@ -187,14 +201,14 @@ int TestTyndallVolumeSettings(int, char*[])
     [&] { scene.Renderer->UseDepthPeelingForVolumesOff(); });
 
   // Two at once: one warning naming both; a change of the set warns again.
-  mapper->SetBlendModeToMaximumIntensity();
+  mapper->SetBlendModeToIsoSurface();
   plain->ShadeOn();
-  Check(scene.Read("maximum intensity blend mode") == 1 &&
+  Check(scene.Read("isosurface blend mode") == 1 &&
       scene.Log->Messages.front().find("gradient shading") != std::string::npos &&
       scene.Log->Messages.size() == 1,
     "two settings: one warning naming both");
   plain->ShadeOff();
-  Check(scene.Read("maximum intensity blend mode") == 1 &&
+  Check(scene.Read("isosurface blend mode") == 1 &&
       scene.Log->Messages.front().find("gradient shading") == std::string::npos,
     "one of them back to its default: warned again, naming the other");
   mapper->SetBlendModeToComposite();
@@ -236,8 +250,16 @@ int TestTyndallVolumeSettings(int, char*[])
   Scene tyndall(medium);
   Check(tyndall.Read() == 0,
     "a vtkParticipatingMediumProperty with Shade on and nearest interpolation: no warning");
-  tyndall.Mapper->SetBlendModeToMinimumIntensity();
-  Check(tyndall.Read("minimum intensity blend mode") == 1,
+  tyndall.Mapper->SetBlendModeToSlice();
+  Check(tyndall.Read("slice blend mode") == 1,
     "a vtkParticipatingMediumProperty: a blend mode is named");
+  // Procedural detail is not projected: named.
+  vtkNew<vtkCosineNoise> detail;
+  medium->SetDetailNoise(detail);
+  tyndall.Mapper->SetBlendModeToMinimumIntensity();
+  Check(tyndall.Read("procedural detail in the minimum intensity blend mode") == 1,
+    "procedural detail in a projection: named");
+  tyndall.Mapper->SetBlendModeToComposite();
+  Check(tyndall.Read() == 0, "procedural detail in composite: no warning");
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -44,6 +44,9 @@ albedo.AddRGBPoint(0, 0.9, 0.9, 0.9)
 prop = vtkVolumeProperty()
 # Tyndall interpolates trilinearly; VTK's default (nearest) would be named in a warning.
 prop.SetInterpolationTypeToLinear()
+# A plain property keeps VTK's meaning: unlit with Shade off; lit (and
+# shadowed by the maps) with Shade on.
+prop.ShadeOn()
 prop.SetScalarOpacity(opacity)
 prop.SetColor(albedo)
 prop.SetScalarOpacityUnitDistance(0.05)

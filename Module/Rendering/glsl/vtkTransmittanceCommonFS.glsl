@@ -14,7 +14,8 @@
 // The medium: scalars in a 3-D texture, transfer functions in a 2-D table
 // (vtkTyndallTransferTable: albedo row rgb = colour or albedo, a =
 // extinction per unit length before the density scale; emission row rgb =
-// emission colour).
+// emission colour, a = the scalar opacity function, which the projection
+// blend modes read).
 uniform sampler3D volumeTexture;
 #if TYNDALL_PARTICLE_COLORS
 // A coloured particle cloud: density x albedo per node, beside the density.

@@ -9,13 +9,8 @@
 // A ray's steps n = firstStep .. endStep - 1 are marched by one pass: the
 // whole ray in one (drawn straight into the window), or split over several
 // passes (vtkTransmittanceAccumulationPass), each continuing from the state
-// the previous one left in previousTexture (TYNDALL_ACCUMULATE).
-in vec2 texCoord;
-//VTK::Output::Dec
-
-uniform mat4 ndcToWorld;
-uniform sampler2D depthTexture; // the whole window's depth
-uniform vec4 fragToWindow;      // window pixel = gl_FragCoord.xy * xy + zw
+// the previous one left in previousTexture (TYNDALL_ACCUMULATE). The ray
+// itself: vtkTransmittanceCameraRayFS.glsl, before this file.
 uniform int firstStep;
 uniform int endStep;
 #if TYNDALL_ACCUMULATE
@@ -88,7 +83,6 @@ void tyndallWrite(vec3 radiance, TyndallTransmittance Tv)
 uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform float stepLength;
 uniform int lightSampleCount;
-uniform int jitter;
 uniform float anisotropy;
 uniform float ambient;
 uniform float emissionScale;
@@ -101,12 +95,6 @@ uniform vec3 lightAttenuation[TYNDALL_MAX_LIGHTS];
 uniform float lightConeCosine[TYNDALL_MAX_LIGHTS];  // -2: no cone
 uniform float lightExponent[TYNDALL_MAX_LIGHTS];
 uniform int lightMethod[TYNDALL_MAX_LIGHTS];        // per light: map methods fall back to brute force
-
-vec3 unproject(vec2 ndcXY, float ndcZ)
-{
-  vec4 p = ndcToWorld * vec4(ndcXY, ndcZ, 1.0);
-  return p.xyz / p.w;
-}
 
 // What a frame needs is compiled in, not switched by uniforms (llvmpipe
 // fetches the textures of a uniform branch not taken, and runs a loop of
@@ -617,29 +605,16 @@ vec3 tyndallStepArrayEmission(vec3 x, float sigma, float dt, TyndallTransmittanc
 
 void main()
 {
-  vec2 ndc = 2.0 * texCoord - 1.0; // the quad covers the renderer's viewport
-  vec2 windowXY = gl_FragCoord.xy * fragToWindow.xy + fragToWindow.zw;
-  float depthNdc =
-    2.0 * texture(depthTexture, windowXY / vec2(textureSize(depthTexture, 0))).r - 1.0;
-  vec3 p0 = unproject(ndc, -1.0);
-  vec3 p1 = unproject(ndc, depthNdc);
-  vec3 w = normalize(p1 - p0);
-  float tDepth = length(p1 - p0);
-  vec2 range = tyndallIntersectCameraBox(p0, w);
-  float tNear = max(range.x, 0.0);
-  float tFar = min(range.y, tDepth);
+  vec3 p0, w;
+  float tNear, tFar;
+  tyndallCameraRay(p0, w, tNear, tFar);
   vec3 radiance;
   TyndallTransmittance Tv;
   if (!tyndallStartRay(p0, w, tNear, tFar, radiance, Tv))
   {
     return;
   }
-  float offset = 0.5;
-  if (jitter != 0)
-  {
-    // A fixed per-pixel hash: the same pixel gets the same offset every frame.
-    offset = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
-  }
+  float offset = tyndallStepOffset();
   TyndallSkip skip = tyndallStartSkipping(p0, w);
   // Step n spans [tNear + n stepLength, tNear + (n + 1) stepLength), the last
   // one cut at tFar; its sample lies at `offset` of it.

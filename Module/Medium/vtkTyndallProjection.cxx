@@ -1,0 +1,136 @@
+#include "vtkTyndallProjection.h"
+
+#include "vtkTyndallTransferTable.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+
+//------------------------------------------------------------------------------
+void vtkTyndallProjection::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
+{
+  this->Mode = NONE;
+  switch (mapper ? mapper->GetBlendMode() : vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      this->Mode = MAXIMUM;
+      break;
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      this->Mode = MINIMUM;
+      break;
+    case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
+      this->Mode = AVERAGE;
+      break;
+    case vtkVolumeMapper::ADDITIVE_BLEND:
+      this->Mode = ADDITIVE;
+      break;
+    default:
+      break;
+  }
+  if (mapper)
+  {
+    mapper->GetAverageIPScalarRange(this->AverageRange);
+  }
+  this->UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallProjection::GetModeName(int mode)
+{
+  switch (mode)
+  {
+    case MAXIMUM:
+      return "maximum intensity";
+    case MINIMUM:
+      return "minimum intensity";
+    case AVERAGE:
+      return "average intensity";
+    case ADDITIVE:
+      return "additive";
+    default:
+      return "composite";
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkTyndallProjection::Ray::Ray(
+  const vtkTyndallProjection& projection, const vtkTyndallTransferTable& table)
+  : P(&projection)
+  , Table(&table)
+{
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallProjection::Ray::Opacity(double value) const
+{
+  int k;
+  double f;
+  this->Table->Locate(value, k, f);
+  return this->Table->OpacityAt(k, f);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallProjection::Ray::Unit(double value) const
+{
+  const vtkTyndallTransferTable& t = *this->Table;
+  return t.Maximum > t.Minimum ? (value - t.Minimum) / (t.Maximum - t.Minimum) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallProjection::Ray::Add(double value, double dt)
+{
+  switch (this->P->Mode)
+  {
+    case MAXIMUM:
+      this->Extremum = this->Count > 0 ? std::max(this->Extremum, value) : value;
+      break;
+    case MINIMUM:
+      this->Extremum = this->Count > 0 ? std::min(this->Extremum, value) : value;
+      break;
+    case AVERAGE:
+      if (value < this->P->AverageRange[0] || value > this->P->AverageRange[1])
+      {
+        return; // not counted
+      }
+      this->Sum += this->Opacity(value) * this->Unit(value);
+      break;
+    case ADDITIVE:
+      this->Sum += this->Opacity(value) * dt / this->P->UnitDistance * this->Unit(value);
+      break;
+    default:
+      return;
+  }
+  ++this->Count;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallProjection::Ray::Pixel(double rgba[4]) const
+{
+  const int mode = this->P->Mode;
+  if (mode == MAXIMUM || mode == MINIMUM)
+  {
+    if (this->Count == 0)
+    {
+      return false;
+    }
+    int k;
+    double f;
+    this->Table->Locate(this->Extremum, k, f);
+    const double a = this->Table->OpacityAt(k, f);
+    vtkTyndallTransferTable::RGBAt(this->Table->Albedo, k, f, rgba);
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[c] *= a;
+    }
+    rgba[3] = a;
+    return true;
+  }
+  if (mode == AVERAGE && this->Count == 0)
+  {
+    return false;
+  }
+  const double sum = mode == AVERAGE ? this->Sum / this->Count : this->Sum;
+  rgba[0] = rgba[1] = rgba[2] = std::min(std::max(sum, 0.0), 1.0);
+  rgba[3] = 1.0;
+  return mode == AVERAGE || mode == ADDITIVE;
+}

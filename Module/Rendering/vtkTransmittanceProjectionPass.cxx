@@ -1,0 +1,99 @@
+#include "vtkTransmittanceProjectionPass.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTransmittanceFrame.h"
+#include "vtkTransmittanceScopedTextures.h"
+#include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkTyndallProjection.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkTransmittanceProjectionPass);
+
+//------------------------------------------------------------------------------
+vtkTransmittanceProjectionPass::vtkTransmittanceProjectionPass() = default;
+vtkTransmittanceProjectionPass::~vtkTransmittanceProjectionPass() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceProjectionPass::Render(
+  const vtkTransmittanceFrame& frame, vtkTextureObject* depth, vtkObject* reporter)
+{
+  // The medium's switches alone: no empty-space skipping (an empty block
+  // still holds samples a maximum, minimum or average counts), no guests.
+  vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
+  variant.SkipEmpty = false;
+  variant.Chromatic = false;
+  variant.Projection = frame.Medium->GetProjection().GetMode();
+  vtkShaderProgram* program = this->Quad.Ready(frame.Window,
+    vtkTransmittanceShaderSource::GetFragmentShader(
+      vtkTransmittanceShaderSource::PROJECTION, variant));
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The projection shader did not compile.");
+    return false;
+  }
+  vtkTransmittanceScopedTextures textures({ depth });
+  frame.SetMediumUniforms(program);
+  int viewport[4];
+  frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  frame.SetCameraUniforms(program, depth, true, viewport, viewport[2], viewport[3]);
+  // The mapper's SampleDistance, else VTK's automatic step (the smallest
+  // world spacing: a projection needs no finer one); longer where a ray
+  // across the box would take more than MaximumSteps.
+  const double sampleDistance = frame.Integrator.SampleDistance;
+  double step = sampleDistance > 0.0 ? sampleDistance : frame.MinimumSpacing;
+  const bool lengthened = frame.Diagonal / step > MaximumSteps - 2;
+  if (lengthened)
+  {
+    step = frame.Diagonal / (MaximumSteps - 2);
+    if (!this->WarnedLongSteps)
+    {
+      vtkWarningWithObjectMacro(reporter, << "The projection's rays would take more than "
+                                          << MaximumSteps << " steps; they take steps of " << step
+                                          << " instead (set a larger SampleDistance).");
+    }
+  }
+  this->WarnedLongSteps = lengthened;
+  this->LastStepLength = step;
+  program->SetUniformf("stepLength", static_cast<float>(step));
+  program->SetUniformi("endStep", static_cast<int>(std::ceil(frame.Diagonal / step)) + 2);
+  this->SetUniforms(frame, program);
+  this->Quad.RenderOver(frame.State);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceProjectionPass::SetUniforms(
+  const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const
+{
+  const vtkTyndallTransferTable& table = frame.Medium->GetTable();
+  const vtkTyndallProjection& projection = frame.Medium->GetProjection();
+  const double span = table.Maximum - table.Minimum;
+  const float toUnit[2] = { span > 0.0 ? static_cast<float>(1.0 / span) : 0.0f,
+    span > 0.0 ? static_cast<float>(-table.Minimum / span) : 0.0f };
+  program->SetUniform2f("valueToUnit", toUnit);
+  const double* range = projection.GetAverageRange();
+  const float average[2] = { static_cast<float>(std::max(range[0], -1e38)),
+    static_cast<float>(std::min(range[1], 1e38)) };
+  program->SetUniform2f("averageRange", average);
+  program->SetUniformf("additiveScale", static_cast<float>(1.0 / projection.GetUnitDistance()));
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceProjectionPass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Quad.Release(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceProjectionPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LastStepLength: " << this->LastStepLength << "\n";
+}
