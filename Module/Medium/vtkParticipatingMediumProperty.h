@@ -23,8 +23,11 @@
  * SpecularPower), gradient opacity, interpolation type and the settings of
  * further components are ignored: Tyndall interpolates the scalars
  * trilinearly and lights the medium by scattering. A plain
- * vtkVolumeProperty can be used too: the settings below then have their
- * defaults.
+ * vtkVolumeProperty can be used too, with VTK's meaning: the settings below
+ * have their defaults, except that with Shade off (VTK's default) it is
+ * VTK's unlit emission-absorption picture, with Shade on VTK's gradient
+ * shading shadowed by the medium (vtkTyndallShading), and its nearest
+ * interpolation is honoured.
  *
  * The model is defined in Documentation/rendering-model.md.
  *

@@ -100,14 +100,29 @@ vtkTyndallGridMedium::~vtkTyndallGridMedium() = default;
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
 {
+  // VTK's meaning of a plain property's interpolation: nearest is honoured.
+  vtkVolumeProperty* property = volume ? volume->GetProperty() : nullptr;
+  const bool nearest = property && !vtkParticipatingMediumProperty::SafeDownCast(property) &&
+    property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION && !this->GetLinearExtinction();
+  if (nearest != this->Nearest)
+  {
+    this->Nearest = nearest;
+    this->Field = nullptr;
+    this->ExtinctionTime.Modified(); // the maps see the other interpolation
+  }
   this->Valid = this->UpdateScalars(volume, reporter) &&
     this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
     this->UpdateTable(volume, reporter);
+  if (this->Valid && !this->Field)
+  {
+    this->MakeField();
+  }
   if (this->Valid && this->Clip.Update(volume, this->IndexToWorld, this->IndexToData, reporter))
   {
     this->ExtinctionTime.Modified(); // the maps see the clipped medium
   }
   this->Projection.Read(vtkVolumeMapper::SafeDownCast(volume->GetMapper()), volume->GetProperty());
+  this->Shading.Read(vtkVolumeMapper::SafeDownCast(volume->GetMapper()), volume->GetProperty());
   return this->Valid;
 }
 
@@ -273,11 +288,41 @@ bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalar
                 << ", " << this->FiniteRange[1] << "]).");
   }
   this->Scalars = values;
-  switch (values->GetDataType())
+  this->MakeField();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3]) const
+{
+  double g[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    double plus[3] = { p[0], p[1], p[2] }, minus[3] = { p[0], p[1], p[2] };
+    plus[a] += 1.0;
+    minus[a] -= 1.0;
+    g[a] = 0.5 * (this->FieldScalar(plus) - this->FieldScalar(minus));
+    if (std::isnan(g[a]))
+    {
+      gradient[0] = gradient[1] = gradient[2] = 0.0;
+      return;
+    }
+  }
+  // p = W x (W: world -> index): d/dx = W^T d/dp.
+  const double* w = this->WorldToIndex;
+  for (int j = 0; j < 3; ++j)
+  {
+    gradient[j] = w[j] * g[0] + w[4 + j] * g[1] + w[8 + j] * g[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallGridMedium::MakeField()
+{
+  switch (this->Scalars->GetDataType())
   {
     vtkTemplateMacro(this->Field.reset(new TypedField<VTK_TT>(*this)));
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------

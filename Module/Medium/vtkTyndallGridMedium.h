@@ -26,10 +26,12 @@
  *   their values at the cell centres (constant over the outer half cells);
  *   an image with fewer than 2 points along an axis is refused (flat);
  * - the medium's parameters (vtkTyndallMediumParameters): the volume's
- *   vtkParticipatingMediumProperty, or the defaults for a plain
- *   vtkVolumeProperty;
+ *   vtkParticipatingMediumProperty, or for a plain vtkVolumeProperty the
+ *   defaults, emission-absorption when its Shade is off (VTK's unlit picture);
  * - the mapper's clipping planes and cropping (vtkTyndallClipRegion): the
  *   medium is empty outside them, for the camera and for the light;
+ * - the interpolation: trilinear, or the nearest sample for a plain
+ *   vtkVolumeProperty with nearest interpolation (VTK's default; GetNearest());
  * - the mapper's blend mode (vtkTyndallProjection): a projection (maximum,
  *   minimum, average intensity, additive) is drawn as VTK draws it, the
  *   composite mode as a medium.
@@ -51,6 +53,7 @@
 #include "vtkTyndallClipRegion.h"    // For the clip region
 #include "vtkTyndallMedium.h"        // For the interface
 #include "vtkTyndallProjection.h"    // For the projection
+#include "vtkTyndallShading.h"       // For the shading
 #include "vtkTyndallTransferTable.h" // For the table
 #include "vtkType.h"                 // For vtkIdType
 
@@ -130,7 +133,7 @@ public:
   /// The transfer functions, tabulated.
   const vtkTyndallTransferTable& GetTable() const { return this->Table; }
 
-  /// The medium's parameters (vtkParticipatingMediumProperty, or its defaults).
+  /// The medium's parameters (vtkTyndallMediumParameters::Read()'s rules).
   const vtkTyndallMediumParameters& GetParameters() const override { return this->Parameters; }
 
   ///@{
@@ -139,6 +142,15 @@ public:
   const double* GetWorldToLocal() const override { return this->WorldToIndex; }
   const double* GetLocalToWorld() const override { return this->IndexToWorld; }
   ///@}
+
+  /**
+   * Whether the scalars are read at the nearest sample instead of
+   * trilinearly: a plain vtkVolumeProperty whose InterpolationType is VTK's
+   * default, nearest (a vtkParticipatingMediumProperty, and a particle
+   * cloud, are always trilinear). Both renderers honour it (the GPU's volume
+   * and validity textures filter nearest; Sampler rounds).
+   */
+  bool GetNearest() const { return this->Nearest; }
 
   /// The clip region when it clips (GetClip() always).
   const vtkTyndallClipRegion* GetClip() const override
@@ -150,6 +162,18 @@ public:
 
   /// The mapper's projection blend mode (Enabled() for one; then not a medium).
   const vtkTyndallProjection& GetProjection() const { return this->Projection; }
+
+  /// A plain property's gradient shading (Enabled() with Shade on, composite).
+  const vtkTyndallShading& GetShading() const { return this->Shading; }
+
+  /**
+   * The scalar's gradient at the field index point p, per world unit in
+   * world axes (the CPU twin of the shaders' tyndallScalarGradient()):
+   * central differences of FieldScalar() one sample apart along each index
+   * axis (clamped at the border), mapped through the world -> index
+   * matrix's transpose; 0 where a difference meets missing data.
+   */
+  void FieldGradient(const double p[3], double gradient[3]) const;
 
   ///@{
   /// vtkTyndallMedium: emission from an array, the majorant (the table's largest extinction), a
@@ -207,7 +231,9 @@ public:
    * Trilinear interpolation of the cleaned scalars at field index
    * coordinates, clamped to the samples at the border (the GPU's
    * clamp-to-edge); NaN when one of the 8 voxels around the point is NaN
-   * (missing data: empty medium). T is the scalars' value type.
+   * (missing data: empty medium). With the medium's GetNearest() the
+   * nearest sample's value instead (the GPU's nearest filtering: index
+   * round(p), clamped). T is the scalars' value type.
    */
   template <typename T>
   class Sampler
@@ -230,6 +256,7 @@ public:
     const vtkTyndallGridMedium* Medium;
     const T* Data;
     bool Clean = true;
+    bool Nearest = false;
     int Dims[3];
     vtkIdType Stride[3];
   };
@@ -266,6 +293,9 @@ private:
   bool UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter);
   bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
   bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
+  // The sampler of the scalars' value type for FieldScalar() (after a
+  // change of the scalars or of GetNearest()).
+  void MakeField();
 
   // The scalars and what they were read from (Input: during Update() only).
   vtkImageData* Input = nullptr;
@@ -290,6 +320,8 @@ private:
 
   vtkTyndallClipRegion Clip;
   vtkTyndallProjection Projection;
+  vtkTyndallShading Shading;
+  bool Nearest = false;
   std::vector<float> EmissionValues;
   double EmissionRange[2] = { 0.0, 0.0 };
   std::vector<double> EmissionKey;
@@ -315,6 +347,7 @@ template <typename T>
 vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium)
   : Medium(&medium)
   , Data(static_cast<const T*>(medium.GetScalars()->GetVoidPointer(0)))
+  , Nearest(medium.Nearest)
 {
   for (int a = 0; a < 3; ++a)
   {
@@ -332,12 +365,24 @@ vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, co
 {
   this->Data = data;
   this->Clean = false;
+  this->Nearest = false; // another array (emission: never a plain property's)
 }
 
 //------------------------------------------------------------------------------
 template <typename T>
 double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
 {
+  if (this->Nearest)
+  {
+    vtkIdType index = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int n = this->Dims[a];
+      const double x = p[a] > 0.0 ? (p[a] < n - 1 ? p[a] : n - 1) : 0.0;
+      index += static_cast<vtkIdType>(x + 0.5) * this->Stride[a];
+    }
+    return this->Value(this->Data[index]);
+  }
   vtkIdType base = 0;
   vtkIdType step[3];
   double f[3];

@@ -32,6 +32,12 @@ public:
   double Irradiance[3] = { 1.0, 1.0, 1.0 };
   /// VTK's attenuation 1 / (a0 + a1 r + a2 r^2) of positional lights.
   double Attenuation[3] = { 1.0, 0.0, 0.0 };
+  /**
+   * A headlight (vtkLight::LightTypeIsHeadlight()): gradient shading
+   * (vtkTyndallShading) takes its direction along each camera ray, as VTK's
+   * default light shades.
+   */
+  bool Headlight = false;
   /// A positional light with ConeAngle < 90 degrees.
   bool Spot = false;
   /// Cosine of the cone angle, and the spot exponent (spot lights).

@@ -202,6 +202,7 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
       l.Color[c] = light->GetIntensity() * light->GetDiffuseColor()[c];
     }
     l.Positional = light->GetPositional() != 0;
+    l.Headlight = light->LightTypeIsHeadlight() != 0;
     l.Spot = l.Positional && light->GetConeAngle() < 90.0;
     const bool directed = !l.Positional || l.Spot;
     if (!(vtkMath::Normalize(l.Direction) > 0.0))

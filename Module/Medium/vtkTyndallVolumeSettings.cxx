@@ -108,12 +108,11 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   {
     return notDrawn; // Tyndall's meaning: VTK's classification settings are documented as ignored
   }
-  if (property->GetShade(0))
+  // Shading is drawn but in a projection (vtkTyndallShading).
+  if (property->GetShade(0) && projection.Enabled())
   {
-    notDrawn.push_back(projection.Enabled()
-        ? std::string("gradient shading in the ") +
-          vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)"
-        : std::string("gradient shading (ShadeOn: lit as a scattering medium instead)"));
+    notDrawn.push_back(std::string("gradient shading in the ") +
+      vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)");
   }
   if (HasGradientOpacity(property))
   {
@@ -122,11 +121,6 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {
     notDrawn.push_back("2-D transfer functions (TF_2D: the 1-D functions are used)");
-  }
-  if (property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION)
-  {
-    notDrawn.push_back("nearest interpolation (vtkVolumeProperty's default: drawn trilinear; "
-                       "SetInterpolationTypeToLinear() to match)");
   }
   return notDrawn;
 }

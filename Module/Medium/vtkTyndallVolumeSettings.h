@@ -16,11 +16,12 @@
  * and, for a plain vtkVolumeProperty (VTK's meaning; a
  * vtkParticipatingMediumProperty documents these as ignored, Tyndall's
  * meaning):
- * - gradient shading (ShadeOn: the volume is lit as a scattering medium
- *   instead; a projection is unshaded);
+ * - gradient shading in a projection blend mode (unshaded; drawn in the
+ *   others: vtkTyndallShading);
  * - gradient opacity (enabled, with a function that is not 1 everywhere);
- * - 2-D transfer functions (TF_2D: the 1-D functions are used);
- * - nearest interpolation (vtkVolumeProperty's default; drawn trilinear).
+ * - 2-D transfer functions (TF_2D: the 1-D functions are used).
+ * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
+ * vtkTyndallGridMedium::GetNearest().)
  * The first component's settings are read (more components are refused
  * elsewhere). vtkTyndallSceneReader warns with the list once when it
  * changes, for both renderers.

@@ -4,6 +4,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -13,6 +14,7 @@
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallReferenceScene.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkTyndallShading.h"
 
 #include <algorithm>
 #include <cmath>
@@ -197,6 +199,47 @@ private:
     }
   }
 
+  // A plain property's gradient shading (vtkTyndallShading; GPU twin:
+  // tyndallSurfaceShading()) of the sample `point` at the world point x, the
+  // distance t along the camera ray (direction w, images `rays`): each
+  // light shadowed by its transmittance through the media.
+  void Shade(const Point& point, const double x[3], const double w[3], double t,
+    const LocalRays& rays, double J[3]) const
+  {
+    const Scene& s = *this->S;
+    const vtkTyndallShading& shading = s.Shaded->GetShading();
+    double p[3], n[3];
+    rays.At(0, t, p);
+    s.Shaded->FieldGradient(p, n);
+    const double length = vtkMath::Norm(n);
+    for (int c = 0; c < 3; ++c)
+    {
+      n[c] = length > 0.0 ? n[c] / length : 0.0;
+    }
+    const double v[3] = { -w[0], -w[1], -w[2] };
+    shading.Start(point.Albedo, J);
+    for (const Scene::LightSource& light : s.Lights)
+    {
+      double l[3], factor, tMax;
+      if (!s.LightGeometry(light, x, l, factor, tMax))
+      {
+        continue;
+      }
+      // A surface does not shadow itself: T_l from ShadowOffset voxels
+      // towards the light (the camera media's frames: the offset point's
+      // own images, not the ray's).
+      const double offset = vtkTyndallShading::ShadowOffset * s.Shaded->GetMinimumWorldSpacing();
+      const double y[3] = { x[0] + offset * l[0], x[1] + offset * l[1], x[2] + offset * l[2] };
+      double T[3];
+      s.ChannelTransmittances(
+        this->LightTransmittance(y, nullptr, 0.0, l, std::max(tMax - offset, 0.0)), T);
+      const double E[3] = { factor * light.Color[0], factor * light.Color[1],
+        factor * light.Color[2] };
+      shading.AddLight(n, light.Headlight ? v : l, v, point.Albedo, E, T, J);
+    }
+    vtkTyndallShading::Finish(J);
+  }
+
   // A projection blend mode (vtkTyndallProjection; GPU twin:
   // vtkTransmittanceProjectionFS.glsl): the grid's scalars at the middles of
   // n equal steps of [t0, t1], gathered by vtkTyndallProjection::Ray; the
@@ -275,6 +318,11 @@ private:
       return;
     }
     const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
+    if (s.Shaded)
+    {
+      this->Shade(point, x, w, t, rays, J);
+      return;
+    }
     s.Source(
       point, x, w,
       [&](const double l[3], double tMax, double T[3])

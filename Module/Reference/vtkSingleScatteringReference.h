@@ -49,7 +49,10 @@
  * rays and for the light, unless LightIgnoresClipping is on. VTK's
  * projection blend modes (maximum, minimum and average intensity, additive)
  * are drawn by vtkTyndallProjection's rules (its Ray, at the middles of the
- * camera steps); the other blend modes are drawn as composite.
+ * camera steps); the other blend modes are drawn as composite. A plain
+ * vtkVolumeProperty with Shade on is gradient-shaded by vtkTyndallShading's
+ * rules (its twin), each light's transmittance marched from one voxel
+ * towards the light.
  *
  * Numerical method: a camera ray's segment inside the medium's box is cut
  * into n = ceil(length / StepSize) equal steps. The medium is sampled at each

@@ -86,6 +86,7 @@ void vtkTyndallReferenceScene::SetUpMedia(const vtkTyndallSceneReader& reader)
   this->Octaves = this->Parameters->ScatteringOctaves;
   const vtkTyndallGridMedium& grid = reader.GetMedium();
   this->Projected = grid.GetProjection().Enabled() ? &grid : nullptr;
+  this->Shaded = grid.GetShading().Enabled() ? &grid : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -173,6 +174,8 @@ void vtkTyndallReferenceScene::SetUpLights(const vtkTyndallSceneReader& reader)
   {
     LightSource source;
     std::copy(light.Irradiance, light.Irradiance + 3, source.E);
+    std::copy(light.Color, light.Color + 3, source.Color);
+    source.Headlight = light.Headlight;
     source.Positional = light.Positional;
     source.Spot = light.Spot;
     source.CosCone = light.ConeCosine;

@@ -71,7 +71,9 @@ public:
     double CosCone = -1.0;
     double Exponent = 0.0;
     double Attenuation[3] = { 1.0, 0.0, 0.0 };
-    double E[3] = { 0.0, 0.0, 0.0 }; // LightScale * Intensity * DiffuseColor
+    double E[3] = { 0.0, 0.0, 0.0 };     // LightScale * Intensity * DiffuseColor
+    double Color[3] = { 0.0, 0.0, 0.0 }; // Intensity * DiffuseColor (gradient shading)
+    bool Headlight = false;              // shades along the camera ray (vtkTyndallShading)
   };
 
   /// The most media a scene holds (the volume's own and its guests).
@@ -100,6 +102,11 @@ public:
    * (vtkTyndallProjection; Media's first then), else null.
    */
   const vtkTyndallGridMedium* Projected = nullptr;
+  /**
+   * The volume's grid when a plain property's gradient shading shades it
+   * (vtkTyndallShading; Media's first then), else null.
+   */
+  const vtkTyndallGridMedium* Shaded = nullptr;
   /// Whether this medium is drawn by another volume's camera rays
   /// (vtkTyndallSceneReader::GetDrawnBy()): it draws nothing itself.
   bool DrawnByAnother = false;

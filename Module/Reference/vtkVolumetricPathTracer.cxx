@@ -11,6 +11,8 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkTyndallProjection.h"
 #include "vtkTyndallReferenceScene.h"
 #include "vtkTyndallSceneReader.h"
 
@@ -715,6 +717,22 @@ bool vtkVolumetricPathTracer::RenderImage(
   if (!scene.ReadScene(tyndall, renderer, volume, width, height, this) ||
     !SetUpSampling(this->DistanceSampling, scene, this))
   {
+    return false;
+  }
+  if (scene.Shaded)
+  {
+    vtkErrorMacro(<< "The volume's plain vtkVolumeProperty has Shade on: VTK's gradient shading "
+                     "is a surface model, not a medium the path tracer can scatter in "
+                     "(vtkSingleScatteringReference draws it; a vtkParticipatingMediumProperty "
+                     "is a medium).");
+    return false;
+  }
+  if (scene.Projected)
+  {
+    vtkErrorMacro(<< "The volume's mapper draws it in the "
+                  << vtkTyndallProjection::GetModeName(scene.Projected->GetProjection().GetMode())
+                  << " blend mode, a projection and not a medium: the path tracer draws "
+                     "media (vtkSingleScatteringReference draws projections).");
     return false;
   }
   // The paths scatter for real: the octaves' approximation is what they

@@ -15,7 +15,8 @@
  * The media. The scene is read as vtkSingleScatteringReference reads it,
  * into the same list of media, each asked through one interface
  * (vtkTyndallMedium): the volume's own (a grid's extinction, the transfer
- * table's at the trilinearly interpolated scalar; a particle cloud's exact
+ * table's at the interpolated scalar (trilinear, or a plain property's
+ * nearest); a particle cloud's exact
  * sum of particles; or, with a DetailNoise, the procedural shape x noise of
  * vtkTyndallDetailMedium, never voxelised), and the renderer's other
  * Tyndall volumes (SceneShadows), whose extinction the paths cross too.
@@ -117,7 +118,10 @@
  * as in vtkSingleScatteringReference. Bad input (whatever the scene reader
  * refuses, a size outside [1, 16384], a camera projection that cannot be
  * inverted, a majorant so large that delta tracking would take more than
- * 10^7 steps across a medium's box) is reported with vtkErrorMacro and
+ * 10^7 steps across a medium's box; a volume whose mapper draws it in a
+ * projection blend mode, vtkTyndallProjection, or whose plain
+ * vtkVolumeProperty has Shade on, vtkTyndallShading: neither is a medium) is
+ * reported with vtkErrorMacro and
  * Render() returns nullptr. A volume drawn by another (a camera group's
  * later member) draws nothing of its own: radiance 0, transmittance 1.
  *

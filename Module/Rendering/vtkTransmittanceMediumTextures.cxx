@@ -72,6 +72,17 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
     }
     this->ScalarsTime = medium.GetScalarsTime();
   }
+  // The scalars' interpolation (vtkTyndallGridMedium::GetNearest()): the
+  // volume's and its validity's filter, sent when the textures are bound.
+  const int filter = medium.GetNearest() ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
+  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get() })
+  {
+    if (texture)
+    {
+      texture->SetMinificationFilter(filter);
+      texture->SetMagnificationFilter(filter);
+    }
+  }
   // A coloured particle cloud's scattering grid changes with its scalars.
   if (newScalars || (extras.Scattering != nullptr) != (this->ScatteringTexture != nullptr))
   {

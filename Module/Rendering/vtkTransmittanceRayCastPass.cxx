@@ -157,6 +157,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
     [](const vtkTransmittanceFrame::Guest& g)
     { return g.Camera && g.Textures->GetScatteringTexture(); });
   variant.Octaves = frame.Medium->GetParameters().ScatteringOctaves;
+  variant.Shading = frame.Medium->GetShading().Enabled();
   return variant;
 }
 
@@ -245,8 +246,8 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
 {
   float irradiance[kMaxLights][3] = {}, position[kMaxLights][3] = {}, direction[kMaxLights][3] = {},
         attenuation[kMaxLights][3] = {};
-  float coneCosine[kMaxLights] = {}, exponent[kMaxLights] = {};
-  int method[kMaxLights] = { 0 };
+  float coneCosine[kMaxLights] = {}, exponent[kMaxLights] = {}, color[kMaxLights][3] = {};
+  int method[kMaxLights] = { 0 }, headlight[kMaxLights] = { 0 };
   for (size_t l = 0; l < frame.Lights.size(); ++l)
   {
     const vtkTransmittanceFrame::Light& light = frame.Lights[l];
@@ -256,7 +257,9 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
       position[l][k] = static_cast<float>(light.Source.Position[k]);
       direction[l][k] = static_cast<float>(light.Source.Direction[k]);
       attenuation[l][k] = static_cast<float>(light.Source.Attenuation[k]);
+      color[l][k] = static_cast<float>(light.Source.Color[k]);
     }
+    headlight[l] = light.Source.Headlight ? 1 : 0;
     coneCosine[l] = light.Source.Spot ? static_cast<float>(light.Source.ConeCosine) : -2.0f;
     exponent[l] = static_cast<float>(light.Source.Exponent);
     method[l] = light.Method;
@@ -269,6 +272,18 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
   program->SetUniform1fv("lightConeCosine", kMaxLights, coneCosine);
   program->SetUniform1fv("lightExponent", kMaxLights, exponent);
   program->SetUniform1iv("lightMethod", kMaxLights, method);
+  const vtkTyndallShading& shading = frame.Medium->GetShading();
+  if (shading.Enabled())
+  {
+    // Declared only by the shading variant.
+    program->SetUniform3fv("lightColor", kMaxLights, color);
+    program->SetUniform1iv("lightHeadlight", kMaxLights, headlight);
+    const float coefficients[4] = { float(shading.GetAmbient()), float(shading.GetDiffuse()),
+      float(shading.GetSpecular()), float(shading.GetSpecularPower()) };
+    program->SetUniform4f("shadingCoefficients", coefficients);
+    program->SetUniformf("shadowOffset",
+      static_cast<float>(vtkTyndallShading::ShadowOffset * frame.Medium->GetMinimumWorldSpacing()));
+  }
 }
 
 //------------------------------------------------------------------------------

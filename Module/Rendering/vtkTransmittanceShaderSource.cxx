@@ -69,6 +69,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
   define("OCTAVES", variant.Octaves);
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
+  define("SHADING", variant.Shading ? 1 : 0);
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
   using P = vtkTyndallProjection;
   define("PROJECTION", variant.Projection);

@@ -52,6 +52,8 @@
  * none): only what the frame uses is compiled in (a None frame fetched 6 textures per sample, all
  * but 2 of them unused, and ran a masked brute-force light march, before).
  *
+ * - TYNDALL_SHADING (RAY_CAST only): a plain property's gradient shading
+ *   (vtkTyndallShading) is the camera samples' source;
  * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
  *   one of TYNDALL_PROJECTION_MAXIMUM .. TYNDALL_PROJECTION_ADDITIVE
  *   (vtkTyndallProjection::Modes).
@@ -156,6 +158,8 @@ public:
     bool Chromatic = false;
     /// The projection blend mode (PROJECTION; vtkTyndallProjection::Modes).
     int Projection = 0;
+    /// A plain property's gradient shading (RAY_CAST; vtkTyndallShading).
+    bool Shading = false;
     /// Transmittance-function maps of a coloured extinction: one set per channel.
     bool ChannelMaps = false;
   };

@@ -30,6 +30,7 @@
 #include "vtkTransmittanceProjectionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
 #include "vtkTransmittanceScopedTextures.h"
+#include "vtkTyndallProjection.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
@@ -165,6 +166,22 @@ public:
     }
     return agreed;
   }
+  // A projection drawn by several processes: each projects its own piece
+  // and the compositor blends the pieces "over", which is not a maximum,
+  // minimum, average or sum across them: said once.
+  bool WarnedDistributedProjection = false;
+  void WarnDistributedProjection(vtkTransmittanceVolumeMapper* self)
+  {
+    const bool warn = this->Distributed() != nullptr;
+    if (warn && !this->WarnedDistributedProjection)
+    {
+      vtkWarningWithObjectMacro(self,
+        << "Several processes draw this picture: each projects its own piece of the volume in the "
+        << vtkTyndallProjection::GetModeName(this->Scene.GetMedium().GetProjection().GetMode())
+        << " blend mode and the pieces are blended over each other, not projected across them.");
+    }
+    this->WarnedDistributedProjection = warn;
+  }
   // A light that falls back to marching (a positional light inside the
   // box) sees this process's piece alone: said once.
   bool WarnedDistributedLight = false;
@@ -233,6 +250,8 @@ public:
   // Whether the last Render() went through every pass: the lights, methods,
   // frusta and maps it reports describe that render, or nothing.
   bool Complete = false;
+  // Whether the last Render() drew a projection blend mode (vtkTyndallProjection).
+  bool Projected = false;
   /// The last Render() or UpdateShadowMaps() read the scene and has its maps
   /// (also when another volume drew it).
   bool Lit = false;
@@ -608,8 +627,10 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVo
   {
     return false;
   }
-  this->WarnClippedDetail(
-    self, self->TransmittanceMethod == BRUTE_FORCE || self->DetailSamplesPerPixel > 0);
+  // A projection draws no detail (vtkTyndallVolumeSettings names it).
+  this->WarnClippedDetail(self,
+    !this->Scene.GetMedium().GetProjection().Enabled() &&
+      (self->TransmittanceMethod == BRUTE_FORCE || self->DetailSamplesPerPixel > 0));
   this->WarnDrawOrder(self, renderer, volume);
   vtkTransmittanceFrame::Settings settings;
   settings.Method = self->TransmittanceMethod;
@@ -681,6 +702,7 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   }
   in.Complete = false;
   in.Lit = false;
+  in.Projected = false;
   if (!in.PrepareFrame(this, renderer, volume, window))
   {
     return;
@@ -689,6 +711,9 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
   if (in.Frame.Medium->GetProjection().Enabled())
   {
     in.Lit = true; // no light: a projection is not lit
+    in.Projected = true;
+    in.StillKey.clear();
+    in.WarnDistributedProjection(this);
     in.Complete = in.Project(this, this->InteractiveAdjustment);
     return;
   }
@@ -793,21 +818,24 @@ bool vtkTransmittanceVolumeMapper::PrepareDistributedMaps(vtkRenderer* renderer,
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastDetailSamplesPerPixel()
 {
-  return this->Internals->Complete ? this->Internals->RayCast->GetLastDetailSamples() : 0;
+  const vtkInternals& in = *this->Internals;
+  return in.Complete && !in.Projected ? in.RayCast->GetLastDetailSamples() : 0;
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastDetailCameraWaves()
 {
-  return this->Internals->Complete ? this->Internals->RayCast->GetLastDetailCameraWaves() : 0;
+  const vtkInternals& in = *this->Internals;
+  return in.Complete && !in.Projected ? in.RayCast->GetLastDetailCameraWaves() : 0;
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetAccumulatedFrames()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete && in.RayCast->GetLastDetailSamples() > 0 ? in.RayCast->GetLastHistoryFrames()
-                                                               : 0;
+  return in.Complete && !in.Projected && in.RayCast->GetLastDetailSamples() > 0
+    ? in.RayCast->GetLastHistoryFrames()
+    : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -831,7 +859,8 @@ double vtkTransmittanceVolumeMapper::GetLastStepScale()
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastRayCastPassCount()
 {
-  return this->Internals->Complete ? this->Internals->RayCast->GetLastPassCount() : 0;
+  const vtkInternals& in = *this->Internals;
+  return in.Complete ? (in.Projected ? 1 : in.RayCast->GetLastPassCount()) : 0;
 }
 
 //------------------------------------------------------------------------------

@@ -8,10 +8,13 @@
  * opaque actors and other props. The medium is described by the volume's
  * property: a vtkParticipatingMediumProperty (density scale, anisotropy,
  * light scale, ambient, emission, scattering model) or a plain
- * vtkVolumeProperty (their defaults); the model is defined in
- * Documentation/rendering-model.md, and vtkSingleScatteringReference renders
- * the same scene on the CPU, read by the same internal reader. This class
- * holds only the GPU integrator's settings.
+ * vtkVolumeProperty with VTK's meaning (Shade off: VTK's unlit
+ * emission-absorption picture; Shade on: VTK's gradient shading, each
+ * light shadowed by the medium, vtkTyndallShading; its nearest or linear interpolation); VTK's
+ * projection blend modes (maximum, minimum and average intensity, additive) are drawn as VTK draws
+ * them (vtkTyndallProjection); the model is defined in Documentation/rendering-model.md, and
+ * vtkSingleScatteringReference renders the same scene on the CPU, read by the same internal reader.
+ * This class holds only the GPU integrator's settings.
  *
  * Light transmittance, the expensive part of single scattering, comes from
  * per-light transmittance maps built once and reused for every camera ray:

@@ -1,7 +1,9 @@
 // Benchmark of VTK's blend modes drawn by vtkTransmittanceVolumeMapper
 // beside VTK 9.1's vtkGPUVolumeRayCastMapper on the same scene: the
 // projections (maximum, minimum and average intensity, additive) and the
-// unshaded composite of a plain vtkVolumeProperty. Prints, per mode, the
+// unshaded composite of a plain vtkVolumeProperty, and its gradient shading
+// (Shade on; Tyndall without shadows, the method None, and with the maps'
+// shadows: VTK draws none). Prints, per mode, the
 // time of a frame of each mapper (the mean of N frames, each finished with
 // WaitForCompletion(), the two mappers alternating frame by frame in one
 // window so that both see the same load), their ratio, and the PSNR between
@@ -41,6 +43,8 @@ struct Mode
   const char* Name;
   int BlendMode;
   double PeakOpacity;
+  bool Shade = false;
+  int Method = vtkTransmittanceVolumeMapper::ADAPTIVE_ETM; // Tyndall's (the default)
 };
 
 // Seconds per frame of the window's current volume, the mean of `frames`.
@@ -135,7 +139,11 @@ int main(int argc, char* argv[])
     { "maximum intensity", vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, 1.0 },
     { "minimum intensity", vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, 1.0 },
     { "average intensity", vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, 1.0 },
-    { "additive", vtkVolumeMapper::ADDITIVE_BLEND, 0.05 } };
+    { "additive", vtkVolumeMapper::ADDITIVE_BLEND, 0.05 },
+    { "shaded, no shadows", vtkVolumeMapper::COMPOSITE_BLEND, 0.2, true,
+      vtkTransmittanceVolumeMapper::NONE },
+    { "shaded, AdaptiveETM", vtkVolumeMapper::COMPOSITE_BLEND, 0.2, true,
+      vtkTransmittanceVolumeMapper::ADAPTIVE_ETM } };
   for (const Mode& mode : modes)
   {
     opacity->RemoveAllPoints();
@@ -143,6 +151,8 @@ int main(int argc, char* argv[])
     opacity->AddPoint(range[1], mode.PeakOpacity);
     vtkMapper->SetBlendMode(mode.BlendMode);
     tyndall->SetBlendMode(mode.BlendMode);
+    tyndall->SetTransmittanceMethod(mode.Method);
+    property->SetShade(mode.Shade ? 1 : 0);
     // A first frame of each (shaders, textures), not timed; their pictures.
     volume->SetMapper(vtkMapper);
     FrameTime(window);

@@ -35,7 +35,7 @@ int TestCosineNoiseCloudRender(int argc, char* argv[])
   property->SetColor(color);
   property->SetInterpolationTypeToLinear();
   property->SetScalarOpacityUnitDistance(0.05);
-  property->ShadeOff(); // VTK's gradient shading darkens noise; Tyndall's mapper lights it
+  property->ShadeOff(); // VTK's gradient shading darkens noise
 
   vtkNew<vtkGPUVolumeRayCastMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());

@@ -14,7 +14,9 @@
 // TestGPURayCastParallelProjection, TestGPURayCastOrientation,
 // TestGPURayCastModelTransformMatrix, TestGPURayCastDataTypes (signed char,
 // unsigned short, short, int, double), TestGPURayCastVolumePolyData (an
-// opaque sphere inside the volume), and an
+// opaque sphere inside the volume), nearest interpolation (VTK's default,
+// close up), gradient shading (Shade on; against VTK without shadows, the
+// method None, and against the CPU reference with them), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
 // lights). The data are made here (a box of unsigned chars, VTK's wavelet);
 // with ../shared/data present, the CT head (headsq) too, else those scenes
@@ -29,6 +31,7 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageShiftScale.h"
+#include "vtkLight.h"
 #include "vtkLightKit.h"
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
@@ -77,6 +80,11 @@ struct Scene
   // The floor against VTK: the 35 dB, lower only where VTK itself is
   // measured to be off (Documentation/mapper.md, "VTK's scenes as tests").
   double Floor = 35.0;
+  // VTK's default interpolation, nearest, instead of linear.
+  bool Nearest = false;
+  // Shade on (vtkTyndallShading): against VTK without shadows (the method
+  // None), against the CPU reference with them (brute force).
+  bool Shaded = false;
 };
 
 // TestGPURayCastBlendModes' kind of volume: 64^3 unsigned chars; tissue of
@@ -237,6 +245,43 @@ void Tilted(vtkRenderer* renderer, vtkVolume*)
   renderer->ResetCamera();
 }
 
+// ColorProperty, denser, with Shade on (VTK's default coefficients).
+void ShadedProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ColorProperty(property, range);
+  property->SetScalarOpacityUnitDistance(0.5);
+  property->ShadeOn();
+}
+
+// ShadedProperty without the ambient term: VTK's ambient with scene lights is
+// their ambient colour, black by default (Tyndall's is Ka c with any light).
+void UnlitAmbientShadedProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ShadedProperty(property, range);
+  property->SetAmbient(0.0);
+}
+
+// One directional scene light from the upper left instead of the headlight.
+void SceneLight(vtkRenderer* renderer, vtkVolume* volume)
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(-1.0, 1.0, 0.6);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  light->SetPositional(false);
+  renderer->AddLight(light);
+  Tilted(renderer, volume);
+}
+
+// Close enough that a voxel spans several pixels (nearest interpolation's
+// blocks).
+void Zoomed(vtkRenderer* renderer, vtkVolume* volume)
+{
+  Tilted(renderer, volume);
+  renderer->GetActiveCamera()->Zoom(3.0);
+  renderer->ResetCameraClippingRange();
+}
+
 void Ramp(vtkVolumeProperty* p, const double r[2])
 {
   RampProperty(p, r, 1.0);
@@ -364,6 +409,18 @@ std::vector<Scene> Scenes()
         Tilted(r, v);
       },
       true },
+    { "Nearest-Composite", MakeBox, SoftRamp, none, Zoomed, false, 35.0, true },
+    { "Nearest-MaximumIntensity", MakeWavelet, Ramp, Blend(M::MAXIMUM_INTENSITY_BLEND), Zoomed,
+      true, 35.0, true },
+    { "Shaded-Wavelet", MakeWavelet, ShadedProperty, none, Tilted, true, 35.0, false, true },
+    { "Shaded-Box", MakeBox, ShadedProperty, none, Tilted, true, 35.0, false, true },
+    { "Shaded-WaveletSceneLight", MakeWavelet, UnlitAmbientShadedProperty, none, SceneLight, true,
+      35.0, false, true },
+    { "Shaded-NearestCellData", MakeWaveletCells, ShadedProperty, none, Tilted, true, 35.0, true,
+      true },
+    { "Shaded-Head", MakeHead, ShadedProperty, none, Tilted, true, 35.0, false, true },
+    { "Shaded-HeadSceneLight", MakeHead, UnlitAmbientShadedProperty, none, SceneLight, true, 35.0,
+      false, true },
     { "Head-MaximumIntensity", MakeHead,
       [](vtkVolumeProperty* p, const double r[2]) { RampProperty(p, r, 1.0); },
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
@@ -404,7 +461,8 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
                                                              : data->GetCellData()->GetScalars();
   scalars->GetRange(range);
   vtkNew<vtkVolumeProperty> property;
-  property->SetInterpolationTypeToLinear();
+  property->SetInterpolationType(
+    scene.Nearest ? VTK_NEAREST_INTERPOLATION : VTK_LINEAR_INTERPOLATION);
   scene.Property(property, range);
   vtkNew<vtkGPUVolumeRayCastMapper> vtkMapper;
   vtkNew<vtkTransmittanceVolumeMapper> tyndall;
@@ -413,6 +471,10 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   {
     m->SetInputData(data);
     scene.Mapper(m);
+  }
+  if (scene.Shaded)
+  {
+    tyndall->SetTransmittanceMethodToNone(); // VTK draws no shadow
   }
   vtkNew<vtkVolume> volume;
   volume->SetMapper(vtkMapper);
@@ -442,8 +504,17 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
     const double* spacing = data->GetSpacing();
     tyndall->SetSampleDistance(0.25 * std::min({ spacing[0], spacing[1], spacing[2] }));
     tyndall->JitterOff();
+    if (scene.Shaded)
+    {
+      tyndall->SetTransmittanceMethodToBruteForce(); // the shadows the reference draws
+      tyndall->SetLightSampleCount(256);
+    }
     window->Render();
     vtkSmartPointer<vtkImageData> fine = tyndall_test::Grab(window);
+    if (scene.Shaded)
+    {
+      Write(fine, out + "/" + scene.Name + "-tyndall-shadows.png");
+    }
     vtkNew<vtkSingleScatteringReference> reference;
     reference->SetStepSize(tyndall->GetSampleDistance());
     double cpu = -1.0;

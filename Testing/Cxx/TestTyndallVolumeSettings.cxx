@@ -7,10 +7,9 @@
 // 0. VTK's projection blend modes are drawn (vtkTyndallProjection): not
 //    named; the isosurface and slice modes are, and procedural detail and
 //    gradient shading in a projection;
-// 1. a plain vtkVolumeProperty's default nearest interpolation is named;
-//    composite, shade off, no gradient opacity, TF_1D, linear give no
-//    warning, nor does a vtkParticipatingMediumProperty with Shade on and
-//    nearest interpolation (Tyndall's meaning);
+// 1. a plain vtkVolumeProperty at VTK's defaults (composite, shade off, no
+//    gradient opacity, TF_1D, nearest) gives no warning, nor linear, nor does a
+//    vtkParticipatingMediumProperty with Shade on and nearest interpolation (Tyndall's meaning);
 // 2. each setting alone: one warning that names it, not repeated while the
 //    setting stays, none once it is back to its default;
 // 3. a gradient opacity function of 1 everywhere, or disabled: no warning;
@@ -132,9 +131,8 @@ int TestTyndallVolumeSettings(int, char*[])
 {
   vtkNew<vtkVolumeProperty> plain;
   Scene scene(plain);
-  // vtkVolumeProperty's default interpolation is nearest, which Tyndall
-  // does not draw.
-  Check(scene.Read("nearest interpolation") == 1, "a plain property's default nearest: named");
+  // vtkVolumeProperty's default interpolation, nearest, is drawn.
+  Check(scene.Read() == 0, "composite, shade off, no gradient opacity, TF_1D, nearest: no warning");
   plain->SetInterpolationTypeToLinear();
   Check(scene.Read() == 0, "composite, shade off, no gradient opacity, TF_1D, linear: no warning");
 
@@ -162,8 +160,10 @@ int TestTyndallVolumeSettings(int, char*[])
     scene, "gradient shading in the maximum intensity blend mode", [&] { plain->ShadeOn(); },
     [&] { plain->ShadeOff(); });
   mapper->SetBlendModeToComposite();
-  CheckSetting(
-    scene, "gradient shading", [&] { plain->ShadeOn(); }, [&] { plain->ShadeOff(); });
+  // Shading in the composite blend mode is drawn (vtkTyndallShading).
+  plain->ShadeOn();
+  Check(scene.Read() == 0, "gradient shading in composite: drawn, no warning");
+  plain->ShadeOff();
   vtkNew<vtkPiecewiseFunction> gradient;
   gradient->AddPoint(0.0, 0.0);
   gradient->AddPoint(10.0, 1.0);
@@ -202,15 +202,19 @@ int TestTyndallVolumeSettings(int, char*[])
 
   // Two at once: one warning naming both; a change of the set warns again.
   mapper->SetBlendModeToIsoSurface();
-  plain->ShadeOn();
+  plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
   Check(scene.Read("isosurface blend mode") == 1 &&
-      scene.Log->Messages.front().find("gradient shading") != std::string::npos &&
+      scene.Log->Messages.front().find("2-D transfer functions") != std::string::npos &&
       scene.Log->Messages.size() == 1,
     "two settings: one warning naming both");
-  plain->ShadeOff();
+  plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
   Check(scene.Read("isosurface blend mode") == 1 &&
-      scene.Log->Messages.front().find("gradient shading") == std::string::npos,
+      scene.Log->Messages.front().find("2-D transfer functions") == std::string::npos,
     "one of them back to its default: warned again, naming the other");
+  // Shading in the isosurface blend mode (drawn as composite) is drawn.
+  plain->ShadeOn();
+  Check(scene.Read("gradient shading") == 0, "gradient shading in the isosurface mode: drawn");
+  plain->ShadeOff();
   mapper->SetBlendModeToComposite();
 
   // One mapper drawing two volumes whose settings differ: each is said
@@ -219,7 +223,7 @@ int TestTyndallVolumeSettings(int, char*[])
   other->SetMapper(mapper);
   vtkNew<vtkVolumeProperty> shaded;
   shaded->DeepCopy(plain);
-  shaded->ShadeOn();
+  shaded->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
   other->SetProperty(shaded);
   scene.Renderer->AddVolume(other);
   mapper->SetBlendModeToComposite();
@@ -231,7 +235,7 @@ int TestTyndallVolumeSettings(int, char*[])
     Check(scene.Reader.Update(scene.Renderer, other, scene.Reporter), "the other volume is read");
     said += static_cast<int>(scene.Log->Messages.size());
   }
-  Check(said == 1, "two volumes of one mapper: the shaded one said once over three frames");
+  Check(said == 1, "two volumes of one mapper: the 2-D one said once over three frames");
   scene.Renderer->RemoveVolume(other);
 
   // A vtkMultiVolume: an error, nothing read.

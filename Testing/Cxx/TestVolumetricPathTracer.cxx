@@ -46,6 +46,7 @@
 #include "vtkSingleScatteringReference.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkVolumetricPathTracer.h"
 
 #include "TyndallTestCheck.h"
@@ -346,6 +347,23 @@ void TestBadInput(Scene& scene)
   observer->Clear();
   vtkNew<vtkVolume> empty;
   Check(!tracer->Render(scene.Renderer, empty, 8, 8) && observer->GetError(), "no mapper");
+  observer->Clear();
+  // A projection blend mode is not a medium: refused, named.
+  scene.Mapper->SetBlendModeToMaximumIntensity();
+  Check(!tracer->Render(scene.Renderer, scene.Volume, 8, 8) && observer->GetError() &&
+      observer->GetErrorMessage().find("maximum intensity") != std::string::npos,
+    "a projection blend mode: refused");
+  scene.Mapper->SetBlendModeToComposite();
+  observer->Clear();
+  // A plain property with Shade on is gradient shading, a surface model: refused.
+  vtkNew<vtkVolumeProperty> shaded;
+  shaded->SetScalarOpacity(scene.Opacity);
+  shaded->ShadeOn();
+  scene.Volume->SetProperty(shaded);
+  Check(!tracer->Render(scene.Renderer, scene.Volume, 8, 8) && observer->GetError() &&
+      observer->GetErrorMessage().find("Shade on") != std::string::npos,
+    "a plain property with Shade on: refused");
+  scene.Volume->SetProperty(scene.Property);
   observer->Clear();
   tracer->SetSamplesPerPixel(0);
   tracer->SetMaximumBounces(-3);

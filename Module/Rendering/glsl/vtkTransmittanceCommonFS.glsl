@@ -186,6 +186,39 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
 #endif
 }
 
+#if TYNDALL_SHADING
+// The scalar's gradient at the world point x, per world unit in world axes
+// (CPU twin: vtkTyndallGridMedium::FieldGradient()): central differences
+// one texel apart along each texture axis, d/dx = (dq/dx)^T d/dq for the
+// box coordinates q; 0 where a difference meets missing data.
+vec3 tyndallScalarGradient(vec3 x)
+{
+  vec3 t = (worldToVolume * vec4(x, 1.0)).xyz * volumeTexScale + volumeTexShift;
+  vec3 d = 1.0 / vec3(textureSize(volumeTexture, 0));
+#if TYNDALL_MISSING_DATA
+  // A difference that meets missing data: no gradient (the CPU's NaN rule).
+  float valid = min(min(min(texture(validityTexture, t + vec3(d.x, 0.0, 0.0)).r,
+                              texture(validityTexture, t - vec3(d.x, 0.0, 0.0)).r),
+                          min(texture(validityTexture, t + vec3(0.0, d.y, 0.0)).r,
+                            texture(validityTexture, t - vec3(0.0, d.y, 0.0)).r)),
+    min(texture(validityTexture, t + vec3(0.0, 0.0, d.z)).r,
+      texture(validityTexture, t - vec3(0.0, 0.0, d.z)).r));
+  if (valid < 0.999)
+  {
+    return vec3(0.0);
+  }
+#endif
+  vec3 g = vec3(texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)).r -
+      texture(volumeTexture, t - vec3(d.x, 0.0, 0.0)).r,
+    texture(volumeTexture, t + vec3(0.0, d.y, 0.0)).r -
+      texture(volumeTexture, t - vec3(0.0, d.y, 0.0)).r,
+    texture(volumeTexture, t + vec3(0.0, 0.0, d.z)).r -
+      texture(volumeTexture, t - vec3(0.0, 0.0, d.z)).r);
+  vec3 perBox = g * volumeTexScale / (2.0 * d); // d value / d q
+  return transpose(mat3(worldToVolume)) * perBox;
+}
+#endif
+
 float tyndallExtinction(vec3 x)
 {
   vec3 color;

@@ -266,6 +266,33 @@ vec3 tyndallOctaves(float mu, float T, vec3 albedo)
   return sum;
 }
 
+// Light l seen from x: the unit direction towards it, the distance to a
+// positional light (1e30 for a directional one), and `E` (the light's
+// irradiance or colour) with a positional light's attenuation and spot cone
+// applied; false where it gives nothing.
+bool tyndallLightAt(int l, vec3 x, inout vec3 E, out vec3 toLight, out float distance)
+{
+  distance = 1e30;
+  if (lightPositional[l] == 0)
+  {
+    toLight = -lightDirection[l]; // directional
+  }
+  else
+  {
+    vec3 v = lightPosition[l] - x;
+    distance = length(v);
+    toLight = v / distance;
+    vec3 a = lightAttenuation[l];
+    E /= max(a.x + a.y * distance + a.z * distance * distance, 1e-12);
+    if (lightConeCosine[l] > -1.5)
+    {
+      float cosPhi = dot(-toLight, lightDirection[l]);
+      E *= cosPhi >= lightConeCosine[l] ? pow(max(cosPhi, 0.0), lightExponent[l]) : 0.0;
+    }
+  }
+  return E.r + E.g + E.b > 0.0;
+}
+
 // In-scattered radiance per unit sigma_s at x, for the view direction w, at
 // a sample of albedo `albedo` (which only the octaves read).
 vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
@@ -274,26 +301,9 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
   for (int l = 0; l < numberOfLights; ++l)
   {
     vec3 toLight;
-    float distance = 1e30;
+    float distance;
     vec3 E = lightIrradiance[l];
-    if (lightPositional[l] == 0)
-    {
-      toLight = -lightDirection[l]; // directional
-    }
-    else
-    {
-      vec3 v = lightPosition[l] - x;
-      distance = length(v);
-      toLight = v / distance;
-      vec3 a = lightAttenuation[l];
-      E /= max(a.x + a.y * distance + a.z * distance * distance, 1e-12);
-      if (lightConeCosine[l] > -1.5)
-      {
-        float cosPhi = dot(-toLight, lightDirection[l]);
-        E *= cosPhi >= lightConeCosine[l] ? pow(max(cosPhi, 0.0), lightExponent[l]) : 0.0;
-      }
-    }
-    if (E.r + E.g + E.b <= 0.0)
+    if (!tyndallLightAt(l, x, E, toLight, distance))
     {
       continue;
     }
@@ -308,6 +318,49 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
   }
   return sum;
 }
+
+#if TYNDALL_SHADING
+// A plain property's gradient shading (vtkTyndallShading, its CPU twin):
+// Ka c + sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p), clamped to [0, 1]; n the
+// scalar's unit gradient (0 where it is 0), E_l the light's colour
+// (intensity x colour, attenuated), a headlight's direction along the ray.
+uniform vec4 shadingCoefficients; // Ka, Kd, Ks, specular power
+uniform float shadowOffset;       // T_l is taken this far towards the light
+uniform vec3 lightColor[TYNDALL_MAX_LIGHTS];
+uniform int lightHeadlight[TYNDALL_MAX_LIGHTS];
+
+vec3 tyndallSurfaceShading(vec3 x, vec3 w, vec3 color)
+{
+  vec3 g = tyndallScalarGradient(x);
+  float magnitude = length(g);
+  vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+  vec3 v = -w;
+  vec3 sum = shadingCoefficients.x * color;
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    vec3 toLight;
+    float distance;
+    vec3 E = lightColor[l];
+    if (!tyndallLightAt(l, x, E, toLight, distance) || occluded(l, x))
+    {
+      continue;
+    }
+    // A surface does not shadow itself: T_l from shadowOffset towards the light.
+    TyndallTransmittance T =
+      lightTransmittance(l, x + shadowOffset * toLight, toLight, distance - shadowOffset);
+    vec3 s = lightHeadlight[l] != 0 ? v : toLight;
+    // h = 0 where the light faces the camera exactly (the CPU's guard); the
+    // base of pow kept positive: pow(0, 0) is undefined in GLSL, 1 on the CPU.
+    vec3 sv = s + v;
+    float svLength = length(sv);
+    vec3 h = svLength > 0.0 ? sv / svLength : vec3(0.0);
+    float specular =
+      shadingCoefficients.z * pow(max(abs(dot(n, h)), 1e-30), shadingCoefficients.w);
+    sum += T * E * (shadingCoefficients.y * abs(dot(n, s)) * color + specular);
+  }
+  return clamp(sum, 0.0, 1.0);
+}
+#endif
 
 #if TYNDALL_CAMERA_GUESTS
 // Guests drawn with this medium (vtkTyndallSceneReader::GetCameraGuests():
@@ -603,6 +656,22 @@ vec3 tyndallStepArrayEmission(vec3 x, float sigma, float dt, TyndallTransmittanc
 #endif
 }
 
+// The source of the camera sample `medium` at x (view direction w), per
+// unit extinction: its colour (emission-absorption), a plain property's
+// gradient shading (TYNDALL_SHADING), or single scattering and emission.
+vec3 tyndallSource(TyndallCameraSample medium, vec3 x, vec3 w)
+{
+  if (scatteringModel == 0)
+  {
+    return medium.Color;
+  }
+#if TYNDALL_SHADING
+  return tyndallSurfaceShading(x, w, medium.Color);
+#else
+  return medium.Color * inScattering(x, w, medium.Color) + tyndallSampleEmission(medium);
+#endif
+}
+
 void main()
 {
   vec3 p0, w;
@@ -640,16 +709,7 @@ void main()
     if (sigma > 0.0)
     {
       TyndallTransmittance stepOpacity = 1.0 - exp(-sigma * extinctionColor * dt);
-      vec3 source; // per unit sigma_t
-      if (scatteringModel == 0)
-      {
-        source = medium.Color;
-      }
-      else
-      {
-        source = medium.Color * inScattering(x, w, medium.Color) + tyndallSampleEmission(medium);
-      }
-      radiance += Tv * stepOpacity * source;
+      radiance += Tv * stepOpacity * tyndallSource(medium, x, w);
       Tv *= 1.0 - stepOpacity;
       if (tyndallLargest(Tv) < TYNDALL_VIEW_TERMINATION)
       {

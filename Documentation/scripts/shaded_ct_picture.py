@@ -1,0 +1,104 @@
+"""Renders the documentation's gradient-shading picture: VTK's CT head
+(../shared/data/volumes/headsq) with a plain vtkVolumeProperty, Shade on,
+lit by one scene light from the upper left, side by side: VTK 9.1's
+vtkGPUVolumeRayCastMapper, Tyndall's mapper with the method None (VTK's
+picture), Tyndall with the maps' shadows (AdaptiveETM, the default) and
+with brute-force shadows.
+
+    PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
+        Documentation/scripts/shaded_ct_picture.py Documentation/images
+"""
+
+import os
+import sys
+
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkIOImage import vtkNrrdReader, vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
+                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty,
+                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingVolume import vtkGPUVolumeRayCastMapper
+import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (its OpenGL implementation)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
+
+from tyndall import vtkTransmittanceVolumeMapper
+
+SIZE = 320
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+HEAD = os.path.join(ROOT, "..", "shared", "data", "volumes", "headsq", "quarter.nhdr")
+if not os.path.exists(HEAD):
+    print("skip: %s is absent" % HEAD)
+    sys.exit(0)
+
+reader = vtkNrrdReader()
+reader.SetFileName(HEAD)
+reader.Update()
+lo, hi = reader.GetOutput().GetPointData().GetScalars().GetRange()
+span = hi - lo
+color = vtkColorTransferFunction()
+color.AddRGBPoint(lo, 0.1, 0.2, 0.8)
+color.AddRGBPoint(lo + 0.5 * span, 0.9, 0.8, 0.3)
+color.AddRGBPoint(hi, 1.0, 0.3, 0.1)
+opacity = vtkPiecewiseFunction()
+opacity.AddPoint(lo, 0.0)
+opacity.AddPoint(lo + 0.4 * span, 0.0)
+opacity.AddPoint(hi, 0.3)
+prop = vtkVolumeProperty()
+prop.SetColor(color)
+prop.SetScalarOpacity(opacity)
+prop.SetScalarOpacityUnitDistance(0.5)
+prop.SetInterpolationTypeToLinear()
+prop.ShadeOn()
+prop.SetAmbient(0.0)  # VTK's ambient with a scene light: its ambient colour, black
+
+volume = vtkVolume()
+volume.SetProperty(prop)
+renderer = vtkRenderer()
+renderer.SetBackground(0.2, 0.3, 0.4)
+renderer.AddVolume(volume)
+light = vtkLight()
+light.SetLightTypeToSceneLight()
+light.SetPosition(-1.0, 1.0, 0.6)
+light.SetFocalPoint(0.0, 0.0, 0.0)
+renderer.AddLight(light)
+window = vtkRenderWindow()
+window.SetMultiSamples(0)
+window.SetOffScreenRendering(1)
+window.SetSize(SIZE, SIZE)
+window.AddRenderer(renderer)
+
+vtk_mapper = vtkGPUVolumeRayCastMapper()
+vtk_mapper.SetInputConnection(reader.GetOutputPort())
+tyndall = vtkTransmittanceVolumeMapper()
+tyndall.SetInputConnection(reader.GetOutputPort())
+tyndall.SetLightSampleCount(256)
+volume.SetMapper(vtk_mapper)
+renderer.ResetCamera()
+camera = renderer.GetActiveCamera()
+camera.Azimuth(30.0)
+camera.Elevation(20.0)
+renderer.ResetCamera()
+camera.Zoom(1.3)
+
+
+def grab():
+    window.Render()
+    image = vtkWindowToImageFilter()
+    image.SetInput(window)
+    image.ReadFrontBufferOff()
+    image.Update()
+    return image.GetOutput()
+
+
+row = vtkImageAppend()
+row.SetAppendAxis(0)
+row.AddInputData(grab())
+volume.SetMapper(tyndall)
+for method in ("None", "AdaptiveETM", "BruteForce"):
+    getattr(tyndall, "SetTransmittanceMethodTo" + method)()
+    row.AddInputData(grab())
+writer = vtkPNGWriter()
+writer.SetInputConnection(row.GetOutputPort())
+writer.SetFileName(sys.argv[1] + "/shaded-ct.png")
+writer.Write()

@@ -1,0 +1,98 @@
+/**
+ * @class   vtkTyndallShading
+ * @brief   VTK's gradient shading of a plain vtkVolumeProperty with Shade on, shadowed by the maps
+ *
+ * A plain vtkVolumeProperty keeps VTK's meaning: with Shade on (component
+ * 0) in any blend mode but a projection (vtkTyndallProjection), each sample's colour c (the colour
+ * function's) is shaded as VTK 9.1's GPU mapper shades it, with the
+ * property's Ambient Ka, Diffuse Kd, Specular Ks and SpecularPower p, the
+ * normal n being the scalar's gradient normalised (0 where the gradient
+ * is 0), and each light l in addition shadowed by its light transmittance
+ * T_l (Tyndall's maps, brute force, or 1 with the method None):
+ *
+ *     rgb = clamp(Ka c + sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p), 0, 1)
+ *
+ * E_l the light's intensity times its colour, l the unit direction towards
+ * the light (a headlight's: towards the camera along the ray, as VTK's
+ * default light shades), h = normalize(l + v), v towards the camera;
+ * two-sided (VTK's renderer default). T_l is taken from ShadowOffset voxels
+ * (the smallest world spacing) towards the light: a sample on a surface
+ * does not shadow itself (without it the maps' reconstruction of the wall
+ * the sample sits in darkens every lit surface). The opacity is the property's, as
+ * unshaded; the sample is then composited as emission-absorption (its
+ * colour rgb per unit extinction).
+ *
+ * The gradient is taken by central differences one voxel apart along each
+ * index axis (one texel of the GPU's texture, Factor voxels where it is
+ * downsampled) and mapped to world directions (the volume's matrix and the
+ * image's spacing and direction), on both renderers; 0 where a difference
+ * meets missing data (NaN).
+ *
+ * What differs from VTK (Documentation/mapper.md): VTK's ambient term is
+ * Ka c with its default headlight and Ka times the lights' ambient colours
+ * (black by default) with other lights; here it is always Ka c. With
+ * several lights VTK keeps the last light's specular term only; here every
+ * light adds its own.
+ *
+ * Start(), AddLight() and Finish() are the CPU twin of the shader's
+ * tyndallSurfaceShading() (vtkTransmittanceRayCastFS.glsl).
+ *
+ * Internal to Tyndall::Medium; not wrapped.
+ */
+
+#ifndef vtkTyndallShading_h
+#define vtkTyndallShading_h
+
+#include "TyndallMediumModule.h" // For export macro
+
+class vtkVolumeMapper;
+class vtkVolumeProperty;
+
+class TYNDALLMEDIUM_EXPORT vtkTyndallShading
+{
+public:
+  /**
+   * Reads `property`: enabled for a plain vtkVolumeProperty (not a
+   * vtkParticipatingMediumProperty) with Shade on for component 0, drawn by
+   * `mapper` in a blend mode that is not a projection; its coefficients.
+   */
+  void Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property);
+
+  bool Enabled() const { return this->On; }
+  ///@{
+  /// The property's Ambient, Diffuse, Specular and SpecularPower (component 0).
+  double GetAmbient() const { return this->Ambient; }
+  double GetDiffuse() const { return this->Diffuse; }
+  double GetSpecular() const { return this->Specular; }
+  double GetSpecularPower() const { return this->SpecularPower; }
+  ///@}
+
+  /**
+   * Starts a sample's shading: rgb = Ka c.
+   */
+  void Start(const double color[3], double rgb[3]) const;
+
+  /**
+   * Adds light l's term T E (Kd |n.l| c + Ks |n.h|^p) to rgb: n the unit
+   * normal (or 0), l the unit direction towards the light, v towards the
+   * camera, E the light's colour at the sample, T its transmittance per
+   * channel.
+   */
+  void AddLight(const double n[3], const double l[3], const double v[3], const double color[3],
+    const double E[3], const double T[3], double rgb[3]) const;
+
+  /// How far towards a light its transmittance is taken, in voxels (see the class description).
+  static constexpr double ShadowOffset = 1.0;
+
+  /// Clamps rgb to [0, 1] (VTK clamps the shaded colour).
+  static void Finish(double rgb[3]);
+
+private:
+  bool On = false;
+  double Ambient = 0.1;
+  double Diffuse = 0.7;
+  double Specular = 0.2;
+  double SpecularPower = 10.0;
+};
+
+#endif
