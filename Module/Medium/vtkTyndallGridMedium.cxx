@@ -19,6 +19,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -465,6 +466,19 @@ bool vtkTyndallGridMedium::UpdateGeometry(vtkVolume* volume, vtkObject* reporter
     this->BoxLow[a] = -half;
     this->BoxHigh[a] = this->Dimensions[a] - 1 + half;
   }
+  // Gradient opacity's change per average voxel: each index axis' data
+  // spacing (the length of IndexToData's column), their mean over it.
+  double axisSpacing[3], mean = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double* m = this->IndexToData;
+    axisSpacing[a] = std::sqrt(m[a] * m[a] + m[4 + a] * m[4 + a] + m[8 + a] * m[8 + a]);
+    mean += axisSpacing[a] / 3.0;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->GradientToVoxel[a] = mean / axisSpacing[a];
+  }
   return true;
 }
 
@@ -492,6 +506,16 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   std::vector<double> extinction = { property->GetScalarOpacityUnitDistance(0),
     this->FiniteRange[0], this->FiniteRange[1], double(this->GetLinearExtinction()) };
   identify(extinction, property->GetScalarOpacity(0));
+  // A plain property's gradient opacity multiplies the extinction (not in a
+  // projection, which reads the opacity alone).
+  auto* volumeMapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
+  vtkTyndallProjection projection;
+  projection.Read(volumeMapper, property);
+  vtkPiecewiseFunction* gradientOpacity = !medium && !projection.Enabled() &&
+      !this->GetLinearExtinction() && vtkTyndallVolumeSettings::HasGradientOpacity(property)
+    ? property->GetGradientOpacity(0)
+    : nullptr;
+  identify(extinction, gradientOpacity);
   const bool gray = property->GetColorChannels(0) == 1;
   std::vector<double> key = extinction;
   key.push_back(double(gray));
@@ -521,6 +545,7 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
     return false;
   }
+  this->Table.TabulateGradientOpacity(gradientOpacity);
   if (fromArray)
   {
     // The emission colour over the array's range: a black body normalised
@@ -589,12 +614,37 @@ bool vtkTyndallGridMedium::TablePosition(const double p[3], int& k, double& f) c
 }
 
 //------------------------------------------------------------------------------
+double vtkTyndallGridMedium::GradientOpacityAt(const double p[3]) const
+{
+  if (!this->GetGradientOpacity())
+  {
+    return 1.0;
+  }
+  double sum = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    double plus[3] = { p[0], p[1], p[2] }, minus[3] = { p[0], p[1], p[2] };
+    plus[a] += 1.0;
+    minus[a] -= 1.0;
+    const double d =
+      0.5 * (this->FieldScalar(plus) - this->FieldScalar(minus)) * this->GradientToVoxel[a];
+    if (std::isnan(d))
+    {
+      sum = 0.0; // a difference that meets missing data: no gradient
+      break;
+    }
+    sum += d * d;
+  }
+  return this->Table.GradientOpacityAt(std::sqrt(sum));
+}
+
+//------------------------------------------------------------------------------
 double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
 {
   int k;
   double f;
   return this->TablePosition(p, k, f)
-    ? this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f)
+    ? this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p)
     : 0.0;
 }
 
@@ -607,7 +657,8 @@ bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) 
   {
     return false;
   }
-  point.Extinction = this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f);
+  point.Extinction =
+    this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
   if (!(point.Extinction > 0.0))
   {
     return false;

@@ -163,6 +163,21 @@ public:
   /// The mapper's projection blend mode (Enabled() for one; then not a medium).
   const vtkTyndallProjection& GetProjection() const { return this->Projection; }
 
+  /**
+   * A plain vtkVolumeProperty's gradient opacity (TF_1D, enabled, below 1
+   * somewhere: vtkTyndallVolumeSettings::HasGradientOpacity(); not in a
+   * projection blend mode): the extinction is the table's times
+   * GradientOpacityAt(), the table's gradient opacity (GetTable()) at the
+   * scalar's change per average voxel, as VTK 9.1 reads it: the central
+   * differences one sample apart along each index axis (per sample), each
+   * times the mean spacing over that axis' spacing, their length. Both
+   * renderers, for the camera and for the light.
+   */
+  bool GetGradientOpacity() const { return !this->Table.GradientOpacity.empty(); }
+  double GradientOpacityAt(const double p[3]) const;
+  /// The mean spacing over each axis' spacing (the factors above).
+  const double* GetGradientToVoxel() const { return this->GradientToVoxel; }
+
   /// A plain property's gradient shading (Enabled() with Shade on, composite).
   const vtkTyndallShading& GetShading() const { return this->Shading; }
 
@@ -322,6 +337,7 @@ private:
   vtkTyndallProjection Projection;
   vtkTyndallShading Shading;
   bool Nearest = false;
+  double GradientToVoxel[3] = { 1.0, 1.0, 1.0 };
   std::vector<float> EmissionValues;
   double EmissionRange[2] = { 0.0, 0.0 };
   std::vector<double> EmissionKey;

@@ -350,6 +350,10 @@ void vtkTyndallSceneReader::UpdateGuests(
     {
       reason = "is clipped or cropped";
     }
+    else if (g.Medium->GetGradientOpacity())
+    {
+      reason = "has gradient opacity";
+    }
     else if (otherProperty && otherProperty->GetDetailNoise())
     {
       reason = "has procedural detail";

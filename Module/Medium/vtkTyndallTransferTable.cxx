@@ -76,11 +76,30 @@ void vtkTyndallTransferTable::TabulateEmission(
 }
 
 //------------------------------------------------------------------------------
+void vtkTyndallTransferTable::TabulateGradientOpacity(vtkPiecewiseFunction* function)
+{
+  this->GradientOpacity.clear();
+  this->GradientMaximum =
+    0.25 * (this->Maximum > this->Minimum ? this->Maximum - this->Minimum : 1.0);
+  if (!function)
+  {
+    return;
+  }
+  this->GradientOpacity.resize(Size);
+  for (int i = 0; i < Size; ++i)
+  {
+    const double g = this->GradientMaximum * i / (Size - 1);
+    this->GradientOpacity[i] = std::min(std::max(function->GetValue(g), 0.0), 1.0);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkTyndallTransferTable::GetTexture(std::vector<float>& rgba) const
 {
   rgba.assign(4 * Rows * static_cast<size_t>(Size), 0.0f);
   float* albedo = rgba.data() + 4 * static_cast<size_t>(AlbedoRow) * Size;
   float* emission = rgba.data() + 4 * static_cast<size_t>(EmissionRow) * Size;
+  float* gradient = rgba.data() + 4 * static_cast<size_t>(GradientRow) * Size;
   for (int i = 0; i < Size; ++i)
   {
     for (int c = 0; c < 3; ++c)
@@ -90,5 +109,7 @@ void vtkTyndallTransferTable::GetTexture(std::vector<float>& rgba) const
     }
     albedo[4 * i + 3] = static_cast<float>(this->Extinction[i]);
     emission[4 * i + 3] = static_cast<float>(this->Opacity[i]);
+    gradient[4 * i] =
+      this->GradientOpacity.empty() ? 1.0f : static_cast<float>(this->GradientOpacity[i]);
   }
 }

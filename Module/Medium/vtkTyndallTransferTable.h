@@ -38,6 +38,7 @@
 #include <vector>     // For std::vector
 
 class vtkColorTransferFunction;
+class vtkPiecewiseFunction;
 class vtkVolumeProperty;
 
 class TYNDALLMEDIUM_EXPORT vtkTyndallTransferTable
@@ -50,7 +51,8 @@ public:
   /// The GPU texture's rows (GetTexture()).
   static constexpr int AlbedoRow = 0;
   static constexpr int EmissionRow = 1;
-  static constexpr int Rows = 2;
+  static constexpr int GradientRow = 2;
+  static constexpr int Rows = 3;
   ///@}
 
   /**
@@ -60,6 +62,33 @@ public:
    */
   bool Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission, double lo, double hi,
     std::string& error, bool linearExtinction = false);
+
+  ///@{
+  /**
+   * A plain property's gradient opacity (vtkTyndallGridMedium::
+   * GetGradientOpacity()): TabulateGradientOpacity() tabulates `function`
+   * (null: none) over the gradient magnitudes [0, GradientMaximum],
+   * GradientMaximum = (Maximum - Minimum) / 4 (1 / 4 for a single value),
+   * as VTK 9.1 does, clamped to [0, 1]; GradientOpacityAt(g) is the table
+   * at min(g, GradientMaximum), interpolated (1 without a function). On the
+   * GPU: row GradientRow, coordinate min(g / GradientMaximum, 1) (Size - 1)
+   * / Size + 0.5 / Size.
+   */
+  void TabulateGradientOpacity(vtkPiecewiseFunction* function);
+  std::vector<double> GradientOpacity;
+  double GradientMaximum = 0.0;
+  double GradientOpacityAt(double g) const
+  {
+    if (this->GradientOpacity.empty())
+    {
+      return 1.0;
+    }
+    int k;
+    double f;
+    Position(g / this->GradientMaximum * (Size - 1), k, f);
+    return this->GradientOpacity[k] + f * (this->GradientOpacity[k + 1] - this->GradientOpacity[k]);
+  }
+  ///@}
 
   double Minimum = 0.0;
   double Maximum = 1.0;
@@ -135,7 +164,8 @@ public:
 
   /**
    * The GPU layout: Rows RGBA float rows of Size texels; row AlbedoRow =
-   * (albedo, extinction), row EmissionRow = (emission, opacity).
+   * (albedo, extinction), row EmissionRow = (emission, opacity), row
+   * GradientRow = (gradient opacity, 0, 0, 0) (1 without one).
    */
   void GetTexture(std::vector<float>& rgba) const;
 };

@@ -49,11 +49,12 @@ bool HasTranslucentGeometry(vtkRenderer* renderer)
   return false;
 }
 
-// Whether the first component's gradient opacity changes VTK's picture:
-// enabled, and a function below 1 somewhere.
-bool HasGradientOpacity(vtkVolumeProperty* property)
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallVolumeSettings::HasGradientOpacity(vtkVolumeProperty* property)
 {
-  if (property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
+  if (!property || property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
     property->GetDisableGradientOpacity(0) || !property->HasGradientOpacity(0))
   {
     return false;
@@ -70,7 +71,6 @@ bool HasGradientOpacity(vtkVolumeProperty* property)
     }
   }
   return false;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -114,9 +114,11 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
     notDrawn.push_back(std::string("gradient shading in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)");
   }
-  if (HasGradientOpacity(property))
+  // Gradient opacity is drawn but in a projection (vtkTyndallGridMedium).
+  if (projection.Enabled() && HasGradientOpacity(property))
   {
-    notDrawn.push_back("gradient opacity (ignored)");
+    notDrawn.push_back(std::string("gradient opacity in the ") +
+      vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
   }
   if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {

@@ -18,7 +18,8 @@
  * meaning):
  * - gradient shading in a projection blend mode (unshaded; drawn in the
  *   others: vtkTyndallShading);
- * - gradient opacity (enabled, with a function that is not 1 everywhere);
+ * - gradient opacity in a projection blend mode (ignored; drawn in the
+ *   others: vtkTyndallGridMedium::GetGradientOpacity());
  * - 2-D transfer functions (TF_2D: the 1-D functions are used).
  * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
  * vtkTyndallGridMedium::GetNearest().)
@@ -39,6 +40,7 @@
 
 class vtkRenderer;
 class vtkVolume;
+class vtkVolumeProperty;
 
 class TYNDALLMEDIUM_EXPORT vtkTyndallVolumeSettings
 {
@@ -49,6 +51,13 @@ public:
    * are none or the volume has no property.
    */
   static std::vector<std::string> NotDrawn(vtkRenderer* renderer, vtkVolume* volume);
+
+  /**
+   * Whether the first component's gradient opacity changes VTK's picture:
+   * TF_1D, enabled, and a function below 1 somewhere (VTK's default,
+   * disabled or all 1, multiplies by 1).
+   */
+  static bool HasGradientOpacity(vtkVolumeProperty* property);
 
   /// The texts of NotDrawn() as one sentence (empty for none).
   static std::string Describe(const std::vector<std::string>& notDrawn);

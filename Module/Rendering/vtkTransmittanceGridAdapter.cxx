@@ -28,6 +28,7 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
   variant.MissingData = textures.GetValidityTexture() != nullptr;
   variant.Clip = grid.GetClip() != nullptr;
   variant.Chromatic = grid.GetParameters().GetChromatic();
+  variant.GradientOpacity = grid.GetGradientOpacity();
   // Emission from a separate array glows where the extinction is 0: no
   // block is empty then.
   variant.SkipEmpty = variant.SkipEmpty && !grid.GetEmissionFromArray();
@@ -73,6 +74,19 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
     static_cast<float>(table.TextureShift()) };
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(grid.GetParameters().DensityScale));
+  if (grid.GetGradientOpacity())
+  {
+    // Declared only by the gradient-opacity variant: d value / d q_i ->
+    // the change per average voxel (q spans the box, BoxHigh - BoxLow samples).
+    float toVoxel[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      toVoxel[a] = static_cast<float>(
+        grid.GetGradientToVoxel()[a] / (grid.GetBoxHigh()[a] - grid.GetBoxLow()[a]));
+    }
+    program->SetUniform3f("gradientBoxToVoxel", toVoxel);
+    program->SetUniformf("gradientToTable", static_cast<float>(1.0 / table.GradientMaximum));
+  }
   if (vtkTextureObject* emission = textures.GetEmissionTexture())
   {
     // Declared only by the camera rays' emission-array variant.

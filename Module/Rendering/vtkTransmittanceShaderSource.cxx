@@ -48,6 +48,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   using Table = vtkTyndallTransferTable;
   define("TABLE_ALBEDO_ROW", (Table::AlbedoRow + 0.5) / Table::Rows);
   define("TABLE_EMISSION_ROW", (Table::EmissionRow + 0.5) / Table::Rows);
+  define("TABLE_GRADIENT_ROW", (Table::GradientRow + 0.5) / Table::Rows);
+  define("TABLE_SIZE", Table::Size);
   define("NO_OCCLUDER", static_cast<double>(NoOccluder));
   define("VIEW_TERMINATION", static_cast<double>(ViewTermination));
   define("PI", vtkMath::Pi());
@@ -70,6 +72,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("OCTAVES", variant.Octaves);
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
   define("SHADING", variant.Shading ? 1 : 0);
+  define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
   using P = vtkTyndallProjection;
   define("PROJECTION", variant.Projection);

@@ -52,6 +52,9 @@
  * none): only what the frame uses is compiled in (a None frame fetched 6 textures per sample, all
  * but 2 of them unused, and ran a masked brute-force light march, before).
  *
+ * - TYNDALL_GRADIENT_OPACITY: a plain property's gradient opacity
+ *   multiplies the medium's extinction (every pass), read from the table's
+ *   row TYNDALL_TABLE_GRADIENT_ROW (TYNDALL_TABLE_SIZE entries);
  * - TYNDALL_SHADING (RAY_CAST only): a plain property's gradient shading
  *   (vtkTyndallShading) is the camera samples' source;
  * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
@@ -160,6 +163,8 @@ public:
     int Projection = 0;
     /// A plain property's gradient shading (RAY_CAST; vtkTyndallShading).
     bool Shading = false;
+    /// A plain property's gradient opacity (vtkTyndallGridMedium::GetGradientOpacity()).
+    bool GradientOpacity = false;
     /// Transmittance-function maps of a coloured extinction: one set per channel.
     bool ChannelMaps = false;
   };

@@ -16,7 +16,8 @@
 // unsigned short, short, int, double), TestGPURayCastVolumePolyData (an
 // opaque sphere inside the volume), nearest interpolation (VTK's default,
 // close up), gradient shading (Shade on; against VTK without shadows, the
-// method None, and against the CPU reference with them), and an
+// method None, and against the CPU reference with them), gradient opacity
+// (TestGPURayCastGradientOpacity), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
 // lights). The data are made here (a box of unsigned chars, VTK's wavelet);
 // with ../shared/data present, the CT head (headsq) too, else those scenes
@@ -253,6 +254,29 @@ void ShadedProperty(vtkVolumeProperty* property, const double range[2])
   property->ShadeOn();
 }
 
+// ColorProperty (denser) with a gradient opacity: 0 where the scalar does
+// not change, 1 from a change of 4 % of the range per voxel on.
+void GradientOpacityProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ColorProperty(property, range);
+  property->SetScalarOpacityUnitDistance(0.5);
+  vtkNew<vtkPiecewiseFunction> gradient;
+  gradient->AddPoint(0.0, 0.0);
+  gradient->AddPoint(0.04 * (range[1] - range[0]), 1.0);
+  property->SetGradientOpacity(gradient);
+}
+
+// GradientOpacityProperty with Shade on, 1 only from a change of 20 % of
+// the range per voxel on (a CT's edges): VTK's classic shaded CT.
+void ShadedGradientOpacityProperty(vtkVolumeProperty* property, const double range[2])
+{
+  GradientOpacityProperty(property, range);
+  property->GetGradientOpacity()->RemoveAllPoints();
+  property->GetGradientOpacity()->AddPoint(0.0, 0.0);
+  property->GetGradientOpacity()->AddPoint(0.2 * (range[1] - range[0]), 1.0);
+  property->ShadeOn();
+}
+
 // ShadedProperty without the ambient term: VTK's ambient with scene lights is
 // their ambient colour, black by default (Tyndall's is Ka c with any light).
 void UnlitAmbientShadedProperty(vtkVolumeProperty* property, const double range[2])
@@ -421,6 +445,10 @@ std::vector<Scene> Scenes()
     { "Shaded-Head", MakeHead, ShadedProperty, none, Tilted, true, 35.0, false, true },
     { "Shaded-HeadSceneLight", MakeHead, UnlitAmbientShadedProperty, none, SceneLight, true, 35.0,
       false, true },
+    { "GradientOpacity-Wavelet", MakeWavelet, GradientOpacityProperty, none, Tilted, true },
+    { "GradientOpacity-Box", MakeBox, GradientOpacityProperty, none, Tilted, true },
+    { "GradientOpacity-ShadedHead", MakeHead, ShadedGradientOpacityProperty, none, Tilted, true,
+      35.0, false, true },
     { "Head-MaximumIntensity", MakeHead,
       [](vtkVolumeProperty* p, const double r[2]) { RampProperty(p, r, 1.0); },
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },

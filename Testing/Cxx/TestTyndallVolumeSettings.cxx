@@ -12,7 +12,8 @@
 //    vtkParticipatingMediumProperty with Shade on and nearest interpolation (Tyndall's meaning);
 // 2. each setting alone: one warning that names it, not repeated while the
 //    setting stays, none once it is back to its default;
-// 3. a gradient opacity function of 1 everywhere, or disabled: no warning;
+// 3. gradient opacity is drawn (read) in composite, named in a projection;
+//    a function of 1 everywhere, or disabled: not read, no warning;
 // 4. two settings at once: one warning naming both; a change of the set
 //    warns again;
 // 5. depth peeling for volumes (ParaView's default) only with translucent
@@ -167,18 +168,30 @@ int TestTyndallVolumeSettings(int, char*[])
   vtkNew<vtkPiecewiseFunction> gradient;
   gradient->AddPoint(0.0, 0.0);
   gradient->AddPoint(10.0, 1.0);
+  // Gradient opacity is drawn (vtkTyndallGridMedium), but in a projection.
+  plain->SetGradientOpacity(gradient);
+  Check(scene.Read() == 0, "gradient opacity in composite: drawn, no warning");
+  Check(scene.Reader.GetMedium().GetGradientOpacity(), "gradient opacity in composite: read");
+  mapper->SetBlendModeToMaximumIntensity();
   CheckSetting(
-    scene, "gradient opacity", [&] { plain->SetGradientOpacity(gradient); },
+    scene, "gradient opacity in the maximum intensity blend mode", [] {},
     [&] { plain->DisableGradientOpacityOn(); });
   plain->DisableGradientOpacityOff();
-  Check(scene.Read() == 1, "gradient opacity enabled again: warned again");
+  Check(scene.Read() == 1, "gradient opacity in a projection enabled again: warned again");
   plain->DisableGradientOpacityOn();
-  Check(scene.Read() == 0, "gradient opacity disabled: no warning");
+  Check(scene.Read() == 0 && !scene.Reader.GetMedium().GetGradientOpacity(),
+    "gradient opacity disabled: no warning, not read");
+  mapper->SetBlendModeToComposite();
+  plain->DisableGradientOpacityOff();
+  Check(scene.Read() == 0 && scene.Reader.GetMedium().GetGradientOpacity(),
+    "gradient opacity back in composite: read");
+  plain->DisableGradientOpacityOn();
   gradient->RemoveAllPoints();
   gradient->AddPoint(0.0, 1.0);
   gradient->AddPoint(10.0, 1.0);
   plain->DisableGradientOpacityOff();
-  Check(scene.Read() == 0, "a gradient opacity of 1 everywhere changes nothing: no warning");
+  Check(scene.Read() == 0 && !scene.Reader.GetMedium().GetGradientOpacity(),
+    "a gradient opacity of 1 everywhere changes nothing: no warning, not read");
   CheckSetting(
     scene, "2-D transfer functions",
     [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); },

@@ -138,6 +138,69 @@ float tyndallFootprint = 0.0;
 // procedural detail brings vtkTransmittanceDetailFS.glsl (TYNDALL_DETAIL_GROUPS > 0).
 //TYNDALL::Medium
 
+#if TYNDALL_SHADING || TYNDALL_GRADIENT_OPACITY
+// The scalar's change across one texel each way along each texture axis
+// at the texture coordinate t, F(t + d_i) - F(t - d_i) (d_i one texel); 0
+// where a difference meets missing data. d value / d q (box coordinates q)
+// is this times volumeTexScale / (2 d).
+vec3 tyndallTexelDifferences(vec3 t, out vec3 d)
+{
+  d = 1.0 / vec3(textureSize(volumeTexture, 0));
+#if TYNDALL_MISSING_DATA
+  float valid = min(min(min(texture(validityTexture, t + vec3(d.x, 0.0, 0.0)).r,
+                              texture(validityTexture, t - vec3(d.x, 0.0, 0.0)).r),
+                          min(texture(validityTexture, t + vec3(0.0, d.y, 0.0)).r,
+                            texture(validityTexture, t - vec3(0.0, d.y, 0.0)).r)),
+    min(texture(validityTexture, t + vec3(0.0, 0.0, d.z)).r,
+      texture(validityTexture, t - vec3(0.0, 0.0, d.z)).r));
+  if (valid < 0.999)
+  {
+    return vec3(0.0);
+  }
+#endif
+  return vec3(texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)).r -
+      texture(volumeTexture, t - vec3(d.x, 0.0, 0.0)).r,
+    texture(volumeTexture, t + vec3(0.0, d.y, 0.0)).r -
+      texture(volumeTexture, t - vec3(0.0, d.y, 0.0)).r,
+    texture(volumeTexture, t + vec3(0.0, 0.0, d.z)).r -
+      texture(volumeTexture, t - vec3(0.0, 0.0, d.z)).r);
+}
+#endif
+
+#if TYNDALL_SHADING
+// The scalar's gradient at the world point x, per world unit in world axes
+// (CPU twin: vtkTyndallGridMedium::FieldGradient()): central differences
+// one texel apart along each texture axis, d/dx = (dq/dx)^T d/dq for the
+// box coordinates q; 0 where a difference meets missing data.
+vec3 tyndallScalarGradient(vec3 x)
+{
+  vec3 t = (worldToVolume * vec4(x, 1.0)).xyz * volumeTexScale + volumeTexShift;
+  vec3 d;
+  vec3 perBox = tyndallTexelDifferences(t, d) * volumeTexScale / (2.0 * d);
+  return transpose(mat3(worldToVolume)) * perBox;
+}
+#endif
+
+#if TYNDALL_GRADIENT_OPACITY
+// A plain property's gradient opacity at the texture coordinate t (CPU
+// twin: vtkTyndallGridMedium::GradientOpacityAt()): the scalar's change per
+// average voxel, |d value / d q_i * gradientBoxToVoxel_i|, through the
+// table's gradient row over [0, GradientMaximum] (gradientToTable: its
+// inverse), clamped to its end.
+uniform vec3 gradientBoxToVoxel;
+uniform float gradientToTable;
+
+float tyndallGradientOpacity(vec3 t)
+{
+  vec3 d;
+  vec3 perBox = tyndallTexelDifferences(t, d) * volumeTexScale / (2.0 * d);
+  float g = min(length(perBox * gradientBoxToVoxel) * gradientToTable, 1.0);
+  float coord = g * (float(TYNDALL_TABLE_SIZE) - 1.0) / float(TYNDALL_TABLE_SIZE) +
+    0.5 / float(TYNDALL_TABLE_SIZE);
+  return texture(transferTexture, vec2(coord, TYNDALL_TABLE_GRADIENT_ROW)).r;
+}
+#endif
+
 // The medium at a world point: the extinction (density scale applied),
 // returned; the colour (or albedo); and the point's transfer-table
 // coordinate, with which tyndallEmissionColor() reads the emission row
@@ -181,43 +244,12 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
 #endif
 #if TYNDALL_DETAIL_GROUPS > 0
   return tyndallDetailExtinction(q);
+#elif TYNDALL_GRADIENT_OPACITY
+  return densityScale * tf.a * tyndallGradientOpacity(texel);
 #else
   return densityScale * tf.a;
 #endif
 }
-
-#if TYNDALL_SHADING
-// The scalar's gradient at the world point x, per world unit in world axes
-// (CPU twin: vtkTyndallGridMedium::FieldGradient()): central differences
-// one texel apart along each texture axis, d/dx = (dq/dx)^T d/dq for the
-// box coordinates q; 0 where a difference meets missing data.
-vec3 tyndallScalarGradient(vec3 x)
-{
-  vec3 t = (worldToVolume * vec4(x, 1.0)).xyz * volumeTexScale + volumeTexShift;
-  vec3 d = 1.0 / vec3(textureSize(volumeTexture, 0));
-#if TYNDALL_MISSING_DATA
-  // A difference that meets missing data: no gradient (the CPU's NaN rule).
-  float valid = min(min(min(texture(validityTexture, t + vec3(d.x, 0.0, 0.0)).r,
-                              texture(validityTexture, t - vec3(d.x, 0.0, 0.0)).r),
-                          min(texture(validityTexture, t + vec3(0.0, d.y, 0.0)).r,
-                            texture(validityTexture, t - vec3(0.0, d.y, 0.0)).r)),
-    min(texture(validityTexture, t + vec3(0.0, 0.0, d.z)).r,
-      texture(validityTexture, t - vec3(0.0, 0.0, d.z)).r));
-  if (valid < 0.999)
-  {
-    return vec3(0.0);
-  }
-#endif
-  vec3 g = vec3(texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)).r -
-      texture(volumeTexture, t - vec3(d.x, 0.0, 0.0)).r,
-    texture(volumeTexture, t + vec3(0.0, d.y, 0.0)).r -
-      texture(volumeTexture, t - vec3(0.0, d.y, 0.0)).r,
-    texture(volumeTexture, t + vec3(0.0, 0.0, d.z)).r -
-      texture(volumeTexture, t - vec3(0.0, 0.0, d.z)).r);
-  vec3 perBox = g * volumeTexScale / (2.0 * d); // d value / d q
-  return transpose(mat3(worldToVolume)) * perBox;
-}
-#endif
 
 float tyndallExtinction(vec3 x)
 {
