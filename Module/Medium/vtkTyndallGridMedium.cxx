@@ -516,6 +516,11 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     ? property->GetGradientOpacity(0)
     : nullptr;
   identify(extinction, gradientOpacity);
+  if (gradientOpacity)
+  {
+    // The change per average voxel depends on the spacings' ratios.
+    extinction.insert(extinction.end(), this->GradientToVoxel, this->GradientToVoxel + 3);
+  }
   const bool gray = property->GetColorChannels(0) == 1;
   std::vector<double> key = extinction;
   key.push_back(double(gray));

@@ -13,8 +13,9 @@
  *   vtkTransmittanceMapMath::MapLimits;
  * - TYNDALL_NONE .. TYNDALL_ADAPTIVE_ETM:
  *   vtkTransmittanceMapMath::TransmittanceMethods;
- * - TYNDALL_TABLE_ALBEDO_ROW, TYNDALL_TABLE_EMISSION_ROW: the texture rows of
- *   vtkTyndallTransferTable::GetTexture();
+ * - TYNDALL_TABLE_ALBEDO_ROW, TYNDALL_TABLE_EMISSION_ROW,
+ *   TYNDALL_TABLE_GRADIENT_ROW: the texture rows of
+ *   vtkTyndallTransferTable::GetTexture(), TYNDALL_TABLE_SIZE its entries;
  * - TYNDALL_NO_OCCLUDER: the occlusion texture's "no opaque surface";
  * - TYNDALL_VIEW_TERMINATION: camera rays stop below this transmittance;
  * - TYNDALL_PI;

@@ -6,8 +6,9 @@
 // Constants, #defined from their one C++ definition by
 // vtkTransmittanceShaderSource: TYNDALL_MAX_LIGHTS, TYNDALL_MAX_COEFFICIENTS,
 // TYNDALL_COEFFICIENTS_PER_LAYER, the methods TYNDALL_NONE ..
-// TYNDALL_ADAPTIVE_ETM, the table rows TYNDALL_TABLE_ALBEDO_ROW and
-// TYNDALL_TABLE_EMISSION_ROW, TYNDALL_NO_OCCLUDER, TYNDALL_PI; and the
+// TYNDALL_ADAPTIVE_ETM, the table rows TYNDALL_TABLE_ALBEDO_ROW,
+// TYNDALL_TABLE_EMISSION_ROW and TYNDALL_TABLE_GRADIENT_ROW, the table's
+// TYNDALL_TABLE_SIZE entries, TYNDALL_NO_OCCLUDER, TYNDALL_PI; and the
 // variant switches (see vtkTransmittanceShaderSource.h).
 //TYNDALL::Constants
 
@@ -15,7 +16,7 @@
 // (vtkTyndallTransferTable: albedo row rgb = colour or albedo, a =
 // extinction per unit length before the density scale; emission row rgb =
 // emission colour, a = the scalar opacity function, which the projection
-// blend modes read).
+// blend modes read; gradient row r = a plain property's gradient opacity).
 uniform sampler3D volumeTexture;
 #if TYNDALL_PARTICLE_COLORS
 // A coloured particle cloud: density x albedo per node, beside the density.
