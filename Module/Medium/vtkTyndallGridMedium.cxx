@@ -111,6 +111,11 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
     this->Field = nullptr;
     this->ExtinctionTime.Modified(); // the maps see the other interpolation
   }
+  // The blend mode first: the table reads it (gradient opacity is not
+  // projected).
+  auto* volumeMapper = volume ? vtkVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
+  this->Projection.Read(volumeMapper, property);
+  this->Shading.Read(volumeMapper, property);
   this->Valid = this->UpdateScalars(volume, reporter) &&
     this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
     this->UpdateTable(volume, reporter);
@@ -122,8 +127,6 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
   {
     this->ExtinctionTime.Modified(); // the maps see the clipped medium
   }
-  this->Projection.Read(vtkVolumeMapper::SafeDownCast(volume->GetMapper()), volume->GetProperty());
-  this->Shading.Read(vtkVolumeMapper::SafeDownCast(volume->GetMapper()), volume->GetProperty());
   return this->Valid;
 }
 
@@ -294,9 +297,8 @@ bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalar
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3]) const
+bool vtkTyndallGridMedium::IndexDifferences(const double p[3], double g[3]) const
 {
-  double g[3];
   for (int a = 0; a < 3; ++a)
   {
     double plus[3] = { p[0], p[1], p[2] }, minus[3] = { p[0], p[1], p[2] };
@@ -305,10 +307,18 @@ void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3]) 
     g[a] = 0.5 * (this->FieldScalar(plus) - this->FieldScalar(minus));
     if (std::isnan(g[a]))
     {
-      gradient[0] = gradient[1] = gradient[2] = 0.0;
-      return;
+      g[0] = g[1] = g[2] = 0.0;
+      return false;
     }
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3]) const
+{
+  double g[3];
+  this->IndexDifferences(p, g); // 0 at missing data
   // p = W x (W: world -> index): d/dx = W^T d/dp.
   const double* w = this->WorldToIndex;
   for (int j = 0; j < 3; ++j)
@@ -508,10 +518,7 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   identify(extinction, property->GetScalarOpacity(0));
   // A plain property's gradient opacity multiplies the extinction (not in a
   // projection, which reads the opacity alone).
-  auto* volumeMapper = vtkVolumeMapper::SafeDownCast(volume->GetMapper());
-  vtkTyndallProjection projection;
-  projection.Read(volumeMapper, property);
-  vtkPiecewiseFunction* gradientOpacity = !medium && !projection.Enabled() &&
+  vtkPiecewiseFunction* gradientOpacity = !medium && !this->Projection.Enabled() &&
       !this->GetLinearExtinction() && vtkTyndallVolumeSettings::HasGradientOpacity(property)
     ? property->GetGradientOpacity(0)
     : nullptr;
@@ -625,19 +632,11 @@ double vtkTyndallGridMedium::GradientOpacityAt(const double p[3]) const
   {
     return 1.0;
   }
-  double sum = 0.0;
+  double g[3], sum = 0.0;
+  this->IndexDifferences(p, g); // 0 at missing data: no gradient
   for (int a = 0; a < 3; ++a)
   {
-    double plus[3] = { p[0], p[1], p[2] }, minus[3] = { p[0], p[1], p[2] };
-    plus[a] += 1.0;
-    minus[a] -= 1.0;
-    const double d =
-      0.5 * (this->FieldScalar(plus) - this->FieldScalar(minus)) * this->GradientToVoxel[a];
-    if (std::isnan(d))
-    {
-      sum = 0.0; // a difference that meets missing data: no gradient
-      break;
-    }
+    const double d = g[a] * this->GradientToVoxel[a];
     sum += d * d;
   }
   return this->Table.GradientOpacityAt(std::sqrt(sum));

@@ -308,6 +308,9 @@ private:
   bool UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter);
   bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
   bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
+  // The central differences of FieldScalar() one sample apart along each
+  // index axis at p, per sample; 0 (and false) where one meets missing data.
+  bool IndexDifferences(const double p[3], double g[3]) const;
   // The sampler of the scalars' value type for FieldScalar() (after a
   // change of the scalars or of GetNearest()).
   void MakeField();

@@ -1,6 +1,7 @@
 #include "vtkTyndallShading.h"
 
 #include "vtkParticipatingMediumProperty.h"
+#include "vtkTyndallProjection.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
@@ -12,12 +13,10 @@ void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* propert
 {
   // Every blend mode but the projections draws the medium (the isosurface
   // and slice modes as composite, with a warning): shaded.
-  int blend = mapper ? mapper->GetBlendMode() : vtkVolumeMapper::COMPOSITE_BLEND;
-  const bool projection = blend == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ||
-    blend == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
-    blend == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blend == vtkVolumeMapper::ADDITIVE_BLEND;
+  vtkTyndallProjection projection;
+  projection.Read(mapper, property);
   this->On = property && !vtkParticipatingMediumProperty::SafeDownCast(property) &&
-    property->GetShade(0) && !projection;
+    property->GetShade(0) && !projection.Enabled();
   if (property)
   {
     this->Ambient = property->GetAmbient(0);
