@@ -1,9 +1,10 @@
-"""Renders the documentation's gradient-shading picture: VTK's CT head
-(../shared/data/volumes/headsq) with a plain vtkVolumeProperty, Shade on,
-lit by one scene light from the upper left, side by side: VTK 9.1's
-vtkGPUVolumeRayCastMapper, Tyndall's mapper with the method None (VTK's
-picture), Tyndall with the maps' shadows (AdaptiveETM, the default) and
-with brute-force shadows.
+"""Renders the documentation's gradient-shading and isosurface pictures:
+VTK's CT head (../shared/data/volumes/headsq) with a plain vtkVolumeProperty,
+Shade on, lit by one scene light from the upper left, side by side: VTK
+9.1's vtkGPUVolumeRayCastMapper, Tyndall's mapper with the method None
+(VTK's picture), Tyndall with the maps' shadows (AdaptiveETM, the default)
+and with brute-force shadows. shaded-ct.png: the composite blend mode;
+isosurface-ct.png: the isosurface blend mode, skin (translucent) and bone.
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
         Documentation/scripts/shaded_ct_picture.py Documentation/images
@@ -91,14 +92,33 @@ def grab():
     return image.GetOutput()
 
 
-row = vtkImageAppend()
-row.SetAppendAxis(0)
-row.AddInputData(grab())
-volume.SetMapper(tyndall)
-for method in ("None", "AdaptiveETM", "BruteForce"):
-    getattr(tyndall, "SetTransmittanceMethodTo" + method)()
+def picture(name):
+    """Writes the row of the four renderings to <output>/<name>."""
+    row = vtkImageAppend()
+    row.SetAppendAxis(0)
+    volume.SetMapper(vtk_mapper)
     row.AddInputData(grab())
-writer = vtkPNGWriter()
-writer.SetInputConnection(row.GetOutputPort())
-writer.SetFileName(sys.argv[1] + "/shaded-ct.png")
-writer.Write()
+    volume.SetMapper(tyndall)
+    for method in ("None", "AdaptiveETM", "BruteForce"):
+        getattr(tyndall, "SetTransmittanceMethodTo" + method)()
+        row.AddInputData(grab())
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(row.GetOutputPort())
+    writer.SetFileName(sys.argv[1] + "/" + name)
+    writer.Write()
+
+
+picture("shaded-ct.png")
+
+# The isosurface blend mode: skin at 600 (opacity 0.4), bone at 1400 (opaque).
+for mapper in (vtk_mapper, tyndall):
+    mapper.SetBlendModeToIsoSurface()
+prop.GetIsoSurfaceValues().SetValue(0, 600.0)
+prop.GetIsoSurfaceValues().SetValue(1, 1400.0)
+color.RemoveAllPoints()
+color.AddRGBPoint(600.0, 0.9, 0.6, 0.5)
+color.AddRGBPoint(1400.0, 1.0, 1.0, 0.9)
+opacity.RemoveAllPoints()
+opacity.AddPoint(600.0, 0.4)
+opacity.AddPoint(1400.0, 1.0)
+picture("isosurface-ct.png")

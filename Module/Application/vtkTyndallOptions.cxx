@@ -145,11 +145,15 @@ const Spec kOptions[] = {
     "single-scattering", "Scattering", Both,
     "single-scattering (colour = albedo) or emission-absorption (colour = emitted colour, as "
     "vtkGPUVolumeRayCastMapper)" },
-  { "blend-mode", "", Kind::Choice, 0, 0, false, "composite|maximum|minimum|average|additive", "B",
-    "composite", "Scattering", Both,
+  { "blend-mode", "", Kind::Choice, 0, 0, false,
+    "composite|maximum|minimum|average|additive|isosurface", "B", "composite", "Scattering", Both,
     "composite draws the medium; maximum, minimum and average intensity and additive project "
     "the volume's scalars as vtkGPUVolumeRayCastMapper does (unlit; the colour and opacity "
-    "functions of the preset)" },
+    "functions of the preset); isosurface draws the surfaces of --iso-values, lit and "
+    "shadowed" },
+  { "iso-values", "", Kind::Text, 0, 0, false, "", "V,V,...", "", "Scattering", Both,
+    "the scalar values whose surfaces --blend-mode isosurface draws (at most 16, comma-separated; "
+    "their colour and opacity are the preset's at each value)" },
   { "coefficients", "", Kind::Integer, 1, 16, false, "", "N", "8", "Scattering", Both,
     "series coefficients per map texel", KeyMode::Add, "+=", "-_", 1.0 },
   { "map-size", "", Kind::Integer, 16, 4096, false, "", "N", "256", "Scattering", Both,

@@ -6,6 +6,7 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkContourValues.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkCullerCollection.h"
@@ -36,6 +37,7 @@
 #include "vtkTransferFunctionPresets.h"
 #include "vtkTransmittanceParticleMapper.h"
 #include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallIsosurfaces.h"
 #include "vtkTyndallOptions.h"
 #include "vtkVolume.h"
 #include "vtkVolumeFileReader.h"
@@ -46,6 +48,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkTyndallSceneBuilder);
@@ -140,6 +144,11 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   }
   this->DefaultScene = !*this->Options->GetInput();
   this->BadOptions = false;
+  if (!this->ReadIsoValues())
+  {
+    this->BadOptions = true;
+    return false;
+  }
   // The defaults that depend on the scene become the options' values, so
   // that the viewer's keys step from what is shown.
   if (!this->Options->IsSet("anisotropy"))
@@ -215,6 +224,33 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
     return false;
   }
   renderer->ResetCameraClippingRange();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::ReadIsoValues()
+{
+  this->IsoValues.clear();
+  const std::string text = this->Options->GetText("iso-values");
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    const double value = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(value))
+    {
+      vtkErrorMacro(<< "--iso-values " << text << ": \"" << item << "\" is not a finite number.");
+      return false;
+    }
+    this->IsoValues.push_back(value);
+  }
+  if (this->IsoValues.size() > static_cast<size_t>(vtkTyndallIsosurfaces::MaximumCount))
+  {
+    vtkErrorMacro(<< "--iso-values: " << this->IsoValues.size() << " values; at most "
+                  << vtkTyndallIsosurfaces::MaximumCount << ".");
+    return false;
+  }
   return true;
 }
 
@@ -638,7 +674,8 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
 {
   vtkTyndallOptions* o = this->Options;
   mapper->SetTransmittanceMethod(o->GetChoice("method"));
-  static_assert(vtkVolumeMapper::ADDITIVE_BLEND == 4, "--blend-mode's choices are VTK's order");
+  static_assert(vtkVolumeMapper::ADDITIVE_BLEND == 4 && vtkVolumeMapper::ISOSURFACE_BLEND == 5,
+    "--blend-mode's choices are VTK's order");
   mapper->SetBlendMode(o->GetChoice("blend-mode"));
   mapper->SetNumberOfCoefficients(static_cast<int>(o->GetNumber("coefficients")));
   mapper->SetTransmittanceMapSize(static_cast<int>(o->GetNumber("map-size")));
@@ -672,6 +709,11 @@ void vtkTyndallSceneBuilder::ApplyMediumOptions(vtkParticipatingMediumProperty* 
   }
   medium->SetLightScale(
     o->IsSet("light-scale") ? o->GetNumber("light-scale") : 4.0 * vtkMath::Pi());
+  medium->GetIsoSurfaceValues()->SetNumberOfContours(static_cast<int>(this->IsoValues.size()));
+  for (size_t i = 0; i < this->IsoValues.size(); ++i)
+  {
+    medium->GetIsoSurfaceValues()->SetValue(static_cast<int>(i), this->IsoValues[i]);
+  }
   medium->SetSceneShadows(!o->GetFlag("no-scene-shadows"));
   medium->SetSceneCompositing(!o->GetFlag("no-scene-compositing"));
 }

@@ -144,6 +144,7 @@ protected:
   vtkTyndallOptions* Options = nullptr;
   bool DefaultScene = true;
   bool BadOptions = false;
+  std::vector<double> IsoValues; // --iso-values (ReadIsoValues())
   std::string TransferFunctionDescription;
   std::string ProgressLabel;
   std::string ReadNotes;
@@ -164,6 +165,9 @@ private:
   bool Update(vtkAlgorithm* source);
   bool ReadTransferFunctionFile();
   bool LoadMedium();
+  // Parses --iso-values into IsoValues; false (with an error) for a value
+  // that is not a finite number or more than vtkTyndallIsosurfaces allows.
+  bool ReadIsoValues();
   bool ChooseTransferFunction();
   // The --detail options: the property's DetailNoise (null without --detail).
   void ApplyDetail();

@@ -17,7 +17,9 @@
  *   distance must be positive);
  * - GetRGBTransferFunction(), or GetGrayTransferFunction() when
  *   GetColorChannels() is 1: the single-scattering albedo, or the emitted
- *   colour in the emission-absorption model.
+ *   colour in the emission-absorption model;
+ * - GetIsoSurfaceValues(), when the mapper's blend mode is VTK's isosurface
+ *   mode (vtkTyndallIsosurfaces): the surfaces drawn, lit by scattering.
  *
  * VTK's gradient shading (Shade, Ambient, Diffuse, Specular,
  * SpecularPower), gradient opacity, interpolation type and the settings of

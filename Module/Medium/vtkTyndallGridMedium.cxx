@@ -116,6 +116,13 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
   auto* volumeMapper = volume ? vtkVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
   this->Projection.Read(volumeMapper, property);
   this->Shading.Read(volumeMapper, property);
+  std::string isoError;
+  if (!this->Isosurfaces.Read(volumeMapper, property, isoError))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot draw the volume's isosurfaces: " << isoError);
+    this->Valid = false;
+    return false;
+  }
   this->Valid = this->UpdateScalars(volume, reporter) &&
     this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
     this->UpdateTable(volume, reporter);
@@ -517,9 +524,10 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     this->FiniteRange[0], this->FiniteRange[1], double(this->GetLinearExtinction()) };
   identify(extinction, property->GetScalarOpacity(0));
   // A plain property's gradient opacity multiplies the extinction (not in a
-  // projection, which reads the opacity alone).
+  // projection, which reads the opacity alone, nor for isosurfaces).
   vtkPiecewiseFunction* gradientOpacity = !medium && !this->Projection.Enabled() &&
-      !this->GetLinearExtinction() && vtkTyndallVolumeSettings::HasGradientOpacity(property)
+      !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() &&
+      vtkTyndallVolumeSettings::HasGradientOpacity(property)
     ? property->GetGradientOpacity(0)
     : nullptr;
   identify(extinction, gradientOpacity);
@@ -528,6 +536,10 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     // The change per average voxel depends on the spacings' ratios.
     extinction.insert(extinction.end(), this->GradientToVoxel, this->GradientToVoxel + 3);
   }
+  // The isosurfaces are what the light meets instead of the medium.
+  extinction.push_back(double(this->Isosurfaces.Enabled()));
+  const std::vector<double>& isoValues = this->Isosurfaces.GetValues();
+  extinction.insert(extinction.end(), isoValues.begin(), isoValues.end());
   const bool gray = property->GetColorChannels(0) == 1;
   std::vector<double> key = extinction;
   key.push_back(double(gray));
@@ -640,6 +652,72 @@ double vtkTyndallGridMedium::GradientOpacityAt(const double p[3]) const
     sum += d * d;
   }
   return this->Table.GradientOpacityAt(std::sqrt(sum));
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::IsoValue(const double p[3], bool clip, double& value) const
+{
+  if (clip && !this->Clip.InsideIndex(p))
+  {
+    return false;
+  }
+  value = this->FieldScalar(p);
+  return !std::isnan(value);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::IsoSample(
+  const double p0[3], const double p1[3], double dt, Point& point, double& first) const
+{
+  double v0, v1, rgb[3], alpha;
+  if (!this->IsoValue(p0, true, v0) || !this->IsoValue(p1, true, v1) ||
+    !this->Isosurfaces.Composite(this->Table, v0, v1, rgb, alpha, first) || !(alpha > 0.0))
+  {
+    return false;
+  }
+  alpha = std::min(alpha, vtkTyndallIsosurfaces::MaximumOpacity);
+  point.Extinction = -std::log1p(-alpha) / dt;
+  for (int c = 0; c < 3; ++c)
+  {
+    point.Albedo[c] = rgb[c] / alpha;
+    point.Emission[c] = 0.0;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::OpticalDepth(const double o[3], const double d[3], double t0,
+  double t1, double step, double maxDepth, bool clip, const PathCache* cache, Work* work) const
+{
+  if (!this->Isosurfaces.Enabled())
+  {
+    return vtkTyndallMedium::OpticalDepth(o, d, t0, t1, step, maxDepth, clip, cache, work);
+  }
+  if (!ClipToBox(o, d, this->BoxLow, this->BoxHigh, t0, t1))
+  {
+    return 0.0;
+  }
+  // The steps of the base class's march (n equal steps over [t0, t1]), each
+  // read at its two ends.
+  const int n = static_cast<int>(std::max(1.0, std::ceil((t1 - t0) / step)));
+  const double dt = (t1 - t0) / n;
+  const bool clipped = clip && this->Clip.Enabled();
+  double tau = 0.0, v0 = 0.0;
+  bool valid0 = false;
+  for (int m = 0; m <= n && tau <= maxDepth; ++m)
+  {
+    const double t = t0 + m * dt;
+    const double q[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+    double v1;
+    const bool valid1 = this->IsoValue(q, clipped, v1);
+    if (valid0 && valid1)
+    {
+      tau += this->Isosurfaces.OpticalDepth(this->Table, v0, v1);
+    }
+    v0 = v1;
+    valid0 = valid1;
+  }
+  return tau;
 }
 
 //------------------------------------------------------------------------------

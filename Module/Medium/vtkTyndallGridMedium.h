@@ -34,7 +34,9 @@
  *   vtkVolumeProperty with nearest interpolation (VTK's default; GetNearest());
  * - the mapper's blend mode (vtkTyndallProjection): a projection (maximum,
  *   minimum, average intensity, additive) is drawn as VTK draws it, the
- *   composite mode as a medium.
+ *   composite mode as a medium; the isosurface mode (vtkTyndallIsosurfaces)
+ *   draws the property's iso values as surfaces, which are what the light
+ *   meets too (OpticalDepth(), IsoSample()).
  *
  * "Field index" coordinates name the samples: index (i, j, k) is the
  * sample (point or cell centre) i, j, k from the first one; the medium
@@ -51,6 +53,7 @@
 #include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkTimeStamp.h"            // For vtkTimeStamp
 #include "vtkTyndallClipRegion.h"    // For the clip region
+#include "vtkTyndallIsosurfaces.h"   // For the isosurfaces
 #include "vtkTyndallMedium.h"        // For the interface
 #include "vtkTyndallProjection.h"    // For the projection
 #include "vtkTyndallShading.h"       // For the shading
@@ -180,6 +183,31 @@ public:
 
   /// A plain property's gradient shading (Enabled() with Shade on, composite).
   const vtkTyndallShading& GetShading() const { return this->Shading; }
+
+  /// The mapper's isosurface blend mode (Enabled() for one).
+  const vtkTyndallIsosurfaces& GetIsosurfaces() const { return this->Isosurfaces; }
+
+  /**
+   * The isosurfaces (GetIsosurfaces()) a camera ray's step from the field
+   * index point p0 to p1, of world length dt, crosses: their composite
+   * (vtkTyndallIsosurfaces::Composite()) as an extinction over the step,
+   * -ln(1 - alpha) / dt, and a colour (the premultiplied colour over alpha),
+   * and where in the step the first surface lies (0..1: `first`); false
+   * when it crosses none. A step with an end that is clipped away
+   * or missing (NaN) crosses nothing; the ends are clamped to the box (the
+   * camera rays' steps lie in it).
+   */
+  bool IsoSample(
+    const double p0[3], const double p1[3], double dt, Point& point, double& first) const;
+
+  /**
+   * vtkTyndallMedium: the optical depth along a ray; with isosurfaces
+   * (GetIsosurfaces()) the depth of the surfaces its steps cross
+   * (vtkTyndallIsosurfaces::OpticalDepth(), the steps' ends as IsoSample()
+   * reads them), else the base class's march.
+   */
+  double OpticalDepth(const double o[3], const double d[3], double t0, double t1, double step,
+    double maxDepth, bool clip, const PathCache* cache, Work* work) const override;
 
   /**
    * The scalar's gradient at the field index point p, per world unit in
@@ -311,6 +339,9 @@ private:
   // The central differences of FieldScalar() one sample apart along each
   // index axis at p, per sample; 0 (and false) where one meets missing data.
   bool IndexDifferences(const double p[3], double g[3]) const;
+  // The scalar at the field index point p for an isosurface step's end
+  // (IsoSample()); false where p is clipped away (with `clip`) or missing.
+  bool IsoValue(const double p[3], bool clip, double& value) const;
   // The sampler of the scalars' value type for FieldScalar() (after a
   // change of the scalars or of GetNearest()).
   void MakeField();
@@ -339,6 +370,7 @@ private:
   vtkTyndallClipRegion Clip;
   vtkTyndallProjection Projection;
   vtkTyndallShading Shading;
+  vtkTyndallIsosurfaces Isosurfaces;
   bool Nearest = false;
   double GradientToVoxel[3] = { 1.0, 1.0, 1.0 };
   std::vector<float> EmissionValues;

@@ -55,8 +55,8 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
 {
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
-    !medium->GetProjection().Enabled() && !property->GetDetailNoise() &&
-    medium->GetNumberOfNaNScalars() == 0 && !medium->GetClip() &&
+    !medium->GetProjection().Enabled() && !medium->GetIsosurfaces().Enabled() &&
+    !property->GetDetailNoise() && medium->GetNumberOfNaNScalars() == 0 && !medium->GetClip() &&
     !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray();
 }
 
@@ -137,7 +137,9 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
     return false;
   }
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
-  if (!this->Detail.Update(*this->Medium, property ? property->GetDetailNoise() : nullptr, reporter,
+  // Isosurfaces are the grid's (vtkTyndallVolumeSettings names the detail not drawn).
+  const bool detail = property && !this->Medium->GetIsosurfaces().Enabled();
+  if (!this->Detail.Update(*this->Medium, detail ? property->GetDetailNoise() : nullptr, reporter,
         property ? property->GetDetailFilterWidth() : 0.0))
   {
     return false;
@@ -353,6 +355,10 @@ void vtkTyndallSceneReader::UpdateGuests(
     else if (g.Medium->GetGradientOpacity())
     {
       reason = "has gradient opacity";
+    }
+    else if (g.Medium->GetIsosurfaces().Enabled())
+    {
+      reason = "is drawn as isosurfaces";
     }
     else if (otherProperty && otherProperty->GetDetailNoise())
     {

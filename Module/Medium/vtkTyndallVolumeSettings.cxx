@@ -21,9 +21,8 @@ const char* NotDrawnBlendMode(int mode)
     case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
     case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
     case vtkVolumeMapper::ADDITIVE_BLEND:
-      return nullptr;
     case vtkVolumeMapper::ISOSURFACE_BLEND:
-      return "isosurface";
+      return nullptr;
     case vtkVolumeMapper::SLICE_BLEND:
       return "slice";
     default:
@@ -98,6 +97,12 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
       vtkTyndallProjection::GetModeName(projection.GetMode()) +
       " blend mode (the grid's scalars are projected)");
   }
+  if (mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND && medium &&
+    medium->GetDetailNoise())
+  {
+    notDrawn.push_back("procedural detail in the isosurface blend mode (the grid's surfaces are "
+                       "drawn)");
+  }
   if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes() &&
     HasTranslucentGeometry(renderer))
   {
@@ -119,6 +124,12 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   {
     notDrawn.push_back(std::string("gradient opacity in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
+  }
+  // Gradient opacity is not read in the isosurface blend mode (vtkTyndallIsosurfaces).
+  if (mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND &&
+    HasGradientOpacity(property))
+  {
+    notDrawn.push_back("gradient opacity in the isosurface blend mode (ignored)");
   }
   if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {

@@ -7,10 +7,10 @@
  * setting of the volume's mapper, its property and the renderer that VTK
  * draws and Tyndall does not yet (Documentation/mapper.md, "Compatibility
  * with VTK's mapper"), with what Tyndall draws instead:
- * - the isosurface and slice blend modes (drawn as composite; the
- *   projections are drawn, vtkTyndallProjection);
+ * - the slice blend mode (drawn as composite; the projections are drawn,
+ *   vtkTyndallProjection, and the isosurface mode, vtkTyndallIsosurfaces);
  * - procedural detail in a projection blend mode (the grid's scalars are
- *   projected);
+ *   projected) or the isosurface blend mode (the grid's surfaces are drawn);
  * - the renderer's depth peeling for volumes, with translucent geometry in
  *   the renderer (not supported);
  * and, for a plain vtkVolumeProperty (VTK's meaning; a
@@ -18,8 +18,8 @@
  * meaning):
  * - gradient shading in a projection blend mode (unshaded; drawn in the
  *   others: vtkTyndallShading);
- * - gradient opacity in a projection blend mode (ignored; drawn in the
- *   others: vtkTyndallGridMedium::GetGradientOpacity());
+ * - gradient opacity in a projection or the isosurface blend mode
+ *   (ignored; drawn in the others: vtkTyndallGridMedium::GetGradientOpacity());
  * - 2-D transfer functions (TF_2D: the 1-D functions are used).
  * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
  * vtkTyndallGridMedium::GetNearest().)

@@ -157,10 +157,22 @@ private:
     double* L = radiance;
     for (int m = 0; m < n; ++m)
     {
-      const double t = t0 + (m + 0.5) * dt;
+      // The step's middle; for isosurfaces where its first surface lies, their
+      // normal at the step's end (where VTK shades them).
+      double t = t0 + (m + 0.5) * dt;
+      double tNormal = t;
       Point point;
-      const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
-      const bool dense = this->CameraMedium(rays, t, s.Footprint.At(x), point);
+      bool dense;
+      if (s.Isosurfaced)
+      {
+        dense = this->IsoSample(rays, t0 + m * dt, dt, point, t);
+        tNormal = t0 + (m + 1) * dt;
+      }
+      else
+      {
+        const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
+        dense = this->CameraMedium(rays, t, s.Footprint.At(x), point);
+      }
       double sigmaC[3]; // per channel
       for (int c = 0; c < 3; ++c)
       {
@@ -184,7 +196,7 @@ private:
         continue;
       }
       double J[3];
-      this->Source(point, origin, w, t, rays, J);
+      this->Source(point, origin, w, t, tNormal, rays, J);
       // The step's medium is constant: integrate it exactly.
       for (int c = 0; c < 3; ++c)
       {
@@ -200,16 +212,16 @@ private:
   }
 
   // A plain property's gradient shading (vtkTyndallShading; GPU twin:
-  // tyndallSurfaceShading()) of the sample `point` at the world point x, the
-  // distance t along the camera ray (direction w, images `rays`): each
-  // light shadowed by its transmittance through the media.
-  void Shade(const Point& point, const double x[3], const double w[3], double t,
+  // tyndallSurfaceShading()) of the sample `point` at the world point x, its
+  // normal taken at the distance tNormal along the camera ray (direction w,
+  // images `rays`): each light shadowed by its transmittance through the media.
+  void Shade(const Point& point, const double x[3], const double w[3], double tNormal,
     const LocalRays& rays, double J[3]) const
   {
     const Scene& s = *this->S;
     const vtkTyndallShading& shading = s.Shaded->GetShading();
     double p[3], n[3];
-    rays.At(0, t, p);
+    rays.At(0, tNormal, p);
     s.Shaded->FieldGradient(p, n);
     const double length = vtkMath::Norm(n);
     for (int c = 0; c < 3; ++c)
@@ -269,6 +281,19 @@ private:
     }
   }
 
+  // The isosurfaces (vtkTyndallIsosurfaces; GPU twin: tyndallIsoCameraSample())
+  // the camera ray's step from the distance t0, of length dt, crosses; `t`:
+  // where the first lies.
+  bool IsoSample(const LocalRays& rays, double t0, double dt, Point& point, double& t) const
+  {
+    double p0[3], p1[3], first;
+    rays.At(0, t0, p0);
+    rays.At(0, t0 + dt, p1);
+    const bool crossed = this->S->Isosurfaced->IsoSample(p0, p1, dt, point, first);
+    t = t0 + first * dt;
+    return crossed;
+  }
+
   // What the camera rays see at the distance t: the extinction of the
   // camera media summed, with their colours and emission colours (per unit
   // extinction) mixed in proportion to their extinctions (GPU twin:
@@ -306,9 +331,9 @@ private:
   }
 
   // The source term J of a sample `point` at the distance t along the camera
-  // ray origin + t w (its images `rays`).
+  // ray origin + t w (its images `rays`); a shaded sample's normal at tNormal.
   void Source(const Point& point, const double origin[3], const double w[3], double t,
-    const LocalRays& rays, double J[3]) const
+    double tNormal, const LocalRays& rays, double J[3]) const
   {
     const Scene& s = *this->S;
     const double* color = point.Albedo;
@@ -320,7 +345,7 @@ private:
     const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
     if (s.Shaded)
     {
-      this->Shade(point, x, w, t, rays, J);
+      this->Shade(point, x, w, tNormal, rays, J);
       return;
     }
     s.Source(

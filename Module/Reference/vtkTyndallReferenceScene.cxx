@@ -87,6 +87,7 @@ void vtkTyndallReferenceScene::SetUpMedia(const vtkTyndallSceneReader& reader)
   const vtkTyndallGridMedium& grid = reader.GetMedium();
   this->Projected = grid.GetProjection().Enabled() ? &grid : nullptr;
   this->Shaded = grid.GetShading().Enabled() ? &grid : nullptr;
+  this->Isosurfaced = grid.GetIsosurfaces().Enabled() ? &grid : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -107,6 +107,8 @@ public:
    * (vtkTyndallShading; Media's first then), else null.
    */
   const vtkTyndallGridMedium* Shaded = nullptr;
+  /// The volume's grid when its mapper draws isosurfaces (vtkTyndallIsosurfaces), else null.
+  const vtkTyndallGridMedium* Isosurfaced = nullptr;
   /// Whether this medium is drawn by another volume's camera rays
   /// (vtkTyndallSceneReader::GetDrawnBy()): it draws nothing itself.
   bool DrawnByAnother = false;

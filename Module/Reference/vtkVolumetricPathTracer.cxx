@@ -727,6 +727,13 @@ bool vtkVolumetricPathTracer::RenderImage(
                      "is a medium).");
     return false;
   }
+  if (scene.Isosurfaced)
+  {
+    vtkErrorMacro(<< "The volume's mapper draws it in the isosurface blend mode: surfaces, not a "
+                     "medium the path tracer can scatter in (vtkSingleScatteringReference draws "
+                     "them).");
+    return false;
+  }
   if (scene.Projected)
   {
     vtkErrorMacro(<< "The volume's mapper draws it in the "

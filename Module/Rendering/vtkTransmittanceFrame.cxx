@@ -318,6 +318,11 @@ double vtkTransmittanceFrame::GetStepLength(double nearestPixel) const
   {
     return this->Integrator.SampleDistance;
   }
+  if (this->Medium && this->Medium->GetIsosurfaces().Enabled())
+  {
+    // VTK's automatic step: its surfaces are where VTK finds them.
+    return this->MinimumSpacing;
+  }
   if (this->Detail && this->Detail->Enabled())
   {
     // The midpoint rule's error on the waves the camera rays evaluate.

@@ -172,7 +172,8 @@ public:
 
   /**
    * The camera-ray step: SampleDistance, or half the smallest spacing and
-   * the medium's finest feature (vtkTyndallMedium::GetFinestFeature()).
+   * the medium's finest feature (vtkTyndallMedium::GetFinestFeature());
+   * for isosurfaces the smallest spacing (VTK's automatic step).
    * With procedural detail, at most half the smallest spacing, as long as
    * the midpoint rule's error on the waves the camera rays evaluate allows
    * (vtkTyndallDetailMedium::GetCameraStep() at `nearestPixel`, the

@@ -29,9 +29,11 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
   variant.Clip = grid.GetClip() != nullptr;
   variant.Chromatic = grid.GetParameters().GetChromatic();
   variant.GradientOpacity = grid.GetGradientOpacity();
-  // Emission from a separate array glows where the extinction is 0: no
-  // block is empty then.
-  variant.SkipEmpty = variant.SkipEmpty && !grid.GetEmissionFromArray();
+  variant.Isosurfaces = grid.GetIsosurfaces().Enabled();
+  variant.IsoCount = static_cast<int>(grid.GetIsosurfaces().GetValues().size());
+  // Emission from a separate array glows where the extinction is 0, and
+  // isosurfaces lie where the table may be empty: no block is empty then.
+  variant.SkipEmpty = variant.SkipEmpty && !grid.GetEmissionFromArray() && !variant.Isosurfaces;
 }
 
 //------------------------------------------------------------------------------
@@ -42,7 +44,8 @@ void vtkTransmittanceGridAdapter::DeclareColorSwitches(
   const vtkTyndallMediumParameters& parameters = grid.GetParameters();
   const bool emits = parameters.HasEmission && parameters.EmissionScale > 0.0;
   variant.EmissionArray = emits && grid.GetEmissionFromArray();
-  variant.Emission = emits && !variant.EmissionArray;
+  // Isosurfaces emit nothing (vtkTyndallGridMedium::IsoSample()).
+  variant.Emission = emits && !variant.EmissionArray && !grid.GetIsosurfaces().Enabled();
 }
 
 //------------------------------------------------------------------------------
@@ -86,6 +89,13 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
     }
     program->SetUniform3f("gradientBoxToVoxel", toVoxel);
     program->SetUniformf("gradientToTable", static_cast<float>(1.0 / table.GradientMaximum));
+  }
+  const std::vector<double>& isoValues = grid.GetIsosurfaces().GetValues();
+  if (grid.GetIsosurfaces().Enabled() && !isoValues.empty())
+  {
+    // Declared only by the isosurface variant.
+    const std::vector<float> values(isoValues.begin(), isoValues.end());
+    program->SetUniform1fv("isoValues", static_cast<int>(values.size()), values.data());
   }
   if (vtkTextureObject* emission = textures.GetEmissionTexture())
   {

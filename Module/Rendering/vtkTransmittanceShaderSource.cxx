@@ -5,6 +5,7 @@
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallClipRegion.h"
 #include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallIsosurfaces.h"
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkTyndallTransferTable.h"
@@ -73,6 +74,9 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
   define("SHADING", variant.Shading ? 1 : 0);
   define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
+  define("ISOSURFACES", variant.Isosurfaces ? 1 : 0);
+  define("ISO_COUNT", variant.IsoCount);
+  define("ISO_MAX_OPACITY", vtkTyndallIsosurfaces::MaximumOpacity);
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
   using P = vtkTyndallProjection;
   define("PROJECTION", variant.Projection);

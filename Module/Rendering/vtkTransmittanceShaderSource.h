@@ -58,6 +58,9 @@
  *   row TYNDALL_TABLE_GRADIENT_ROW (TYNDALL_TABLE_SIZE entries);
  * - TYNDALL_SHADING (RAY_CAST only): a plain property's gradient shading
  *   (vtkTyndallShading) is the camera samples' source;
+ * - TYNDALL_ISOSURFACES: VTK's isosurface blend mode (vtkTyndallIsosurfaces):
+ *   the camera samples (RAY_CAST) and the light (every pass) meet the
+ *   TYNDALL_ISO_COUNT surfaces a step crosses instead of the medium;
  * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
  *   one of TYNDALL_PROJECTION_MAXIMUM .. TYNDALL_PROJECTION_ADDITIVE
  *   (vtkTyndallProjection::Modes).
@@ -166,6 +169,9 @@ public:
     bool Shading = false;
     /// A plain property's gradient opacity (vtkTyndallGridMedium::GetGradientOpacity()).
     bool GradientOpacity = false;
+    /// VTK's isosurface blend mode (vtkTyndallIsosurfaces) and its number of iso values.
+    bool Isosurfaces = false;
+    int IsoCount = 0;
     /// Transmittance-function maps of a coloured extinction: one set per channel.
     bool ChannelMaps = false;
   };

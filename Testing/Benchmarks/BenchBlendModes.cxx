@@ -3,7 +3,8 @@
 // projections (maximum, minimum and average intensity, additive) and the
 // unshaded composite of a plain vtkVolumeProperty, and its gradient shading
 // (Shade on; Tyndall without shadows, the method None, and with the maps'
-// shadows: VTK draws none). Prints, per mode, the
+// shadows: VTK draws none), and the isosurface mode (three surfaces, Shade
+// on, without and with shadows). Prints, per mode, the
 // time of a frame of each mapper (the mean of N frames, each finished with
 // WaitForCompletion(), the two mappers alternating frame by frame in one
 // window so that both see the same load), their ratio, and the PSNR between
@@ -18,6 +19,7 @@
 // mode renders, never a timing).
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -143,7 +145,17 @@ int main(int argc, char* argv[])
     { "shaded, no shadows", vtkVolumeMapper::COMPOSITE_BLEND, 0.2, true,
       vtkTransmittanceVolumeMapper::NONE },
     { "shaded, AdaptiveETM", vtkVolumeMapper::COMPOSITE_BLEND, 0.2, true,
+      vtkTransmittanceVolumeMapper::ADAPTIVE_ETM },
+    { "iso, no shadows", vtkVolumeMapper::ISOSURFACE_BLEND, 1.0, true,
+      vtkTransmittanceVolumeMapper::NONE },
+    { "iso, AdaptiveETM", vtkVolumeMapper::ISOSURFACE_BLEND, 1.0, true,
       vtkTransmittanceVolumeMapper::ADAPTIVE_ETM } };
+  // The isosurface modes' surfaces: 45, 60 and 75 % of the range.
+  for (int i = 0; i < 3; ++i)
+  {
+    property->GetIsoSurfaceValues()->SetValue(
+      i, range[0] + (0.45 + 0.15 * i) * (range[1] - range[0]));
+  }
   for (const Mode& mode : modes)
   {
     opacity->RemoveAllPoints();

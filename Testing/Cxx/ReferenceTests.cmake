@@ -4,6 +4,7 @@
 vtk_add_test_cxx(TyndallReferenceCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestSingleScatteringReference.cxx
+  TestTyndallIsosurfaces.cxx
   TestVolumetricPathTracer.cxx
   TestVolumetricPathTracerScenes.cxx)
 vtk_add_test_cxx(TyndallReferenceCxxTests tests

@@ -3,6 +3,7 @@
 // rest of the render intact: an opaque actor beside the volume is still
 // drawn, and a valid volume renders again afterwards.
 #include "vtkActor.h"
+#include "vtkContourValues.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -192,6 +193,19 @@ int TestTransmittanceMapperBadInput(int, char*[])
           : s.first == "OctaveBuildUp"           ? defaults->GetOctaveBuildUp()
                                                  : defaults->GetLightScale());
     }
+    // A NaN iso value in the isosurface blend mode: the same.
+    mapper->SetBlendModeToIsoSurface();
+    property->GetIsoSurfaceValues()->SetValue(0, 2.0);
+    property->GetIsoSurfaceValues()->SetValue(1, nan);
+    observer->Clear();
+    window->Render();
+    Check(observer->GetError() &&
+        observer->GetErrorMessage().find("iso value 1") != std::string::npos &&
+        observer->GetErrorMessage().find("not a finite number") != std::string::npos,
+      "a NaN iso value: an error naming it");
+    Check(CountForeground(window) == withoutVolume, "a NaN iso value: nothing of the volume drawn");
+    property->GetIsoSurfaceValues()->SetNumberOfContours(0);
+    mapper->SetBlendModeToComposite();
   }
 
   // No lights: ambient and emission only, no error; here the volume is dark.

@@ -3,6 +3,7 @@
 // documented ranges; releasing graphics resources and destroying the window
 // leave no OpenGL error.
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -130,6 +131,15 @@ int TestTransmittanceMapperCaching(int, char*[])
   expect(true, "the opacity transfer function rebuilds");
   property->GetRGBTransferFunction()->AddRGBPoint(4.0, 1.0, 0.2, 0.1);
   expect(false, "the colour transfer function does not touch the maps");
+  mapper->SetBlendModeToIsoSurface();
+  property->GetIsoSurfaceValues()->SetValue(0, 0.5);
+  expect(true, "the isosurface blend mode rebuilds (the light meets the surfaces)");
+  property->GetIsoSurfaceValues()->SetValue(0, 0.6);
+  expect(true, "an iso value rebuilds");
+  property->GetRGBTransferFunction()->AddRGBPoint(3.0, 0.2, 1.0, 0.1);
+  expect(false, "the colour transfer function does not touch the isosurfaces' maps");
+  mapper->SetBlendModeToComposite();
+  expect(true, "back to composite rebuilds");
   volume->RotateZ(30.0);
   expect(true, "the volume's matrix rebuilds");
   mapper->SetInputData(tyndall_test::MakeCloud(24));

@@ -17,7 +17,10 @@
 // opaque sphere inside the volume), nearest interpolation (VTK's default,
 // close up), gradient shading (Shade on; against VTK without shadows, the
 // method None, and against the CPU reference with them), gradient opacity
-// (TestGPURayCastGradientOpacity), and an
+// (TestGPURayCastGradientOpacity), isosurfaces (TestGPURayCastIsosurface:
+// three values on the wavelet, shaded and not, under the headlight and a
+// scene light, and a CT's skin and bone; against VTK without shadows,
+// against the CPU reference with them), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
 // lights). The data are made here (a box of unsigned chars, VTK's wavelet);
 // with ../shared/data present, the CT head (headsq) too, else those scenes
@@ -29,6 +32,7 @@
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkImageShiftScale.h"
@@ -285,6 +289,56 @@ void UnlitAmbientShadedProperty(vtkVolumeProperty* property, const double range[
   property->SetAmbient(0.0);
 }
 
+// TestGPURayCastIsosurface's property: three iso values (at 45, 60 and 75 %
+// of the range) of opacity 0.2, 0.6 and 1 and their own colours, Shade on.
+void IsoProperty(vtkVolumeProperty* property, const double range[2])
+{
+  const double at[3] = { 0.45, 0.6, 0.75 };
+  const double opacities[3] = { 0.2, 0.6, 1.0 };
+  const double colors[3][3] = { { 1.0, 1.0, 1.0 }, { 0.0, 1.0, 1.0 }, { 0.0, 1.0, 0.0 } };
+  vtkNew<vtkColorTransferFunction> color;
+  vtkNew<vtkPiecewiseFunction> opacity;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double value = range[0] + at[i] * (range[1] - range[0]);
+    color->AddRGBPoint(value, colors[i][0], colors[i][1], colors[i][2]);
+    opacity->AddPoint(value, opacities[i]);
+    property->GetIsoSurfaceValues()->SetValue(i, value);
+  }
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->ShadeOn();
+}
+
+// IsoProperty unshaded (VTK draws the iso colours flat).
+void UnshadedIsoProperty(vtkVolumeProperty* property, const double range[2])
+{
+  IsoProperty(property, range);
+  property->ShadeOff();
+}
+
+// IsoProperty without the ambient term (see UnlitAmbientShadedProperty).
+void UnlitAmbientIsoProperty(vtkVolumeProperty* property, const double range[2])
+{
+  IsoProperty(property, range);
+  property->SetAmbient(0.0);
+}
+
+// A CT's skin (translucent) and bone (opaque), Shade on.
+void HeadIsoProperty(vtkVolumeProperty* property, const double range[2])
+{
+  IsoProperty(property, range);
+  property->GetIsoSurfaceValues()->SetNumberOfContours(0);
+  property->GetIsoSurfaceValues()->SetValue(0, 600.0);
+  property->GetIsoSurfaceValues()->SetValue(1, 1400.0);
+  property->GetScalarOpacity()->RemoveAllPoints();
+  property->GetScalarOpacity()->AddPoint(600.0, 0.3);
+  property->GetScalarOpacity()->AddPoint(1400.0, 1.0);
+  property->GetRGBTransferFunction()->RemoveAllPoints();
+  property->GetRGBTransferFunction()->AddRGBPoint(600.0, 0.9, 0.6, 0.5);
+  property->GetRGBTransferFunction()->AddRGBPoint(1400.0, 1.0, 1.0, 0.9);
+}
+
 // One directional scene light from the upper left instead of the headlight.
 void SceneLight(vtkRenderer* renderer, vtkVolume* volume)
 {
@@ -449,6 +503,14 @@ std::vector<Scene> Scenes()
     { "GradientOpacity-Box", MakeBox, GradientOpacityProperty, none, Tilted, true },
     { "GradientOpacity-ShadedHead", MakeHead, ShadedGradientOpacityProperty, none, Tilted, true,
       35.0, false, true },
+    { "Isosurface-Wavelet", MakeWavelet, IsoProperty, Blend(M::ISOSURFACE_BLEND), Tilted, true,
+      35.0, false, true },
+    { "Isosurface-WaveletUnshaded", MakeWavelet, UnshadedIsoProperty, Blend(M::ISOSURFACE_BLEND),
+      Tilted, true },
+    { "Isosurface-WaveletSceneLight", MakeWavelet, UnlitAmbientIsoProperty,
+      Blend(M::ISOSURFACE_BLEND), SceneLight, true, 35.0, false, true },
+    { "Isosurface-Head", MakeHead, HeadIsoProperty, Blend(M::ISOSURFACE_BLEND), Tilted, true, 35.0,
+      false, true },
     { "Head-MaximumIntensity", MakeHead,
       [](vtkVolumeProperty* p, const double r[2]) { RampProperty(p, r, 1.0); },
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },

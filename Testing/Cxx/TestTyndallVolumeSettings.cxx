@@ -4,9 +4,10 @@
 // never a silently different picture. Read through vtkTyndallSceneReader,
 // which both renderers use (no OpenGL):
 //
-// 0. VTK's projection blend modes are drawn (vtkTyndallProjection): not
-//    named; the isosurface and slice modes are, and procedural detail and
-//    gradient shading in a projection;
+// 0. VTK's projection blend modes (vtkTyndallProjection) and its
+//    isosurface mode (vtkTyndallIsosurfaces) are drawn: not named; the slice
+//    mode is, and procedural detail and gradient shading in a projection,
+//    gradient opacity in a projection or the isosurface mode;
 // 1. a plain vtkVolumeProperty at VTK's defaults (composite, shade off, no
 //    gradient opacity, TF_1D, nearest) gives no warning, nor linear, nor does a
 //    vtkParticipatingMediumProperty with Shade on and nearest interpolation (Tyndall's meaning);
@@ -138,23 +139,19 @@ int TestTyndallVolumeSettings(int, char*[])
   Check(scene.Read() == 0, "composite, shade off, no gradient opacity, TF_1D, linear: no warning");
 
   vtkSmartVolumeMapper* mapper = scene.Mapper;
-  // The projections are drawn (vtkTyndallProjection): nothing said.
+  // The projections (vtkTyndallProjection) and isosurfaces
+  // (vtkTyndallIsosurfaces) are drawn: nothing said.
   for (int mode :
     { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND,
-      vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, vtkVolumeMapper::ADDITIVE_BLEND })
+      vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, vtkVolumeMapper::ADDITIVE_BLEND,
+      vtkVolumeMapper::ISOSURFACE_BLEND })
   {
     mapper->SetBlendMode(mode);
-    Check(scene.Read() == 0, "a projection blend mode is drawn: no warning");
+    Check(scene.Read() == 0, "a projection or the isosurface blend mode is drawn: no warning");
   }
-  const std::pair<int, const char*> modes[] = { { vtkVolumeMapper::ISOSURFACE_BLEND,
-                                                  "isosurface blend mode" },
-    { vtkVolumeMapper::SLICE_BLEND, "slice blend mode" } };
-  for (const auto& mode : modes)
-  {
-    CheckSetting(
-      scene, mode.second, [&] { mapper->SetBlendMode(mode.first); },
-      [&] { mapper->SetBlendModeToComposite(); });
-  }
+  CheckSetting(
+    scene, "slice blend mode", [&] { mapper->SetBlendModeToSlice(); },
+    [&] { mapper->SetBlendModeToComposite(); });
   // Shading in a projection: VTK's projections are unshaded here.
   mapper->SetBlendModeToMaximumIntensity();
   CheckSetting(
@@ -181,6 +178,11 @@ int TestTyndallVolumeSettings(int, char*[])
   plain->DisableGradientOpacityOn();
   Check(scene.Read() == 0 && !scene.Reader.GetMedium().GetGradientOpacity(),
     "gradient opacity disabled: no warning, not read");
+  // Nor is it read for isosurfaces.
+  mapper->SetBlendModeToIsoSurface();
+  CheckSetting(
+    scene, "gradient opacity in the isosurface blend mode",
+    [&] { plain->DisableGradientOpacityOff(); }, [&] { plain->DisableGradientOpacityOn(); });
   mapper->SetBlendModeToComposite();
   plain->DisableGradientOpacityOff();
   Check(scene.Read() == 0 && scene.Reader.GetMedium().GetGradientOpacity(),
@@ -214,18 +216,20 @@ int TestTyndallVolumeSettings(int, char*[])
     [&] { scene.Renderer->UseDepthPeelingForVolumesOff(); });
 
   // Two at once: one warning naming both; a change of the set warns again.
-  mapper->SetBlendModeToIsoSurface();
+  mapper->SetBlendModeToSlice();
   plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
-  Check(scene.Read("isosurface blend mode") == 1 &&
+  Check(scene.Read("slice blend mode") == 1 &&
       scene.Log->Messages.front().find("2-D transfer functions") != std::string::npos &&
       scene.Log->Messages.size() == 1,
     "two settings: one warning naming both");
   plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
-  Check(scene.Read("isosurface blend mode") == 1 &&
+  Check(scene.Read("slice blend mode") == 1 &&
       scene.Log->Messages.front().find("2-D transfer functions") == std::string::npos,
     "one of them back to its default: warned again, naming the other");
-  // Shading in the isosurface blend mode (drawn as composite) is drawn.
+  // Shading in the slice (drawn as composite) and isosurface blend modes is drawn.
   plain->ShadeOn();
+  Check(scene.Read("gradient shading") == 0, "gradient shading in the slice mode: drawn");
+  mapper->SetBlendModeToIsoSurface();
   Check(scene.Read("gradient shading") == 0, "gradient shading in the isosurface mode: drawn");
   plain->ShadeOff();
   mapper->SetBlendModeToComposite();
@@ -276,6 +280,10 @@ int TestTyndallVolumeSettings(int, char*[])
   tyndall.Mapper->SetBlendModeToMinimumIntensity();
   Check(tyndall.Read("procedural detail in the minimum intensity blend mode") == 1,
     "procedural detail in a projection: named");
+  tyndall.Mapper->SetBlendModeToIsoSurface();
+  Check(tyndall.Read("procedural detail in the isosurface blend mode") == 1 &&
+      !tyndall.Reader.GetDetail().Enabled(),
+    "procedural detail with isosurfaces: named, not read");
   tyndall.Mapper->SetBlendModeToComposite();
   Check(tyndall.Read() == 0, "procedural detail in composite: no warning");
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -1,5 +1,6 @@
 #include "vtkTyndallVolumeRepresentation.h"
 
+#include "vtkContourValues.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
@@ -63,6 +64,20 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
   this->Medium->SetIndependentComponents(paraview->GetIndependentComponents());
+  // The Isosurface blend mode's values (ParaView's Isosurfaces property),
+  // copied only when they change.
+  vtkContourValues* values = paraview->GetIsoSurfaceValues();
+  vtkContourValues* medium = this->Medium->GetIsoSurfaceValues();
+  bool same = values->GetNumberOfContours() == medium->GetNumberOfContours();
+  for (int i = 0; same && i < values->GetNumberOfContours(); ++i)
+  {
+    same = values->GetValue(i) == medium->GetValue(i);
+  }
+  if (!same)
+  {
+    medium->DeepCopy(values);
+    this->Medium->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -259,6 +259,100 @@ float tyndallExtinction(vec3 x)
   return tyndallMedium(x, color, tableCoord);
 }
 
+// The scalar at the world point x, whose texture coordinate is `texel`, for
+// VTK's blend modes that read it (the projections, the isosurfaces): false
+// where x is clipped away or its data are missing (NaN).
+bool tyndallKeptScalar(vec3 x, vec3 texel, out float value)
+{
+  value = 0.0;
+#if TYNDALL_CLIP
+  if (tyndallClipped(x))
+  {
+    return false;
+  }
+#endif
+#if TYNDALL_MISSING_DATA
+  if (texture(validityTexture, texel).r < 0.999)
+  {
+    return false;
+  }
+#endif
+  value = texture(volumeTexture, texel).r;
+  return true;
+}
+
+// The opacity function at a scalar value, as VTK reads it (not corrected
+// for a step: the table's emission row holds it in a).
+float tyndallOpacityFunction(float value)
+{
+  return texture(transferTexture, vec2(value * scalarToTable.x + scalarToTable.y,
+                                    TYNDALL_TABLE_EMISSION_ROW)).a;
+}
+
+#if TYNDALL_ISOSURFACES
+// VTK's isosurface blend mode (vtkTyndallIsosurfaces, whose Composite() and
+// OpticalDepth() are the CPU twins): the scalar at a step's two ends; the
+// step crosses iso value s when exactly one end lies below s.
+uniform float isoValues[TYNDALL_ISO_COUNT > 0 ? TYNDALL_ISO_COUNT : 1]; // ascending
+
+// The scalar at x for a step's end: false where x lies outside the box
+// (beyond a thousandth of it), is clipped away or its data are missing.
+bool tyndallIsoValue(vec3 x, out float value)
+{
+  value = 0.0;
+  vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
+  if (any(lessThan(q, vec3(-1e-3))) || any(greaterThan(q, vec3(1.001))))
+  {
+    return false;
+  }
+  return tyndallKeptScalar(x, q * volumeTexScale + volumeTexShift, value);
+}
+
+// The surfaces a step from scalar v0 to v1 crosses, composited front to
+// back in the order the ray meets them: premultiplied colour, opacity (the
+// colour and opacity functions at each iso value; the opacity is the
+// emission row's a); `first`: where the first lies in the step, 0..1.
+vec4 tyndallIsoCrossings(float v0, float v1, out float first)
+{
+  vec4 sum = vec4(0.0);
+  first = -1.0;
+  for (int j = 0; j < TYNDALL_ISO_COUNT; ++j)
+  {
+    float s = isoValues[v1 >= v0 ? j : TYNDALL_ISO_COUNT - 1 - j];
+    if ((v0 < s) != (v1 < s))
+    {
+      first = first < 0.0 ? (s - v0) / (v1 - v0) : first;
+      float a = tyndallOpacityFunction(s);
+      vec3 c = texture(transferTexture,
+        vec2(s * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW)).rgb;
+      sum += (1.0 - sum.a) * vec4(a * c, a);
+    }
+  }
+  return sum;
+}
+
+// The extinction the light meets over the step of length dt centred at x
+// along dir: each surface crossed, -ln(1 - a(s)), spread over the step.
+float tyndallIsoExtinction(vec3 x, vec3 dir, float dt)
+{
+  float v0, v1;
+  if (!tyndallIsoValue(x - 0.5 * dt * dir, v0) || !tyndallIsoValue(x + 0.5 * dt * dir, v1))
+  {
+    return 0.0;
+  }
+  float tau = 0.0;
+  for (int j = 0; j < TYNDALL_ISO_COUNT; ++j)
+  {
+    float s = isoValues[j];
+    if ((v0 < s) != (v1 < s))
+    {
+      tau -= log(1.0 - min(tyndallOpacityFunction(s), TYNDALL_ISO_MAX_OPACITY));
+    }
+  }
+  return tau / dt;
+}
+#endif
+
 #if TYNDALL_GUESTS > 0
 // Guests (vtkTyndallSceneReader::GetGuests()): the other media the light
 // crosses. Each has its scalars and table (its own mapper's textures), its
@@ -289,12 +383,15 @@ float tyndallGuestExtinction(sampler3D volume, sampler2D table, int g, vec3 x)
 #define TYNDALL_GUEST_EXTINCTION(g) +tyndallGuestExtinction(guestVolume[g], guestTransfer[g], g, x)
 #endif
 
-// The extinction the light sees at the world point x: the medium's (empty
-// outside its box) and, with guests, theirs. The map build and the
-// brute-force light march integrate it.
-float tyndallSceneExtinction(vec3 x)
+// The extinction the light sees at the world point x, the middle of a step
+// of length dt along dir: the medium's (empty outside its box; with
+// isosurfaces, theirs over the step) and, with guests, theirs. The map
+// build and the brute-force light march integrate it.
+float tyndallSceneExtinction(vec3 x, vec3 dir, float dt)
 {
-#if TYNDALL_GUESTS > 0 || TYNDALL_MAP_BEYOND_MEDIUM
+#if TYNDALL_ISOSURFACES
+  return tyndallIsoExtinction(x, dir, dt)TYNDALL_FOR_GUESTS(TYNDALL_GUEST_EXTINCTION);
+#elif TYNDALL_GUESTS > 0 || TYNDALL_MAP_BEYOND_MEDIUM
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   bool inside = all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(1.0)));
   return (inside ? tyndallExtinction(x) : 0.0)TYNDALL_FOR_GUESTS(TYNDALL_GUEST_EXTINCTION);

@@ -49,7 +49,8 @@ float tyndallProject(vec3 kIn, vec3 dir, float D, float sMin, float sMax, bool e
     }
 #endif
     ++n;
-    float sigma = channelExtinction * tyndallSceneExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir);
+    float sigma = channelExtinction *
+      tyndallSceneExtinction(kIn + (sMin + u * (sMax - sMin)) * D * dir, dir, rangeLength * du);
     float opticalStep = sigma * rangeLength * du;
     float value = etm ? sigma * rangeLength : exp(-(tau + 0.5 * opticalStep));
     // cos(j pi u) by the angle-addition recurrence.
@@ -105,7 +106,8 @@ void main()
           continue;
         }
 #endif
-        float sigma = channelExtinction * tyndallSceneExtinction(kIn + (float(n) + 0.5) * du * D * dir);
+        float sigma = channelExtinction *
+          tyndallSceneExtinction(kIn + (float(n) + 0.5) * du * D * dir, dir, du * D);
         if (sMin < 0.0 && sigma > 0.0)
         {
           sMin = float(n) * du;

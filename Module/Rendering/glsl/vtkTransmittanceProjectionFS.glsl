@@ -12,34 +12,6 @@ uniform vec2 valueToUnit;    // u = value * x + y: the scalar on the data's fini
 uniform vec2 averageRange;   // average intensity: the values counted
 uniform float additiveScale; // additive: 1 / the property's unit distance
 
-// The scalar at the ray's point x (world), whose texture coordinate is
-// `texel`: false where x is clipped away or its data are missing (NaN).
-bool tyndallProjectionValue(vec3 x, vec3 texel, out float value)
-{
-  value = 0.0;
-#if TYNDALL_CLIP
-  if (tyndallClipped(x))
-  {
-    return false;
-  }
-#endif
-#if TYNDALL_MISSING_DATA
-  if (texture(validityTexture, texel).r < 0.999)
-  {
-    return false;
-  }
-#endif
-  value = texture(volumeTexture, texel).r;
-  return true;
-}
-
-// The opacity function at a value (the table's emission row holds it in a).
-float tyndallOpacity(float value)
-{
-  return texture(transferTexture, vec2(value * scalarToTable.x + scalarToTable.y,
-                                    TYNDALL_TABLE_EMISSION_ROW)).a;
-}
-
 // What a ray has gathered: the extremum, or the sum and the samples counted.
 struct TyndallProjection
 {
@@ -59,9 +31,9 @@ void tyndallProject(inout TyndallProjection p, float value, float dt)
   {
     return; // not counted
   }
-  p.Sum += tyndallOpacity(value) * (value * valueToUnit.x + valueToUnit.y);
+  p.Sum += tyndallOpacityFunction(value) * (value * valueToUnit.x + valueToUnit.y);
 #else
-  p.Sum += tyndallOpacity(value) * dt * additiveScale * (value * valueToUnit.x + valueToUnit.y);
+  p.Sum += tyndallOpacityFunction(value) * dt * additiveScale * (value * valueToUnit.x + valueToUnit.y);
 #endif
   p.Count += 1;
 }
@@ -120,7 +92,7 @@ void main()
     float dt = min(stepLength, tFar - t0);
     float ts = t0 + offset * dt;
     float value;
-    if (tyndallProjectionValue(p0 + ts * w, texel0 + ts * dTexel, value))
+    if (tyndallKeptScalar(p0 + ts * w, texel0 + ts * dTexel, value))
     {
       tyndallProject(gathered, value, dt);
     }

@@ -167,7 +167,7 @@ TyndallTransmittance lightTransmittance(int l, vec3 x, vec3 toLight, float light
       {
         if (n + k < lightSampleCount)
         {
-          tau += tyndallSceneExtinction(x + (float(n + k) + 0.5) * dt * toLight);
+          tau += tyndallSceneExtinction(x + (float(n + k) + 0.5) * dt * toLight, toLight, dt);
         }
       }
     }
@@ -322,16 +322,17 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 #if TYNDALL_SHADING
 // A plain property's gradient shading (vtkTyndallShading, its CPU twin):
 // Ka c + sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p), clamped to [0, 1]; n the
-// scalar's unit gradient (0 where it is 0), E_l the light's colour
-// (intensity x colour, attenuated), a headlight's direction along the ray.
+// scalar's unit gradient at normalAt (0 where it is 0), E_l the light's
+// colour (intensity x colour, attenuated) at x, a headlight's direction
+// along the ray.
 uniform vec4 shadingCoefficients; // Ka, Kd, Ks, specular power
 uniform float shadowOffset;       // T_l is taken this far towards the light
 uniform vec3 lightColor[TYNDALL_MAX_LIGHTS];
 uniform int lightHeadlight[TYNDALL_MAX_LIGHTS];
 
-vec3 tyndallSurfaceShading(vec3 x, vec3 w, vec3 color)
+vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color)
 {
-  vec3 g = tyndallScalarGradient(x);
+  vec3 g = tyndallScalarGradient(normalAt);
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
@@ -594,6 +595,9 @@ struct TyndallCameraSample
   vec3 Color;
   vec3 Emission;    // camera guests: the media's mixed emission colour
   float TableCoord; // alone: the sample's position in the transfer table
+  vec3 Position;    // where its light is looked up: the sample, or a step's first isosurface
+  vec3 Normal;      // where a shaded sample's normal is taken: the sample, or an isosurface
+                    // step's end (where VTK shades it)
 };
 
 #if TYNDALL_DETAIL_FILTER
@@ -614,9 +618,46 @@ float tyndallPixelFootprint(vec3 x)
 #endif
 }
 
-TyndallCameraSample tyndallCameraSample(vec3 x)
+#if TYNDALL_ISOSURFACES
+// The isosurfaces (TYNDALL_ISOSURFACES) the camera ray's step from x0
+// along w, of length dt, crosses: their composite as the step's extinction
+// -ln(1 - alpha) / dt and colour, evaluated where the first lies (CPU
+// twin: vtkTyndallGridMedium::IsoSample()).
+TyndallCameraSample tyndallIsoCameraSample(vec3 x0, vec3 w, float dt)
 {
   TyndallCameraSample s;
+  s.Sigma = 0.0;
+  s.Color = vec3(0.0);
+  s.Emission = vec3(0.0);
+  s.TableCoord = 0.0;
+  s.Position = x0;
+  s.Normal = x0 + dt * w;
+  float v0, v1, first;
+  if (tyndallIsoValue(x0, v0) && tyndallIsoValue(x0 + dt * w, v1))
+  {
+    vec4 c = tyndallIsoCrossings(v0, v1, first);
+    if (c.a > 0.0)
+    {
+      float a = min(c.a, TYNDALL_ISO_MAX_OPACITY);
+      s.Sigma = -log(1.0 - a) / dt;
+      s.Color = c.rgb / a;
+      s.Position = x0 + first * dt * w;
+    }
+  }
+  return s;
+}
+#endif
+
+// What the camera ray sees at its sample x of the step from x0 along w of
+// length dt.
+TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
+{
+#if TYNDALL_ISOSURFACES
+  return tyndallIsoCameraSample(x0, w, dt);
+#endif
+  TyndallCameraSample s;
+  s.Position = x;
+  s.Normal = x;
   tyndallFootprint = tyndallPixelFootprint(x);
 #if TYNDALL_CAMERA_GUESTS
   s.TableCoord = 0.0;
@@ -656,19 +697,21 @@ vec3 tyndallStepArrayEmission(vec3 x, float sigma, float dt, TyndallTransmittanc
 #endif
 }
 
-// The source of the camera sample `medium` at x (view direction w), per
-// unit extinction: its colour (emission-absorption), a plain property's
-// gradient shading (TYNDALL_SHADING), or single scattering and emission.
-vec3 tyndallSource(TyndallCameraSample medium, vec3 x, vec3 w)
+// The source of the camera sample `medium` (view direction w), per unit
+// extinction: its colour (emission-absorption), a plain property's gradient
+// shading (TYNDALL_SHADING), or single scattering and emission; lit at its
+// Position.
+vec3 tyndallSource(TyndallCameraSample medium, vec3 w)
 {
   if (scatteringModel == 0)
   {
     return medium.Color;
   }
 #if TYNDALL_SHADING
-  return tyndallSurfaceShading(x, w, medium.Color);
+  return tyndallSurfaceShading(medium.Position, medium.Normal, w, medium.Color);
 #else
-  return medium.Color * inScattering(x, w, medium.Color) + tyndallSampleEmission(medium);
+  return medium.Color * inScattering(medium.Position, w, medium.Color) +
+    tyndallSampleEmission(medium);
 #endif
 }
 
@@ -703,13 +746,13 @@ void main()
     }
     ++n;
     vec3 x = p0 + ts * w;
-    TyndallCameraSample medium = tyndallCameraSample(x);
+    TyndallCameraSample medium = tyndallCameraSample(x, p0 + t0 * w, w, dt);
     float sigma = medium.Sigma;
     radiance += tyndallStepArrayEmission(x, sigma, dt, Tv);
     if (sigma > 0.0)
     {
       TyndallTransmittance stepOpacity = 1.0 - exp(-sigma * extinctionColor * dt);
-      radiance += Tv * stepOpacity * tyndallSource(medium, x, w);
+      radiance += Tv * stepOpacity * tyndallSource(medium, w);
       Tv *= 1.0 - stepOpacity;
       if (tyndallLargest(Tv) < TYNDALL_VIEW_TERMINATION)
       {
