@@ -167,7 +167,8 @@ bool vtkTransmittanceMapMath::Project(int method, const std::function<double(dou
   }
 
   // First march over [0, 1]: the first sample with extinction, and the
-  // first sample whose midpoint transmittance falls below the threshold.
+  // first sample whose midpoint transmittance falls below the threshold
+  // (the range ends after it).
   const double du = 1.0 / sampleCount;
   int firstExtinct = -1;
   int firstBelow = -1;
@@ -182,13 +183,10 @@ bool vtkTransmittanceMapMath::Project(int method, const std::function<double(dou
     }
     if (std::exp(-(opticalDepth + 0.5 * stepDepth)) < adaptiveThreshold)
     {
-      firstBelow = n;
-      if (firstBelow == firstExtinct)
-      {
-        // The empty range [n/N, n/N]: keep the sample instead.
-        ++firstBelow;
-        opticalDepth += stepDepth;
-      }
+      // The range ends after this sample, whose depth T_beyond includes: a
+      // thin dense feature (a surface) may hold all of the ray's depth.
+      firstBelow = n + 1;
+      opticalDepth += stepDepth;
       break;
     }
     opticalDepth += stepDepth;

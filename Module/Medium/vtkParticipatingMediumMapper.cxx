@@ -6,7 +6,16 @@
 vtkParticipatingMediumMapper::vtkParticipatingMediumMapper() = default;
 
 //------------------------------------------------------------------------------
-vtkParticipatingMediumMapper::~vtkParticipatingMediumMapper() = default;
+vtkParticipatingMediumMapper::~vtkParticipatingMediumMapper()
+{
+  this->SetMaskInput(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticipatingMediumMapper::SetMaskInput(vtkImageData* mask)
+{
+  vtkSetObjectBodyMacro(MaskInput, vtkImageData, mask);
+}
 
 //------------------------------------------------------------------------------
 vtkImageData* vtkParticipatingMediumMapper::GetMediumImage()
@@ -18,4 +27,8 @@ vtkImageData* vtkParticipatingMediumMapper::GetMediumImage()
 void vtkParticipatingMediumMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "MaskInput: " << this->MaskInput << "\n";
+  os << indent << "MaskType: " << (this->MaskType == BinaryMaskType ? "Binary" : "LabelMap")
+     << "\n";
+  os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
 }

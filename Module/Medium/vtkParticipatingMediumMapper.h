@@ -10,6 +10,11 @@
  * volumes of a renderer are Tyndall media when their mapper is one of
  * these.
  *
+ * A mask, through the API of vtkGPUVolumeRayCastMapper: SetMaskInput()
+ * with the binary mask type hides the samples whose mask voxel is 0 or
+ * less, on both renderers (vtkTyndallGridMedium; label-map masks are not
+ * drawn yet: the volume is drawn unmasked, with a warning).
+ *
  * Not instantiated: create a vtkTransmittanceVolumeMapper or a
  * vtkTransmittanceParticleMapper.
  *
@@ -38,6 +43,51 @@ public:
    */
   virtual vtkImageData* GetMediumImage();
 
+  /// The mask types (VTK's values: vtkGPUVolumeRayCastMapper's).
+  enum MaskTypes
+  {
+    BinaryMaskType = 0,
+    LabelMapMaskType = 1
+  };
+
+  ///@{
+  /**
+   * A mask over the volume, as vtkGPUVolumeRayCastMapper takes it (null:
+   * none, the default): an image of the volume's dimensions whose scalars
+   * (one component; point scalars for a volume of point scalars, cell
+   * scalars for cell scalars) lie on the volume's samples. With
+   * BinaryMaskType, a sample is empty medium (for the camera and the
+   * light) where the mask is 0 or less: at the nearest mask voxel with the
+   * nearest interpolation (VTK's), where any of the 8 mask voxels around it
+   * is with trilinear interpolation (missing data's rule). A mask of other
+   * dimensions is an error (nothing is drawn).
+   */
+  void SetMaskInput(vtkImageData* mask);
+  vtkGetObjectMacro(MaskInput, vtkImageData);
+  ///@}
+
+  ///@{
+  /**
+   * The mask's type: BinaryMaskType or LabelMapMaskType (the default, as
+   * vtkGPUVolumeRayCastMapper's; not drawn yet: the volume is drawn
+   * unmasked, with a warning).
+   */
+  vtkSetClampMacro(MaskType, int, BinaryMaskType, LabelMapMaskType);
+  vtkGetMacro(MaskType, int);
+  void SetMaskTypeToBinary() { this->SetMaskType(BinaryMaskType); }
+  void SetMaskTypeToLabelMap() { this->SetMaskType(LabelMapMaskType); }
+  ///@}
+
+  ///@{
+  /**
+   * A label map's blend between the volume's and the labels' transfer
+   * functions, in [0, 1], default 1 (vtkGPUVolumeRayCastMapper's; label
+   * maps are not drawn yet).
+   */
+  vtkSetClampMacro(MaskBlendFactor, float, 0.0f, 1.0f);
+  vtkGetMacro(MaskBlendFactor, float);
+  ///@}
+
 #ifndef __VTK_WRAP__
   /// Internal (the scene reader): whether the medium is a particle cloud (GetParticles()).
   virtual bool DrawsParticles()
@@ -64,6 +114,10 @@ public:
 protected:
   vtkParticipatingMediumMapper();
   ~vtkParticipatingMediumMapper() override;
+
+  vtkImageData* MaskInput = nullptr;
+  int MaskType = LabelMapMaskType;
+  float MaskBlendFactor = 1.0f;
 
 private:
   vtkParticipatingMediumMapper(const vtkParticipatingMediumMapper&) = delete;

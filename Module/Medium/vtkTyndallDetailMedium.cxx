@@ -356,7 +356,7 @@ double vtkTyndallDetailMedium::GetCameraStep(double pixel, double maximumStep) c
 //------------------------------------------------------------------------------
 double vtkTyndallDetailMedium::FieldExtinction(const double p[3], Work* work) const
 {
-  if (this->Grid->GetNumberOfNaNScalars() > 0 && std::isnan(this->Grid->FieldScalar(p)))
+  if (this->Grid->HasMissingData() && std::isnan(this->Grid->FieldScalar(p)))
   {
     return 0.0; // missing data, as the grid's
   }

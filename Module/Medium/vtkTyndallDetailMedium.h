@@ -148,12 +148,11 @@ public:
    * below it times its square root, so a camera sample takes one
    * exponential and a square root per level crossed (an exponential per
    * wave made the default scene's frame 19% slower than one per group; with
-   * one per group the filter cost 10% of the frame, with the levels 4%). So no wave is filtered more than its own
-   * Gaussian asks; the finer ones a little less (a wave whose own factor is
-   * f keeps f^(FilterK2 / WorldK2) of its amplitude: at most f^(1/1.5) for
-   * its group's coarsest wave, more for the others of a group that spans
-   * more); the coarsest wave of all is filtered exactly. The filter acts on the
-   * noise before its clamp at 0 (the extinction is shape x max(0, filtered
+   * one per group the filter cost 10% of the frame, with the levels 4%). So no wave is filtered
+   * more than its own Gaussian asks; the finer ones a little less (a wave whose own factor is f
+   * keeps f^(FilterK2 / WorldK2) of its amplitude: at most f^(1/1.5) for its group's coarsest wave,
+   * more for the others of a group that spans more); the coarsest wave of all is filtered exactly.
+   * The filter acts on the noise before its clamp at 0 (the extinction is shape x max(0, filtered
    * noise)): a filtered noise is smoother, not the mean of the clamped one.
    * GetLiveWaves(pixel): how many of the waves (coarsest first) a sample
    * with a pixel that wide or narrower keeps; GetFinestWavelength(n): the

@@ -123,7 +123,7 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
     this->Valid = false;
     return false;
   }
-  this->Valid = this->UpdateScalars(volume, reporter) &&
+  this->Valid = this->UpdateScalars(volume, reporter) && this->UpdateMask(volume, reporter) &&
     this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
     this->UpdateTable(volume, reporter);
   if (this->Valid && !this->Field)
@@ -209,6 +209,85 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
     vtkErrorWithObjectMacro(reporter, << this->ScalarsError);
   }
   return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateMask(vtkVolume* volume, vtkObject* reporter)
+{
+  auto* mapper = vtkParticipatingMediumMapper::SafeDownCast(volume->GetMapper());
+  vtkImageData* mask =
+    mapper && mapper->GetMaskType() == vtkParticipatingMediumMapper::BinaryMaskType
+    ? mapper->GetMaskInput()
+    : nullptr;
+  vtkDataArray* values = nullptr;
+  if (mask)
+  {
+    values =
+      this->CellScalars ? mask->GetCellData()->GetScalars() : mask->GetPointData()->GetScalars();
+  }
+  // The mask's values and what they lie on (the scalars' samples, read first).
+  std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(mask)),
+    mask ? static_cast<double>(mask->GetMTime()) : -1.0,
+    static_cast<double>(reinterpret_cast<uintptr_t>(values)),
+    values ? static_cast<double>(values->GetMTime()) : -1.0 };
+  key.insert(key.end(), this->ScalarsKey.begin(), this->ScalarsKey.end());
+  if (key == this->MaskKey)
+  {
+    return true;
+  }
+  this->MaskKey = key;
+  this->Mask.clear();
+  this->MaskedCount = 0;
+  this->Field = nullptr;        // the sampler reads the mask
+  this->ScalarsTime.Modified(); // the GPU's validity texture holds it
+  this->ExtinctionTime.Modified();
+  std::ostringstream error;
+  if (mask && !this->ReadMask(mask, error))
+  {
+    this->MaskKey.clear(); // read again (and said again) next time
+    this->Mask.clear();
+    this->MaskedCount = 0;
+    vtkErrorWithObjectMacro(reporter, << "Cannot use the mapper's mask: " << error.str());
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::ReadMask(vtkImageData* mask, std::ostream& error)
+{
+  int dims[3];
+  mask->GetDimensions(dims);
+  const int* own = this->Input->GetDimensions();
+  if (dims[0] != own[0] || dims[1] != own[1] || dims[2] != own[2])
+  {
+    error << "it has " << dims[0] << " x " << dims[1] << " x " << dims[2] << " points, the volume "
+          << own[0] << " x " << own[1] << " x " << own[2]
+          << "; a mask lies on the volume's samples.";
+    return false;
+  }
+  vtkDataArray* values =
+    this->CellScalars ? mask->GetCellData()->GetScalars() : mask->GetPointData()->GetScalars();
+  const vtkIdType count =
+    static_cast<vtkIdType>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  if (!values || values->GetNumberOfComponents() != 1 || values->GetNumberOfTuples() != count)
+  {
+    error << "it needs " << (this->CellScalars ? "cell" : "point")
+          << " scalars of one component, one per sample of the volume (" << count << ").";
+    return false;
+  }
+  this->Mask.resize(static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const bool kept = values->GetComponent(i, 0) > 0.0; // VTK hides 0 or less
+    this->Mask[static_cast<size_t>(i)] = kept ? 1 : 0;
+    this->MaskedCount += kept ? 0 : 1;
+  }
+  if (this->MaskedCount == 0)
+  {
+    this->Mask.clear(); // nothing masked: nothing to check
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -670,6 +749,7 @@ bool vtkTyndallGridMedium::IsoSample(
   const double p0[3], const double p1[3], double dt, Point& point, double& first) const
 {
   double v0, v1, rgb[3], alpha;
+  first = 0.0;
   if (!this->IsoValue(p0, true, v0) || !this->IsoValue(p1, true, v1) ||
     !this->Isosurfaces.Composite(this->Table, v0, v1, rgb, alpha, first) || !(alpha > 0.0))
   {
@@ -689,7 +769,7 @@ bool vtkTyndallGridMedium::IsoSample(
 double vtkTyndallGridMedium::OpticalDepth(const double o[3], const double d[3], double t0,
   double t1, double step, double maxDepth, bool clip, const PathCache* cache, Work* work) const
 {
-  if (!this->Isosurfaces.Enabled())
+  if (!this->Isosurfaces.Enabled() || !(step > 0.0))
   {
     return vtkTyndallMedium::OpticalDepth(o, d, t0, t1, step, maxDepth, clip, cache, work);
   }

@@ -102,6 +102,20 @@ public:
   /// The finite scalar range, and the count of NaN scalars.
   const double* GetFiniteRange() const { return this->FiniteRange; }
   vtkIdType GetNumberOfNaNScalars() const { return this->NaNCount; }
+
+  /**
+   * The mapper's binary mask (vtkParticipatingMediumMapper::SetMaskInput()
+   * with BinaryMaskType): per sample of the scalars, 1 where the mask is
+   * above 0, 0 where it is not (empty when there is no binary mask). A
+   * masked sample is missing data: every sample interpolated from it (the
+   * nearest one with the nearest interpolation) is empty medium, on both
+   * renderers (the GPU's validity texture holds it).
+   */
+  const std::vector<unsigned char>& GetMask() const { return this->Mask; }
+  /// The number of masked samples (0 without a binary mask).
+  vtkIdType GetNumberOfMaskedSamples() const { return this->MaskedCount; }
+  /// Whether some samples are missing: NaN scalars or masked ones.
+  bool HasMissingData() const { return this->NaNCount > 0 || this->MaskedCount > 0; }
   ///@}
 
   ///@{
@@ -223,7 +237,9 @@ public:
   /// voxel.
   bool GetArrayEmission() const override
   {
-    return this->Parameters.HasEmission && this->GetEmissionFromArray();
+    // Isosurfaces emit nothing (IsoSample()).
+    return this->Parameters.HasEmission && this->GetEmissionFromArray() &&
+      !this->Isosurfaces.Enabled();
   }
   void ArrayEmission(const double p[3], double rgb[3]) const override;
   double GetMajorant() const override;
@@ -298,6 +314,7 @@ public:
     }
     const vtkTyndallGridMedium* Medium;
     const T* Data;
+    const unsigned char* Mask = nullptr; // the binary mask (GetMask()), or none
     bool Clean = true;
     bool Nearest = false;
     int Dims[3];
@@ -334,6 +351,10 @@ private:
   bool ReadScalars(vtkImageData* image, vtkDataArray* scalars, int cellFlag, std::ostream& error,
     vtkObject* reporter);
   bool UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter);
+  // Reads the mapper's binary mask into Mask (see GetMask()); false (with an
+  // error) for a mask that does not lie on the scalars' samples.
+  bool UpdateMask(vtkVolume* volume, vtkObject* reporter);
+  bool ReadMask(vtkImageData* mask, std::ostream& error);
   bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
   bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
   // The central differences of FieldScalar() one sample apart along each
@@ -358,6 +379,9 @@ private:
   bool CellScalars = false;
   double FiniteRange[2] = { 0.0, 0.0 };
   vtkIdType NaNCount = 0;
+  std::vector<unsigned char> Mask;
+  std::vector<double> MaskKey;
+  vtkIdType MaskedCount = 0;
   vtkIdType InfCount = 0;
 
   // Geometry.
@@ -398,6 +422,7 @@ template <typename T>
 vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium)
   : Medium(&medium)
   , Data(static_cast<const T*>(medium.GetScalars()->GetVoidPointer(0)))
+  , Mask(medium.Mask.empty() ? nullptr : medium.Mask.data())
   , Nearest(medium.Nearest)
 {
   for (int a = 0; a < 3; ++a)
@@ -415,6 +440,7 @@ vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, co
   : Sampler(medium)
 {
   this->Data = data;
+  this->Mask = nullptr; // another array: its own values
   this->Clean = false;
   this->Nearest = false; // another array (emission: never a plain property's)
 }
@@ -431,6 +457,10 @@ double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
       const int n = this->Dims[a];
       const double x = p[a] > 0.0 ? (p[a] < n - 1 ? p[a] : n - 1) : 0.0;
       index += static_cast<vtkIdType>(x + 0.5) * this->Stride[a];
+    }
+    if (this->Mask && !this->Mask[index])
+    {
+      return std::numeric_limits<double>::quiet_NaN(); // masked
     }
     return this->Value(this->Data[index]);
   }
@@ -450,6 +480,15 @@ double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
     f[a] = x - i;
     base += i * this->Stride[a];
     step[a] = n > 1 ? this->Stride[a] : 0;
+  }
+  if (this->Mask)
+  {
+    const unsigned char* m = this->Mask + base;
+    if (!(m[0] && m[step[0]] && m[step[1]] && m[step[0] + step[1]] && m[step[2]] &&
+          m[step[0] + step[2]] && m[step[1] + step[2]] && m[step[0] + step[1] + step[2]]))
+    {
+      return std::numeric_limits<double>::quiet_NaN(); // interpolated from a masked sample
+    }
   }
   const T* d = this->Data + base;
   const double c000 = this->Value(d[0]);

@@ -83,15 +83,15 @@ bool vtkTyndallIsosurfaces::Composite(const vtkTyndallTransferTable& table, doub
     {
       continue;
     }
-    if (!crossed)
-    {
-      first = (s - v0) / (v1 - v0); // v0 != v1: one end lies below s
-      crossed = true;
-    }
     int k;
     double f;
     table.Locate(s, k, f);
     const double a = table.OpacityAt(k, f);
+    if (!crossed && a > 0.0)
+    {
+      first = (s - v0) / (v1 - v0); // v0 != v1: one end lies below s
+      crossed = true;
+    }
     double color[3];
     vtkTyndallTransferTable::RGBAt(table.Albedo, k, f, color);
     for (int c = 0; c < 3; ++c)

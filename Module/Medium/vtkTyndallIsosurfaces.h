@@ -6,7 +6,8 @@
  * surfaces where its scalar crosses the property's iso values
  * (vtkVolumeProperty::GetIsoSurfaceValues()), as VTK 9.1's GPU mapper draws
  * them, and, which VTK does not do, each surface casts a shadow (on the
- * others and on everything else the light reaches). Read() takes the mode
+ * others and on opaque geometry in the volume's shadow; not on other
+ * volumes, whose guest it is not). Read() takes the mode
  * and the values; both renderers then draw them with the same rules (the
  * GPU: tyndallIsoCrossings() and tyndallIsoExtinction() in
  * vtkTransmittanceCommonFS.glsl; the CPU: vtkTyndallGridMedium through
@@ -76,8 +77,9 @@ public:
   /**
    * The surfaces a step from scalar v0 to v1 crosses, composited front to
    * back: the premultiplied colour rgb and the opacity alpha (0 and false
-   * when it crosses none), and where the first lies in the step, `first` =
-   * (s - v0) / (v1 - v0) (the scalar taken as linear over the step), 0..1.
+   * when it crosses none of opacity above 0), and where the first of them
+   * with an opacity above 0 lies in the step, `first` = (s - v0) / (v1 -
+   * v0) (the scalar taken as linear over the step), 0..1.
    */
   bool Composite(const vtkTyndallTransferTable& table, double v0, double v1, double rgb[3],
     double& alpha, double& first) const;

@@ -56,7 +56,7 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
   auto* property = vtkParticipatingMediumProperty::SafeDownCast(volume->GetProperty());
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
     !medium->GetProjection().Enabled() && !medium->GetIsosurfaces().Enabled() &&
-    !property->GetDetailNoise() && medium->GetNumberOfNaNScalars() == 0 && !medium->GetClip() &&
+    !property->GetDetailNoise() && !medium->HasMissingData() && !medium->GetClip() &&
     !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray();
 }
 
@@ -344,9 +344,9 @@ void vtkTyndallSceneReader::UpdateGuests(
     {
       continue; // a projection is not a medium: it casts no shadow (documented)
     }
-    else if (g.Medium->GetNumberOfNaNScalars() > 0)
+    else if (g.Medium->HasMissingData())
     {
-      reason = "has missing data (NaN)";
+      reason = "has missing data (NaN or a mask)";
     }
     else if (g.Medium->GetClip())
     {

@@ -1,5 +1,6 @@
 #include "vtkTyndallVolumeSettings.h"
 
+#include "vtkParticipatingMediumMapper.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPropCollection.h"
@@ -102,6 +103,12 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   {
     notDrawn.push_back("procedural detail in the isosurface blend mode (the grid's surfaces are "
                        "drawn)");
+  }
+  auto* tyndallMapper = vtkParticipatingMediumMapper::SafeDownCast(mapper);
+  if (tyndallMapper && tyndallMapper->GetMaskInput() &&
+    tyndallMapper->GetMaskType() == vtkParticipatingMediumMapper::LabelMapMaskType)
+  {
+    notDrawn.push_back("a label-map mask (the volume is drawn unmasked; binary masks are drawn)");
   }
   if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes() &&
     HasTranslucentGeometry(renderer))

@@ -11,6 +11,8 @@
  *   vtkTyndallProjection, and the isosurface mode, vtkTyndallIsosurfaces);
  * - procedural detail in a projection blend mode (the grid's scalars are
  *   projected) or the isosurface blend mode (the grid's surfaces are drawn);
+ * - a label-map mask (vtkParticipatingMediumMapper::SetMaskInput() with
+ *   LabelMapMaskType: the volume is drawn unmasked; binary masks are drawn);
  * - the renderer's depth peeling for volumes, with translucent geometry in
  *   the renderer (not supported);
  * and, for a plain vtkVolumeProperty (VTK's meaning; a

@@ -237,19 +237,26 @@ private:
       {
         continue;
       }
-      // A surface does not shadow itself: T_l from ShadowOffset voxels
-      // towards the light (the camera media's frames: the offset point's
-      // own images, not the ray's).
-      const double offset = vtkTyndallShading::ShadowOffset * s.Shaded->GetMinimumWorldSpacing();
-      const double y[3] = { x[0] + offset * l[0], x[1] + offset * l[1], x[2] + offset * l[2] };
       double T[3];
-      s.ChannelTransmittances(
-        this->LightTransmittance(y, nullptr, 0.0, l, std::max(tMax - offset, 0.0)), T);
+      this->SurfaceTransmittance(*s.Shaded, x, l, tMax, T);
       const double E[3] = { factor * light.Color[0], factor * light.Color[1],
         factor * light.Color[2] };
       shading.AddLight(n, light.Headlight ? v : l, v, point.Albedo, E, T, J);
     }
     vtkTyndallShading::Finish(J);
+  }
+
+  // T_l of a surface at the world point x towards l (up to tMax) on `grid`
+  // (shaded samples, isosurfaces): a surface does not shadow itself, T_l is
+  // taken ShadowOffset voxels towards the light (the camera media's frames:
+  // the offset point's own images, not the ray's).
+  void SurfaceTransmittance(const vtkTyndallGridMedium& grid, const double x[3], const double l[3],
+    double tMax, double T[3]) const
+  {
+    const double offset = vtkTyndallShading::ShadowOffset * grid.GetMinimumWorldSpacing();
+    const double y[3] = { x[0] + offset * l[0], x[1] + offset * l[1], x[2] + offset * l[2] };
+    this->S->ChannelTransmittances(
+      this->LightTransmittance(y, nullptr, 0.0, l, std::max(tMax - offset, 0.0)), T);
   }
 
   // A projection blend mode (vtkTyndallProjection; GPU twin:
@@ -351,7 +358,16 @@ private:
     s.Source(
       point, x, w,
       [&](const double l[3], double tMax, double T[3])
-      { s.ChannelTransmittances(this->LightTransmittance(x, &rays, t, l, tMax), T); },
+      {
+        if (s.Isosurfaced)
+        {
+          this->SurfaceTransmittance(*s.Isosurfaced, x, l, tMax, T);
+        }
+        else
+        {
+          s.ChannelTransmittances(this->LightTransmittance(x, &rays, t, l, tMax), T);
+        }
+      },
       J);
   }
 };

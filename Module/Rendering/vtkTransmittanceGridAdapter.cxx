@@ -43,7 +43,7 @@ void vtkTransmittanceGridAdapter::DeclareColorSwitches(
   const vtkTyndallGridMedium& grid = this->GetGrid(medium);
   const vtkTyndallMediumParameters& parameters = grid.GetParameters();
   const bool emits = parameters.HasEmission && parameters.EmissionScale > 0.0;
-  variant.EmissionArray = emits && grid.GetEmissionFromArray();
+  variant.EmissionArray = emits && grid.GetArrayEmission();
   // Isosurfaces emit nothing (vtkTyndallGridMedium::IsoSample()).
   variant.Emission = emits && !variant.EmissionArray && !grid.GetIsosurfaces().Enabled();
 }

@@ -19,14 +19,15 @@ vtkStandardNewMacro(vtkTransmittanceMediumTextures);
 namespace
 {
 // The cleaned scalars at every `factor`-th sample, as floats, and where
-// `valid` is given, 0 for NaN (which becomes the range's minimum) and 255
-// elsewhere.
+// `valid` is given, 0 for NaN (which becomes the range's minimum) and for a
+// masked sample (vtkTyndallGridMedium::GetMask()), 255 elsewhere.
 template <typename T>
 void Gather(const vtkTyndallGridMedium& medium, const T* data, int factor, const int dims[3],
   float* out, unsigned char* valid)
 {
   const int* full = medium.GetDimensions();
   const bool floating = std::numeric_limits<T>::has_quiet_NaN;
+  const unsigned char* mask = medium.GetMask().empty() ? nullptr : medium.GetMask().data();
   size_t i = 0;
   for (int z = 0; z < dims[2]; ++z)
   {
@@ -37,13 +38,14 @@ void Gather(const vtkTyndallGridMedium& medium, const T* data, int factor, const
         full[0];
       for (int x = 0; x < dims[0]; ++x, ++i)
       {
-        const double v = static_cast<double>(data[row + static_cast<vtkIdType>(x) * factor]);
+        const vtkIdType index = row + static_cast<vtkIdType>(x) * factor;
+        const double v = static_cast<double>(data[index]);
         const bool missing = std::isnan(v);
         out[i] = static_cast<float>(
           missing ? medium.GetFiniteRange()[0] : (floating ? medium.Clean(v) : v));
         if (valid)
         {
-          valid[i] = missing ? 0 : 255;
+          valid[i] = missing || (mask && !mask[index]) ? 0 : 255;
         }
       }
     }
@@ -167,7 +169,7 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   }
   const size_t count =
     static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
-  const bool missing = medium.GetNumberOfNaNScalars() > 0;
+  const bool missing = medium.HasMissingData(); // NaN scalars or a mask
   std::vector<float> values;
   std::vector<unsigned char> valid;
   try

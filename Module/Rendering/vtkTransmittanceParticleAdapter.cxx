@@ -51,5 +51,7 @@ const vtkTyndallParticleMedium* vtkTransmittanceParticleAdapter::GetSplatted(
   const vtkTyndallMedium& medium) const
 {
   const vtkTyndallParticleMedium& particles = Particles(medium);
-  return particles.GetSplatParticles() ? &particles : nullptr;
+  // Drawn as isosurfaces, the cloud's light meets the surfaces, not its density.
+  return particles.GetSplatParticles() && !particles.GetIsosurfaces().Enabled() ? &particles
+                                                                                : nullptr;
 }

@@ -281,6 +281,10 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
     const float coefficients[4] = { float(shading.GetAmbient()), float(shading.GetDiffuse()),
       float(shading.GetSpecular()), float(shading.GetSpecularPower()) };
     program->SetUniform4f("shadingCoefficients", coefficients);
+  }
+  if (shading.Enabled() || frame.Medium->GetIsosurfaces().Enabled())
+  {
+    // Declared only by the shading and isosurface variants.
     program->SetUniformf("shadowOffset",
       static_cast<float>(vtkTyndallShading::ShadowOffset * frame.Medium->GetMinimumWorldSpacing()));
   }

@@ -307,22 +307,41 @@ int TestTransmittanceMapMath(int, char*[])
         {
           first = n;
         }
-        if (std::exp(-(depth + 0.5 * sig * kLength * du)) < kThreshold)
+        depth += sig * kLength * du;
+        if (std::exp(-(depth - 0.5 * sig * kLength * du)) < kThreshold)
         {
-          below = n;
+          below = n + 1; // the range ends after the sample that crossed
           break;
         }
-        depth += sig * kLength * du;
       }
       for (int m : { adaptiveTfm, adaptiveEtm })
       {
         const double* b = allBounds[p][m][1];
         const std::string what = profiles[p].Name + " " + Math::GetMethodName(kMethods[m]);
         Check(below > first && b[0] == first * du && b[1] == below * du,
-          what + ": s_min, s_max are the starts of the first non-empty and first dense samples");
+          what + ": s_min is the start of the first non-empty sample, s_max the end of the "
+                 "first dense one");
         Check(std::abs(b[2] - std::exp(-depth)) < 1e-14, what + ": T_beyond is T at s_max");
-        Check(b[2] < 2.0 * kThreshold && b[2] > 0.1 * kThreshold,
-          what + ": T_beyond near the threshold");
+        Check(b[2] < kThreshold && b[2] > 0.01 * kThreshold,
+          what + ": T_beyond just below the threshold");
+      }
+    }
+    // Two thin layers, as isosurfaces are for the light: one transmitting
+    // 0.7, then an opaque one (depth 13.8), each within one sample. T_beyond
+    // must be the second's, not the first's.
+    {
+      std::vector<double> layers(kProfileSize, 0.0);
+      const double width = kLength / (kProfileSize - 1); // one profile interval, world units
+      layers[300] = layers[301] = -std::log(0.7) / width;
+      layers[600] = layers[601] = 13.8 / width;
+      for (int m : { adaptiveTfm, adaptiveEtm })
+      {
+        double coefficients[8], b[3];
+        Math::Project(kMethods[m], layers.data(), kProfileSize, kLength, kSamples, 8, kThreshold,
+          coefficients, b);
+        Check(b[2] < 1e-5 && b[1] > 0.6,
+          std::string(Math::GetMethodName(kMethods[m])) +
+            ": an opaque layer behind a translucent one: T_beyond past both");
       }
     }
     // Reconstruction at the bounds themselves: 1 at s_min, T_beyond at s_max.

@@ -206,6 +206,44 @@ int TestTransmittanceMapperBadInput(int, char*[])
     Check(CountForeground(window) == withoutVolume, "a NaN iso value: nothing of the volume drawn");
     property->GetIsoSurfaceValues()->SetNumberOfContours(0);
     mapper->SetBlendModeToComposite();
+    // A binary mask whose dimensions differ from the volume's: the same.
+    vtkSmartPointer<vtkImageData> mask = MakeImage(8, 8, 7, 1, 1.0);
+    mapper->SetMaskInput(mask);
+    mapper->SetMaskTypeToBinary();
+    observer->Clear();
+    window->Render();
+    Check(observer->GetError() &&
+        observer->GetErrorMessage().find("mapper's mask") != std::string::npos &&
+        observer->GetErrorMessage().find("8 x 8 x 7") != std::string::npos,
+      "a mask of other dimensions: an error naming them");
+    Check(
+      CountForeground(window) == withoutVolume, "a mismatched mask: nothing of the volume drawn");
+    // A mask with three components: the same.
+    mapper->SetMaskInput(MakeImage(8, 8, 8, 3, 1.0));
+    observer->Clear();
+    window->Render();
+    Check(observer->GetError() &&
+        observer->GetErrorMessage().find("one component") != std::string::npos,
+      "a mask of three components: an error");
+    // A matching mask hiding everything: no error, nothing of the volume drawn.
+    mapper->SetMaskInput(MakeImage(8, 8, 8, 1, 0.0));
+    observer->Clear();
+    window->Render();
+    Check(!observer->GetError() && CountForeground(window) == withoutVolume,
+      "a mask hiding every sample: nothing drawn, no error");
+    // The same as a label map (not drawn yet): a warning naming it, the volume drawn unmasked.
+    mapper->SetMaskTypeToLabelMap();
+    observer->Clear();
+    window->Render();
+    Check(!observer->GetError() &&
+        observer->GetWarningMessage().find("label-map mask") != std::string::npos &&
+        CountForeground(window) > withoutVolume,
+      "a label-map mask: warned, the volume drawn unmasked");
+    mapper->SetMaskInput(nullptr);
+    observer->Clear();
+    window->Render();
+    Check(!observer->GetError() && CountForeground(window) > withoutVolume,
+      "the mask removed: the volume drawn again");
   }
 
   // No lights: ambient and emission only, no error; here the volume is dark.

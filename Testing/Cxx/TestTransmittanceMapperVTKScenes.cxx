@@ -17,14 +17,18 @@
 // opaque sphere inside the volume), nearest interpolation (VTK's default,
 // close up), gradient shading (Shade on; against VTK without shadows, the
 // method None, and against the CPU reference with them), gradient opacity
-// (TestGPURayCastGradientOpacity), isosurfaces (TestGPURayCastIsosurface:
+// (TestGPURayCastGradientOpacity), binary masks (TestGPURayCastComposite-
+// and MIPBinaryMask: linear and nearest, composite, maximum intensity and
+// shaded), isosurfaces (TestGPURayCastIsosurface:
 // three values on the wavelet, shaded and not, under the headlight and a
 // scene light, and a CT's skin and bone; against VTK without shadows,
 // against the CPU reference with them), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
-// lights). The data are made here (a box of unsigned chars, VTK's wavelet);
-// with ../shared/data present, the CT head (headsq) too, else those scenes
-// are skipped with a message.
+// lights). One scene is Tyndall's own: isosurfaces of a
+// vtkParticipatingMediumProperty lit by single scattering under a scene
+// light (against the CPU reference only: VTK draws it unlit). The data are made here (a box of
+// unsigned chars, VTK's wavelet); with ../shared/data present, the CT head (headsq) too, else those
+// scenes are skipped with a message.
 //
 // Arguments: the test driver's (-T: where the pictures are written, each
 // scene's VTK, Tyndall and reference images, for a look).
@@ -41,6 +45,7 @@
 #include "vtkNew.h"
 #include "vtkNrrdReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
@@ -90,7 +95,40 @@ struct Scene
   // Shade on (vtkTyndallShading): against VTK without shadows (the method
   // None), against the CPU reference with them (brute force).
   bool Shaded = false;
+  // A binary mask over the data (SetMaskInput, SetMaskTypeToBinary), or none.
+  std::function<vtkSmartPointer<vtkImageData>(vtkImageData*)> Mask = nullptr;
+  // The property a vtkParticipatingMediumProperty (Tyndall's meaning: single
+  // scattering): against the CPU reference only (with Shaded: with shadows).
+  bool Medium = false;
 };
+
+// TestGPURayCastCompositeBinaryMask's mask: the half of the samples with x
+// below the middle kept (255), the rest hidden (0), and a ball of hidden
+// samples in the kept half.
+vtkSmartPointer<vtkImageData> HalfMask(vtkImageData* data)
+{
+  auto mask = vtkSmartPointer<vtkImageData>::New();
+  mask->SetExtent(data->GetExtent());
+  mask->SetSpacing(data->GetSpacing());
+  mask->SetOrigin(data->GetOrigin());
+  mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  int dims[3];
+  data->GetDimensions(dims);
+  auto* values = static_cast<unsigned char*>(mask->GetScalarPointer());
+  for (int z = 0, i = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x, ++i)
+      {
+        const double dx = x - 0.25 * dims[0], dy = y - 0.5 * dims[1], dz = z - 0.5 * dims[2];
+        const bool ball = dx * dx + dy * dy + dz * dz < 0.04 * dims[0] * dims[0];
+        values[i] = x < dims[0] / 2 && !ball ? 255 : 0;
+      }
+    }
+  }
+  return mask;
+}
 
 // TestGPURayCastBlendModes' kind of volume: 64^3 unsigned chars; tissue of
 // 120 around a ramp along x (60 .. 210), a shell of 255 around the ramp's
@@ -142,6 +180,17 @@ vtkSmartPointer<vtkImageData> MakeWavelet()
   source->Update();
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->DeepCopy(source->GetOutput());
+  return image;
+}
+
+// The wavelet with its extent from 0 (its origin at -31: the same
+// placement): VTK 9.1 misplaces a mask over an extent that does not start
+// at 0 (its mask scenes' data start there).
+vtkSmartPointer<vtkImageData> MakeWaveletFromZero()
+{
+  vtkSmartPointer<vtkImageData> image = MakeWavelet();
+  image->SetExtent(0, 63, 0, 63, 0, 63);
+  image->SetOrigin(-31.0, -31.0, -31.0);
   return image;
 }
 
@@ -511,6 +560,16 @@ std::vector<Scene> Scenes()
       Blend(M::ISOSURFACE_BLEND), SceneLight, true, 35.0, false, true },
     { "Isosurface-Head", MakeHead, HeadIsoProperty, Blend(M::ISOSURFACE_BLEND), Tilted, true, 35.0,
       false, true },
+    { "Mask-WaveletComposite", MakeWaveletFromZero, ColorProperty, none, Tilted, false, 35.0, false,
+      false, HalfMask },
+    { "Mask-WaveletNearest", MakeWaveletFromZero, ColorProperty, none, Zoomed, false, 35.0, true,
+      false, HalfMask },
+    { "Mask-WaveletMaximumIntensity", MakeWaveletFromZero, Ramp, Blend(M::MAXIMUM_INTENSITY_BLEND),
+      Tilted, true, 35.0, false, false, HalfMask },
+    { "Mask-ShadedHead", MakeHead, ShadedProperty, none, Tilted, true, 35.0, false, true,
+      HalfMask },
+    { "Isosurface-WaveletMedium", MakeWavelet, UnlitAmbientIsoProperty, Blend(M::ISOSURFACE_BLEND),
+      SceneLight, true, 35.0, false, true, nullptr, true },
     { "Head-MaximumIntensity", MakeHead,
       [](vtkVolumeProperty* p, const double r[2]) { RampProperty(p, r, 1.0); },
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
@@ -550,7 +609,15 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   vtkDataArray* scalars = data->GetPointData()->GetScalars() ? data->GetPointData()->GetScalars()
                                                              : data->GetCellData()->GetScalars();
   scalars->GetRange(range);
-  vtkNew<vtkVolumeProperty> property;
+  vtkSmartPointer<vtkVolumeProperty> property;
+  if (scene.Medium)
+  {
+    property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
+  }
+  else
+  {
+    property = vtkSmartPointer<vtkVolumeProperty>::New();
+  }
   property->SetInterpolationType(
     scene.Nearest ? VTK_NEAREST_INTERPOLATION : VTK_LINEAR_INTERPOLATION);
   scene.Property(property, range);
@@ -565,6 +632,14 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   if (scene.Shaded)
   {
     tyndall->SetTransmittanceMethodToNone(); // VTK draws no shadow
+  }
+  if (scene.Mask)
+  {
+    vtkSmartPointer<vtkImageData> mask = scene.Mask(data);
+    vtkMapper->SetMaskInput(mask);
+    vtkMapper->SetMaskTypeToBinary();
+    tyndall->SetMaskInput(mask);
+    tyndall->SetMaskTypeToBinary();
   }
   vtkNew<vtkVolume> volume;
   volume->SetMapper(vtkMapper);
@@ -584,7 +659,7 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   const double psnr = tyndall_test::PSNR(tyndallImage, vtkImage);
   Write(vtkImage, out + "/" + scene.Name + "-vtk.png");
   Write(tyndallImage, out + "/" + scene.Name + "-tyndall.png");
-  bool ok = psnr >= scene.Floor;
+  bool ok = scene.Medium || psnr >= scene.Floor; // VTK draws a medium's property unlit
   std::cout << std::left << std::setw(36) << scene.Name << " against VTK " << std::fixed
             << std::setprecision(1) << std::setw(6) << psnr << " dB";
   if (scene.Reference)

@@ -311,7 +311,8 @@ bool tyndallIsoValue(vec3 x, out float value)
 // The surfaces a step from scalar v0 to v1 crosses, composited front to
 // back in the order the ray meets them: premultiplied colour, opacity (the
 // colour and opacity functions at each iso value; the opacity is the
-// emission row's a); `first`: where the first lies in the step, 0..1.
+// emission row's a); `first`: where the first of opacity above 0 lies in
+// the step, 0..1.
 vec4 tyndallIsoCrossings(float v0, float v1, out float first)
 {
   vec4 sum = vec4(0.0);
@@ -321,8 +322,8 @@ vec4 tyndallIsoCrossings(float v0, float v1, out float first)
     float s = isoValues[v1 >= v0 ? j : TYNDALL_ISO_COUNT - 1 - j];
     if ((v0 < s) != (v1 < s))
     {
-      first = first < 0.0 ? (s - v0) / (v1 - v0) : first;
       float a = tyndallOpacityFunction(s);
+      first = first < 0.0 && a > 0.0 ? (s - v0) / (v1 - v0) : first;
       vec3 c = texture(transferTexture,
         vec2(s * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW)).rgb;
       sum += (1.0 - sum.a) * vec4(a * c, a);
@@ -332,11 +333,34 @@ vec4 tyndallIsoCrossings(float v0, float v1, out float first)
 }
 
 // The extinction the light meets over the step of length dt centred at x
-// along dir: each surface crossed, -ln(1 - a(s)), spread over the step.
+// along dir: each surface crossed, -ln(1 - a(s)), spread over the step. The
+// step is cut to the volume's box first (a light's steps may straddle its
+// faces; the CPU's march starts and ends on them).
 float tyndallIsoExtinction(vec3 x, vec3 dir, float dt)
 {
+  vec3 xa = x - 0.5 * dt * dir;
+  vec3 qa = (worldToVolume * vec4(xa, 1.0)).xyz;
+  vec3 dq = (worldToVolume * vec4(dt * dir, 0.0)).xyz;
+  float u0 = 0.0;
+  float u1 = 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (abs(dq[a]) < 1e-12)
+    {
+      if (qa[a] < 0.0 || qa[a] > 1.0)
+      {
+        return 0.0; // parallel to the faces, outside
+      }
+      continue;
+    }
+    float ta = -qa[a] / dq[a];
+    float tb = (1.0 - qa[a]) / dq[a];
+    u0 = max(u0, min(ta, tb));
+    u1 = min(u1, max(ta, tb));
+  }
   float v0, v1;
-  if (!tyndallIsoValue(x - 0.5 * dt * dir, v0) || !tyndallIsoValue(x + 0.5 * dt * dir, v1))
+  if (!(u0 < u1) || !tyndallIsoValue(xa + u0 * dt * dir, v0) ||
+    !tyndallIsoValue(xa + u1 * dt * dir, v1))
   {
     return 0.0;
   }

@@ -90,7 +90,6 @@ void main()
       float tau = 0.0;
       float sMin = -1.0;
       float sMax = 1.0;
-      float crossingStep = 0.0; // optical depth of the sample that crossed
 #if TYNDALL_SKIP_EMPTY
       vec3 bo, bd;
       tyndallBlockRay(kIn, dir, bo, bd);
@@ -115,8 +114,10 @@ void main()
         float opticalStep = sigma * D * du;
         if (exp(-(tau + 0.5 * opticalStep)) < adaptiveThreshold)
         {
-          sMax = float(n) * du;
-          crossingStep = opticalStep;
+          // The range ends after this sample, whose depth T_beyond includes
+          // (a surface may hold all of the ray's depth in one sample).
+          sMax = float(n + 1) * du;
+          tau += opticalStep;
           break;
         }
         tau += opticalStep;
@@ -125,12 +126,6 @@ void main()
       if (sMin < 0.0)
       {
         sMin = 0.0;
-      }
-      if (sMax <= sMin)
-      {
-        // Crossed within the first non-empty sample: s_max is its end.
-        sMax = min(1.0, sMin + du);
-        tau += crossingStep;
       }
       float tBeyond = exp(-tau);
       bounds = vec3(sMin, sMax, tBeyond);

@@ -293,8 +293,17 @@ bool tyndallLightAt(int l, vec3 x, inout vec3 E, out vec3 toLight, out float dis
   return E.r + E.g + E.b > 0.0;
 }
 
+#if TYNDALL_SHADING || TYNDALL_ISOSURFACES
+// A surface does not shadow itself: its T_l is taken this far towards the
+// light (vtkTyndallShading::ShadowOffset voxels).
+uniform float shadowOffset;
+#else
+const float shadowOffset = 0.0; // a medium's sample: T_l where it is
+#endif
+
 // In-scattered radiance per unit sigma_s at x, for the view direction w, at
-// a sample of albedo `albedo` (which only the octaves read).
+// a sample of albedo `albedo` (which only the octaves read); an isosurface's
+// light taken shadowOffset towards it.
 vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 {
   vec3 sum = vec3(ambient);
@@ -314,7 +323,10 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
     {
       continue; // opaque geometry: no light in any channel
     }
-    sum += E * tyndallOctaves(mu, lightTransmittance(l, x, toLight, distance), albedo);
+    sum += E *
+      tyndallOctaves(mu,
+        lightTransmittance(l, x + shadowOffset * toLight, toLight, distance - shadowOffset),
+        albedo);
   }
   return sum;
 }
@@ -326,7 +338,6 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 // colour (intensity x colour, attenuated) at x, a headlight's direction
 // along the ray.
 uniform vec4 shadingCoefficients; // Ka, Kd, Ks, specular power
-uniform float shadowOffset;       // T_l is taken this far towards the light
 uniform vec3 lightColor[TYNDALL_MAX_LIGHTS];
 uniform int lightHeadlight[TYNDALL_MAX_LIGHTS];
 
