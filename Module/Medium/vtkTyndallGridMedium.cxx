@@ -19,6 +19,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
@@ -615,6 +616,31 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     // The change per average voxel depends on the spacings' ratios.
     extinction.insert(extinction.end(), this->GradientToVoxel, this->GradientToVoxel + 3);
   }
+  // A plain property's 2-D transfer function (TF_2D) replaces the 1-D ones
+  // for the medium (not in a projection nor for isosurfaces, which read the
+  // 1-D functions, as named by vtkTyndallVolumeSettings); its opacity is per
+  // VTK's automatic step, the smallest spacing.
+  vtkImageData* transfer2D = !medium && !this->Projection.Enabled() &&
+      !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() &&
+      property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D
+    ? property->GetTransferFunction2D(0)
+    : nullptr;
+  if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D && !medium &&
+    !this->Projection.Enabled() && !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() &&
+    !transfer2D)
+  {
+    this->TableKey.clear();
+    vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: its transfer function "
+                                         "mode is TF_2D and it has no 2-D transfer function.");
+    return false;
+  }
+  identify(extinction, transfer2D);
+  if (transfer2D)
+  {
+    extinction.push_back(double(this->Nearest));
+    extinction.push_back(this->GetMinimumWorldSpacing());
+    extinction.insert(extinction.end(), this->GradientToVoxel, this->GradientToVoxel + 3);
+  }
   // The isosurfaces are what the light meets instead of the medium.
   extinction.push_back(double(this->Isosurfaces.Enabled()));
   const std::vector<double>& isoValues = this->Isosurfaces.GetValues();
@@ -649,6 +675,13 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     return false;
   }
   this->Table.TabulateGradientOpacity(gradientOpacity);
+  if (transfer2D &&
+    !this->Table.Tabulate2D(transfer2D, this->GetMinimumWorldSpacing(), this->Nearest, error))
+  {
+    this->ExtinctionKey.clear();
+    vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
+    return false;
+  }
   if (fromArray)
   {
     // The emission colour over the array's range: a black body normalised
@@ -801,8 +834,41 @@ double vtkTyndallGridMedium::OpticalDepth(const double o[3], const double d[3], 
 }
 
 //------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::Transfer2DSample(const double p[3], double rgba[4]) const
+{
+  const double s = this->FieldScalar(p);
+  if (std::isnan(s))
+  {
+    return false; // missing data
+  }
+  const vtkTyndallTransferTable& t = this->Table;
+  double g[3], sum = 0.0;
+  this->IndexDifferences(p, g); // 0 at missing data: no gradient
+  for (int a = 0; a < 3; ++a)
+  {
+    const double d = g[a] * this->GradientToVoxel[a];
+    sum += d * d;
+  }
+  const double u = t.Maximum > t.Minimum ? (s - t.Minimum) / (t.Maximum - t.Minimum) : 0.0;
+  t.Transfer2DAt(u, std::min(std::sqrt(sum) / t.GradientMaximum, 1.0), rgba);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::Transfer2DExtinction(double opacity) const
+{
+  return vtkTransmittanceMapMath::ExtinctionFromOpacity(
+    std::min(opacity, 0.999999), this->GetMinimumWorldSpacing(), this->Parameters.DensityScale);
+}
+
+//------------------------------------------------------------------------------
 double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
 {
+  if (this->Table.Has2D())
+  {
+    double rgba[4];
+    return this->Transfer2DSample(p, rgba) ? this->Transfer2DExtinction(rgba[3]) : 0.0;
+  }
   int k;
   double f;
   return this->TablePosition(p, k, f)
@@ -813,6 +879,18 @@ double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) const
 {
+  if (this->Table.Has2D())
+  {
+    double rgba[4];
+    if (!this->Transfer2DSample(p, rgba))
+    {
+      return false;
+    }
+    point.Extinction = this->Transfer2DExtinction(rgba[3]);
+    std::copy(rgba, rgba + 3, point.Albedo);
+    std::fill(point.Emission, point.Emission + 3, 0.0);
+    return point.Extinction > 0.0;
+  }
   int k;
   double f;
   if (!this->TablePosition(p, k, f))
@@ -832,6 +910,17 @@ bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) 
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::FieldMaterial(const double p[3], Point& point) const
 {
+  if (this->Table.Has2D())
+  {
+    double rgba[4];
+    if (!this->Transfer2DSample(p, rgba))
+    {
+      return false;
+    }
+    std::copy(rgba, rgba + 3, point.Albedo);
+    std::fill(point.Emission, point.Emission + 3, 0.0);
+    return true;
+  }
   int k;
   double f;
   if (!this->TablePosition(p, k, f))

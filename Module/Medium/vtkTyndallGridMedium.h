@@ -32,6 +32,8 @@
  *   medium is empty outside them, for the camera and for the light;
  * - the interpolation: trilinear, or the nearest sample for a plain
  *   vtkVolumeProperty with nearest interpolation (VTK's default; GetNearest());
+ * - a plain property's 2-D transfer function (TF_2D; the table's Has2D()) and
+ *   the mapper's binary mask (GetMask(): masked samples are missing data);
  * - the mapper's blend mode (vtkTyndallProjection): a projection (maximum,
  *   minimum, average intensity, additive) is drawn as VTK draws it, the
  *   composite mode as a medium; the isosurface mode (vtkTyndallIsosurfaces)
@@ -357,6 +359,13 @@ private:
   bool ReadMask(vtkImageData* mask, std::ostream& error);
   bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
   bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
+  // A plain property's 2-D transfer function (TF_2D; the table's Has2D()) at
+  // the field index point p: its RGBA at the scalar and the change per
+  // average voxel (GradientOpacityAt()'s); false at missing data.
+  bool Transfer2DSample(const double p[3], double rgba[4]) const;
+  // The extinction of a 2-D function's opacity: per VTK's automatic step
+  // (the smallest world spacing), density scale applied.
+  double Transfer2DExtinction(double opacity) const;
   // The central differences of FieldScalar() one sample apart along each
   // index axis at p, per sample; 0 (and false) where one meets missing data.
   bool IndexDifferences(const double p[3], double g[3]) const;

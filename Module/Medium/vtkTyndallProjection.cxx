@@ -1,10 +1,13 @@
 #include "vtkTyndallProjection.h"
 
+#include "vtkMath.h"
+#include "vtkPlane.h"
 #include "vtkTyndallTransferTable.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <cmath>
 
 //------------------------------------------------------------------------------
 void vtkTyndallProjection::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
@@ -23,6 +26,16 @@ void vtkTyndallProjection::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* prop
       break;
     case vtkVolumeMapper::ADDITIVE_BLEND:
       this->Mode = ADDITIVE;
+      break;
+    case vtkVolumeMapper::SLICE_BLEND:
+      if (auto* plane = vtkPlane::SafeDownCast(property ? property->GetSliceFunction() : nullptr))
+      {
+        this->Mode = SLICE;
+        double origin[3];
+        plane->GetOrigin(origin);
+        plane->GetNormal(this->SlicePlane);
+        this->SlicePlane[3] = -vtkMath::Dot(this->SlicePlane, origin);
+      }
       break;
     default:
       break;
@@ -47,9 +60,23 @@ const char* vtkTyndallProjection::GetModeName(int mode)
       return "average intensity";
     case ADDITIVE:
       return "additive";
+    case SLICE:
+      return "slice";
     default:
       return "composite";
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallProjection::SliceDistance(const double origin[3], const double w[3], double& t) const
+{
+  const double denominator = vtkMath::Dot(this->SlicePlane, w);
+  if (!(std::abs(denominator) > 1e-12))
+  {
+    return false;
+  }
+  t = -(vtkMath::Dot(this->SlicePlane, origin) + this->SlicePlane[3]) / denominator;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -87,6 +114,9 @@ void vtkTyndallProjection::Ray::Add(double value, double dt)
     case MINIMUM:
       this->Extremum = this->Count > 0 ? std::min(this->Extremum, value) : value;
       break;
+    case SLICE:
+      this->Extremum = value; // the one sample, on the plane
+      break;
     case AVERAGE:
       if (value < this->P->AverageRange[0] || value > this->P->AverageRange[1])
       {
@@ -107,7 +137,7 @@ void vtkTyndallProjection::Ray::Add(double value, double dt)
 bool vtkTyndallProjection::Ray::Pixel(double rgba[4]) const
 {
   const int mode = this->P->Mode;
-  if (mode == MAXIMUM || mode == MINIMUM)
+  if (mode == MAXIMUM || mode == MINIMUM || mode == SLICE)
   {
     if (this->Count == 0)
     {

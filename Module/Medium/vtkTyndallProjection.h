@@ -22,7 +22,13 @@
  * - ADDITIVE: the sum of a(v) u dt / d over the samples, dt the step's
  *   length and d the property's scalar opacity unit distance (VTK scales
  *   the opacity table by its sample distance over the unit distance); grey,
- *   clamped to [0, 1], at alpha 1 wherever the ray crosses the box.
+ *   clamped to [0, 1], at alpha 1 wherever the ray crosses the box;
+ * - SLICE (VTK's slice blend mode with a vtkPlane as the property's slice
+ *   function; without one the mode is not a projection and is drawn as
+ *   composite, with a warning): the one sample where the ray meets the
+ *   plane (world coordinates, SliceDistance()), when that point lies on the
+ *   ray's part in the box (before opaque geometry); the pixel is c(v) and
+ *   a(v), premultiplied, as for MAXIMUM.
  *
  * What differs from VTK (Documentation/mapper.md): the CPU reference's
  * samples lie at the middles of equal steps (the GPU's where VTK's are, at
@@ -56,13 +62,15 @@ public:
     MAXIMUM,
     MINIMUM,
     AVERAGE,
-    ADDITIVE
+    ADDITIVE,
+    SLICE
   };
 
   /**
    * Reads the blend mode and AverageIPScalarRange of `mapper` (a mapper that
    * is not a vtkVolumeMapper, or a blend mode that is not a projection, is
-   * NONE) and the unit distance of `property` (component 0).
+   * NONE), the unit distance of `property` (component 0) and its slice
+   * function (SLICE needs a vtkPlane).
    */
   void Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property);
 
@@ -71,6 +79,13 @@ public:
   /// The mode's name ("maximum intensity", ...; "composite" for NONE).
   static const char* GetModeName(int mode);
   const double* GetAverageRange() const { return this->AverageRange; }
+  /// SLICE: the plane n . x + d = 0 (world; the slice function's normal and origin), as (n, d).
+  const double* GetSlicePlane() const { return this->SlicePlane; }
+  /**
+   * SLICE: the distance t along the world ray origin + t w where it meets
+   * the plane; false where it runs parallel to it.
+   */
+  bool SliceDistance(const double origin[3], const double w[3], double& t) const;
   double GetUnitDistance() const { return this->UnitDistance; }
 
   /**
@@ -98,6 +113,7 @@ public:
 private:
   int Mode = NONE;
   double AverageRange[2] = { 0.0, 0.0 };
+  double SlicePlane[4] = { 0.0, 0.0, 1.0, 0.0 };
   double UnitDistance = 1.0;
 };
 

@@ -360,6 +360,10 @@ void vtkTyndallSceneReader::UpdateGuests(
     {
       reason = "is drawn as isosurfaces";
     }
+    else if (g.Medium->GetTable().Has2D())
+    {
+      reason = "has a 2-D transfer function";
+    }
     else if (otherProperty && otherProperty->GetDetailNoise())
     {
       reason = "has procedural detail";

@@ -11,8 +11,9 @@
 //------------------------------------------------------------------------------
 void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
 {
-  // Every blend mode but the projections draws the medium (the isosurface
-  // and slice modes as composite, with a warning): shaded.
+  // Every blend mode but the projections (the slice through a plane
+  // included) is shaded: the composite medium, the isosurfaces, a slice
+  // without a plane (drawn as composite, with a warning).
   vtkTyndallProjection projection;
   projection.Read(mapper, property);
   this->On = property && !vtkParticipatingMediumProperty::SafeDownCast(property) &&

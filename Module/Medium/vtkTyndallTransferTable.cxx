@@ -1,7 +1,10 @@
 #include "vtkTyndallTransferTable.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkVolumeProperty.h"
 
@@ -25,6 +28,8 @@ bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransfe
   this->Minimum = lo;
   this->Maximum = hi;
   this->EmissionFromArray = false;
+  this->Transfer2D.clear(); // until Tabulate2D()
+  this->Transfer2DSize[0] = this->Transfer2DSize[1] = 0;
   this->Scale = this->Maximum > this->Minimum ? (Size - 1) / (this->Maximum - this->Minimum) : 0.0;
 
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
@@ -90,6 +95,117 @@ void vtkTyndallTransferTable::TabulateGradientOpacity(vtkPiecewiseFunction* func
   {
     const double g = this->GradientMaximum * i / (Size - 1);
     this->GradientOpacity[i] = std::min(std::max(function->GetValue(g), 0.0), 1.0);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallTransferTable::Tabulate2D(
+  vtkImageData* function, double distance, bool nearest, std::string& error)
+{
+  this->Transfer2DNearest = nearest;
+  this->Transfer2D.clear();
+  this->Transfer2DSize[0] = this->Transfer2DSize[1] = 0;
+  vtkDataArray* values =
+    function ? function->GetPointData()->GetScalars() : static_cast<vtkDataArray*>(nullptr);
+  int dims[3] = { 0, 0, 0 };
+  if (function)
+  {
+    function->GetDimensions(dims);
+  }
+  std::ostringstream os;
+  if (!function || !values || dims[0] < 1 || dims[1] < 1 || dims[2] != 1 ||
+    values->GetNumberOfComponents() != 4 ||
+    values->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1])
+  {
+    os << "the property's 2-D transfer function must be a W x H x 1 image of 4-component point "
+          "scalars (RGBA)";
+    if (function)
+    {
+      os << "; it is " << dims[0] << " x " << dims[1] << " x " << dims[2] << " of "
+         << (values ? values->GetNumberOfComponents() : 0) << " components";
+    }
+    error = os.str() + ".";
+    return false;
+  }
+  const vtkIdType count = values->GetNumberOfTuples();
+  std::vector<float> rgba(4 * static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      const double v = values->GetComponent(i, c);
+      if (!(v >= 0.0 && v <= 1.0))
+      {
+        os << "the property's 2-D transfer function has " << (c < 3 ? "a colour" : "an opacity")
+           << " of " << v << " at pixel " << i << "; each lies in [0, 1].";
+        error = os.str();
+        return false;
+      }
+      rgba[4 * i + c] = static_cast<float>(v);
+    }
+  }
+  this->Transfer2D.swap(rgba);
+  this->Transfer2DSize[0] = dims[0];
+  this->Transfer2DSize[1] = dims[1];
+  // The extinction row, an upper bound of the function's extinction between
+  // entries i - 1 and i + 1 (so that interpolating the row bounds it too):
+  // the largest opacity of the pixel columns that reach that stretch of u,
+  // over every gradient.
+  std::vector<double> columns(dims[0], 0.0);
+  for (int x = 0; x < dims[0]; ++x)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      columns[x] =
+        std::max(columns[x], static_cast<double>(this->Transfer2D[4 * (y * dims[0] + x) + 3]));
+    }
+  }
+  for (int i = 0; i < Size; ++i)
+  {
+    const double lo = std::max(i - 1, 0) / (Size - 1.0) * dims[0] - 0.5;
+    const double hi = std::min(i + 1, Size - 1) / (Size - 1.0) * dims[0] - 0.5;
+    const int first = std::max(static_cast<int>(std::floor(lo)) - 1, 0);
+    const int last = std::min(static_cast<int>(std::ceil(hi)) + 1, dims[0] - 1);
+    double largest = 0.0;
+    for (int x = first; x <= last; ++x)
+    {
+      largest = std::max(largest, columns[x]);
+    }
+    this->Extinction[i] =
+      vtkTransmittanceMapMath::ExtinctionFromOpacity(std::min(largest, 0.999999), distance, 1.0);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallTransferTable::Transfer2DAt(double u, double g, double rgba[4]) const
+{
+  const int w = this->Transfer2DSize[0], h = this->Transfer2DSize[1];
+  if (this->Transfer2DNearest)
+  {
+    // The pixel u and g fall in (the GPU's nearest filtering).
+    const int i = std::min(std::max(static_cast<int>(std::floor(u * w)), 0), w - 1);
+    const int j = std::min(std::max(static_cast<int>(std::floor(g * h)), 0), h - 1);
+    const float* p = this->Transfer2D.data() + 4 * (static_cast<size_t>(j) * w + i);
+    std::copy(p, p + 4, rgba);
+    return;
+  }
+  // Pixel centres at (i + 0.5) / W: the position in pixels, clamped to the centres.
+  const double x = std::min(std::max(u * w - 0.5, 0.0), w - 1.0);
+  const double y = std::min(std::max(g * h - 0.5, 0.0), h - 1.0);
+  const int i = std::min(static_cast<int>(x), std::max(w - 2, 0));
+  const int j = std::min(static_cast<int>(y), std::max(h - 2, 0));
+  const int i1 = std::min(i + 1, w - 1), j1 = std::min(j + 1, h - 1);
+  const double fx = x - i, fy = y - j;
+  const float* p00 = this->Transfer2D.data() + 4 * (static_cast<size_t>(j) * w + i);
+  const float* p10 = this->Transfer2D.data() + 4 * (static_cast<size_t>(j) * w + i1);
+  const float* p01 = this->Transfer2D.data() + 4 * (static_cast<size_t>(j1) * w + i);
+  const float* p11 = this->Transfer2D.data() + 4 * (static_cast<size_t>(j1) * w + i1);
+  for (int c = 0; c < 4; ++c)
+  {
+    const double bottom = p00[c] + fx * (p10[c] - p00[c]);
+    const double top = p01[c] + fx * (p11[c] - p01[c]);
+    rgba[c] = bottom + fy * (top - bottom);
   }
 }
 

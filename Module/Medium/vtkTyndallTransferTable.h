@@ -38,6 +38,7 @@
 #include <vector>     // For std::vector
 
 class vtkColorTransferFunction;
+class vtkImageData;
 class vtkPiecewiseFunction;
 class vtkVolumeProperty;
 
@@ -88,6 +89,33 @@ public:
     Position(g / this->GradientMaximum * (Size - 1), k, f);
     return this->GradientOpacity[k] + f * (this->GradientOpacity[k + 1] - this->GradientOpacity[k]);
   }
+  ///@}
+
+  ///@{
+  /**
+   * A plain property's 2-D transfer function (TF_2D,
+   * vtkVolumeProperty::GetTransferFunction2D()), as VTK 9.1 reads it: an
+   * image of W x H pixels of 4 components (colour, opacity), its x axis the
+   * scalar over [Minimum, Maximum], its y axis the gradient magnitude over
+   * [0, GradientMaximum] (the change per average voxel, TabulateGradientOpacity()'s
+   * units), each read at u = position / extent across the whole image
+   * (pixel i spans [i / W, (i + 1) / W]) and interpolated bilinearly
+   * between pixel centres, clamped at the edges (the GPU's texture lookup),
+   * or with `nearest` (VTK reads it so with the property's nearest
+   * interpolation) the pixel the point falls in. Tabulate2D() copies it
+   * (false, with `error`, for no image, another shape than W x H x 1 with
+   * W, H >= 1, other than 4 components, a non-finite value, or a colour or
+   * opacity outside [0, 1]); it replaces Extinction by an upper bound of
+   * the function's extinction around each entry, over every gradient, at
+   * `distance` per opacity (what empty-space skipping and the majorant
+   * read). Transfer2DAt() is the lookup (rgba). Build() clears it.
+   */
+  bool Tabulate2D(vtkImageData* function, double distance, bool nearest, std::string& error);
+  void Transfer2DAt(double u, double g, double rgba[4]) const;
+  bool Has2D() const { return !this->Transfer2D.empty(); }
+  std::vector<float> Transfer2D; // RGBA, row by row (y = gradient), W x H
+  int Transfer2DSize[2] = { 0, 0 };
+  bool Transfer2DNearest = false;
   ///@}
 
   double Minimum = 0.0;

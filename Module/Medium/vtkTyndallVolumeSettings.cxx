@@ -23,9 +23,8 @@ const char* NotDrawnBlendMode(int mode)
     case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
     case vtkVolumeMapper::ADDITIVE_BLEND:
     case vtkVolumeMapper::ISOSURFACE_BLEND:
+    case vtkVolumeMapper::SLICE_BLEND: // with a vtkPlane (else named in NotDrawn())
       return nullptr;
-    case vtkVolumeMapper::SLICE_BLEND:
-      return "slice";
     default:
       return "unknown";
   }
@@ -91,6 +90,11 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   }
   vtkTyndallProjection projection;
   projection.Read(mapper, property);
+  if (mapper && mapper->GetBlendMode() == vtkVolumeMapper::SLICE_BLEND && !projection.Enabled())
+  {
+    notDrawn.push_back("the slice blend mode without a vtkPlane as the property's slice function "
+                       "(drawn as composite)");
+  }
   auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
   if (projection.Enabled() && medium && medium->GetDetailNoise())
   {
@@ -138,9 +142,15 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   {
     notDrawn.push_back("gradient opacity in the isosurface blend mode (ignored)");
   }
-  if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
+  // 2-D transfer functions are drawn but in a projection or for isosurfaces.
+  if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D &&
+    (projection.Enabled() ||
+      (mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND)))
   {
-    notDrawn.push_back("2-D transfer functions (TF_2D: the 1-D functions are used)");
+    notDrawn.push_back(std::string("2-D transfer functions in the ") +
+      (projection.Enabled() ? vtkTyndallProjection::GetModeName(projection.GetMode())
+                            : "isosurface") +
+      " blend mode (TF_2D: the 1-D functions are used)");
   }
   return notDrawn;
 }

@@ -7,8 +7,10 @@
  * setting of the volume's mapper, its property and the renderer that VTK
  * draws and Tyndall does not yet (Documentation/mapper.md, "Compatibility
  * with VTK's mapper"), with what Tyndall draws instead:
- * - the slice blend mode (drawn as composite; the projections are drawn,
- *   vtkTyndallProjection, and the isosurface mode, vtkTyndallIsosurfaces);
+ * - the slice blend mode without a vtkPlane as the property's slice
+ *   function (drawn as composite; the projections, the slice through a
+ *   plane included, are drawn, vtkTyndallProjection, and the isosurface
+ *   mode, vtkTyndallIsosurfaces);
  * - procedural detail in a projection blend mode (the grid's scalars are
  *   projected) or the isosurface blend mode (the grid's surfaces are drawn);
  * - a label-map mask (vtkParticipatingMediumMapper::SetMaskInput() with
@@ -22,7 +24,8 @@
  *   others: vtkTyndallShading);
  * - gradient opacity in a projection or the isosurface blend mode
  *   (ignored; drawn in the others: vtkTyndallGridMedium::GetGradientOpacity());
- * - 2-D transfer functions (TF_2D: the 1-D functions are used).
+ * - 2-D transfer functions in a projection or the isosurface blend mode
+ *   (TF_2D: the 1-D functions are used; drawn in the others).
  * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
  * vtkTyndallGridMedium::GetNearest().)
  * The first component's settings are read (more components are refused

@@ -143,7 +143,7 @@ private:
     }
     if (s.Projected)
     {
-      this->ProjectPixel(rays, t0, t1, radiance, transmittance);
+      this->ProjectPixel(origin, w, rays, t0, t1, radiance, transmittance);
       return;
     }
     const double steps = std::max(1.0, std::ceil((t1 - t0) / s.Step));
@@ -263,21 +263,39 @@ private:
   // vtkTransmittanceProjectionFS.glsl): the grid's scalars at the middles of
   // n equal steps of [t0, t1], gathered by vtkTyndallProjection::Ray; the
   // premultiplied pixel, its transmittance 1 - alpha.
-  void ProjectPixel(
-    const LocalRays& rays, double t0, double t1, double* radiance, double transmittance[3]) const
+  void ProjectPixel(const double origin[3], const double w[3], const LocalRays& rays, double t0,
+    double t1, double* radiance, double transmittance[3]) const
   {
     const vtkTyndallGridMedium& grid = *this->S->Projected;
-    vtkTyndallProjection::Ray ray(grid.GetProjection(), grid.GetTable());
-    const int n = static_cast<int>(std::max(1.0, std::ceil((t1 - t0) / this->S->Step)));
-    const double dt = (t1 - t0) / n;
-    for (int m = 0; m < n; ++m)
+    const vtkTyndallProjection& projection = grid.GetProjection();
+    vtkTyndallProjection::Ray ray(projection, grid.GetTable());
+    // The scalar at the distance t, to the ray (kept, not missing).
+    auto add = [&](double t, double dt)
     {
       double p[3];
-      rays.At(0, t0 + (m + 0.5) * dt, p);
+      rays.At(0, t, p);
       const double value = grid.GetClipRegion().InsideIndex(p) ? grid.FieldScalar(p) : std::nan("");
       if (!std::isnan(value))
       {
         ray.Add(value, dt);
+      }
+    };
+    double t;
+    if (projection.GetMode() == vtkTyndallProjection::SLICE)
+    {
+      // The one sample where the ray meets the plane, on its part in the box.
+      if (projection.SliceDistance(origin, w, t) && t >= t0 && t <= t1)
+      {
+        add(t, 0.0);
+      }
+    }
+    else
+    {
+      const int n = static_cast<int>(std::max(1.0, std::ceil((t1 - t0) / this->S->Step)));
+      const double dt = (t1 - t0) / n;
+      for (int m = 0; m < n; ++m)
+      {
+        add(t0 + (m + 0.5) * dt, dt);
       }
     }
     double rgba[4];

@@ -29,6 +29,7 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
   variant.Clip = grid.GetClip() != nullptr;
   variant.Chromatic = grid.GetParameters().GetChromatic();
   variant.GradientOpacity = grid.GetGradientOpacity();
+  variant.Transfer2D = textures.GetTransfer2DTexture() != nullptr;
   variant.Isosurfaces = grid.GetIsosurfaces().Enabled();
   variant.IsoCount = static_cast<int>(grid.GetIsosurfaces().GetValues().size());
   // Emission from a separate array glows where the extinction is 0, and
@@ -77,9 +78,21 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
     static_cast<float>(table.TextureShift()) };
   program->SetUniform2f("scalarToTable", toTable);
   program->SetUniformf("densityScale", static_cast<float>(grid.GetParameters().DensityScale));
-  if (grid.GetGradientOpacity())
+  if (vtkTextureObject* transfer2D = textures.GetTransfer2DTexture())
   {
-    // Declared only by the gradient-opacity variant: d value / d q_i ->
+    // Declared only by the 2-D transfer function's variant: the scalar on
+    // the function's x axis (the finite range), the extinction of its opacity.
+    program->SetUniformi("transfer2DTexture", transfer2D->GetTextureUnit());
+    const double span = table.Maximum - table.Minimum;
+    const float toUnit[2] = { span > 0.0 ? static_cast<float>(1.0 / span) : 0.0f,
+      span > 0.0 ? static_cast<float>(-table.Minimum / span) : 0.0f };
+    program->SetUniform2f("transfer2DScalar", toUnit);
+    program->SetUniformf("transfer2DExtinction",
+      static_cast<float>(grid.GetParameters().DensityScale / grid.GetMinimumWorldSpacing()));
+  }
+  if (grid.GetGradientOpacity() || textures.GetTransfer2DTexture())
+  {
+    // Declared only by the gradient-opacity and 2-D function variants: d value / d q_i ->
     // the change per average voxel (q spans the box, BoxHigh - BoxLow samples).
     float toVoxel[3];
     for (int a = 0; a < 3; ++a)

@@ -327,6 +327,30 @@ bool vtkTransmittanceMediumTextures::UploadTable(
     vtkErrorWithObjectMacro(reporter, << "Could not create the transfer-function texture.");
     return false;
   }
+  const vtkTyndallTransferTable& table = medium.GetTable();
+  if (!table.Has2D())
+  {
+    if (this->Transfer2DTexture)
+    {
+      this->Transfer2DTexture->ReleaseGraphicsResources(window);
+    }
+    this->Transfer2DTexture = nullptr;
+    return true;
+  }
+  if (!this->Transfer2DTexture)
+  {
+    this->Transfer2DTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  // Linear between pixel centres (nearest with the nearest interpolation),
+  // clamped at the edges (VTK's lookup).
+  vtkTransmittanceOffscreenDraw::SetClamped(
+    this->Transfer2DTexture, window, !table.Transfer2DNearest);
+  if (!this->Transfer2DTexture->Create2DFromRaw(table.Transfer2DSize[0], table.Transfer2DSize[1], 4,
+        VTK_FLOAT, const_cast<float*>(table.Transfer2D.data())))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the 2-D transfer-function texture.");
+    return false;
+  }
   return true;
 }
 
@@ -393,8 +417,8 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
-         this->TransferTexture.Get(), this->BlockTexture.Get(), this->DetailTexture.Get(),
-         this->EmissionTexture.Get(), this->ScatteringTexture.Get() })
+         this->TransferTexture.Get(), this->Transfer2DTexture.Get(), this->BlockTexture.Get(),
+         this->DetailTexture.Get(), this->EmissionTexture.Get(), this->ScatteringTexture.Get() })
   {
     if (texture)
     {
@@ -404,6 +428,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->VolumeTexture = nullptr;
   this->ValidityTexture = nullptr;
   this->TransferTexture = nullptr;
+  this->Transfer2DTexture = nullptr;
   this->BlockTexture = nullptr;
   this->DetailTexture = nullptr;
   this->EmissionTexture = nullptr;

@@ -81,6 +81,8 @@ public:
   /// Null when the scalars hold no NaN.
   vtkTextureObject* GetValidityTexture() const { return this->ValidityTexture; }
   vtkTextureObject* GetTransferTexture() const { return this->TransferTexture; }
+  /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()); null without.
+  vtkTextureObject* GetTransfer2DTexture() const { return this->Transfer2DTexture; }
   /**
    * When what a map build sees of the uploaded medium last changed: its
    * scalars, its extinction (not its colours) or its clipping.
@@ -132,6 +134,7 @@ private:
   vtkSmartPointer<vtkTextureObject> VolumeTexture;
   vtkSmartPointer<vtkTextureObject> ValidityTexture;
   vtkSmartPointer<vtkTextureObject> TransferTexture;
+  vtkSmartPointer<vtkTextureObject> Transfer2DTexture;
   vtkSmartPointer<vtkTextureObject> BlockTexture;
   vtkSmartPointer<vtkTextureObject> DetailTexture;
   vtkSmartPointer<vtkTextureObject> EmissionTexture;

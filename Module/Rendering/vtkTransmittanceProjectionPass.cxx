@@ -48,7 +48,9 @@ bool vtkTransmittanceProjectionPass::Render(
   // across the box would take more than MaximumSteps.
   const double sampleDistance = frame.Integrator.SampleDistance;
   double step = sampleDistance > 0.0 ? sampleDistance : frame.MinimumSpacing;
-  const bool lengthened = frame.Diagonal / step > MaximumSteps - 2;
+  // (The slice takes one sample: never lengthened.)
+  const bool lengthened = frame.Medium->GetProjection().GetMode() != vtkTyndallProjection::SLICE &&
+    frame.Diagonal / step > MaximumSteps - 2;
   if (lengthened)
   {
     step = frame.Diagonal / (MaximumSteps - 2);
@@ -83,6 +85,13 @@ void vtkTransmittanceProjectionPass::SetUniforms(
     static_cast<float>(std::min(range[1], 1e38)) };
   program->SetUniform2f("averageRange", average);
   program->SetUniformf("additiveScale", static_cast<float>(1.0 / projection.GetUnitDistance()));
+  if (projection.GetMode() == vtkTyndallProjection::SLICE)
+  {
+    // Declared only by the slice variant.
+    const double* plane = projection.GetSlicePlane();
+    const float slice[4] = { float(plane[0]), float(plane[1]), float(plane[2]), float(plane[3]) };
+    program->SetUniform4f("slicePlane", slice);
+  }
 }
 
 //------------------------------------------------------------------------------

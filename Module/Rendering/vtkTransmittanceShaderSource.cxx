@@ -74,6 +74,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
   define("SHADING", variant.Shading ? 1 : 0);
   define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
+  define("TRANSFER_2D", variant.Transfer2D ? 1 : 0);
   define("ISOSURFACES", variant.Isosurfaces ? 1 : 0);
   define("ISO_COUNT", variant.IsoCount);
   define("ISO_MAX_OPACITY", vtkTyndallIsosurfaces::MaximumOpacity);
@@ -84,6 +85,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("PROJECTION_MINIMUM", static_cast<int>(P::MINIMUM));
   define("PROJECTION_AVERAGE", static_cast<int>(P::AVERAGE));
   define("PROJECTION_ADDITIVE", static_cast<int>(P::ADDITIVE));
+  define("PROJECTION_SLICE", static_cast<int>(P::SLICE));
   // Procedural detail: wave groups, and the preprocessor loop over them.
   define("DETAIL_GROUPS", variant.DetailGroups);
   define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);

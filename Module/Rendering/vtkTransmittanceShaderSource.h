@@ -58,6 +58,9 @@
  *   row TYNDALL_TABLE_GRADIENT_ROW (TYNDALL_TABLE_SIZE entries);
  * - TYNDALL_SHADING (RAY_CAST only): a plain property's gradient shading
  *   (vtkTyndallShading) is the camera samples' source;
+ * - TYNDALL_TRANSFER_2D: a plain property's 2-D transfer function classifies
+ *   the medium (colour and opacity at the scalar and its gradient
+ *   magnitude, transfer2DTexture);
  * - TYNDALL_ISOSURFACES: VTK's isosurface blend mode (vtkTyndallIsosurfaces):
  *   the camera samples (RAY_CAST) and the light (every pass) meet the
  *   TYNDALL_ISO_COUNT surfaces a step crosses instead of the medium;
@@ -169,6 +172,8 @@ public:
     bool Shading = false;
     /// A plain property's gradient opacity (vtkTyndallGridMedium::GetGradientOpacity()).
     bool GradientOpacity = false;
+    /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()).
+    bool Transfer2D = false;
     /// VTK's isosurface blend mode (vtkTyndallIsosurfaces) and its number of iso values.
     bool Isosurfaces = false;
     int IsoCount = 0;

@@ -322,8 +322,9 @@ public:
   {
     std::vector<vtkTextureObject*> textures = { this->Textures->GetVolumeTexture(),
       this->Textures->GetValidityTexture(), this->Textures->GetTransferTexture(),
-      this->Textures->GetBlockTexture(), this->Textures->GetDetailTexture(),
-      this->Textures->GetEmissionTexture(), this->Textures->GetScatteringTexture() };
+      this->Textures->GetTransfer2DTexture(), this->Textures->GetBlockTexture(),
+      this->Textures->GetDetailTexture(), this->Textures->GetEmissionTexture(),
+      this->Textures->GetScatteringTexture() };
     for (const vtkTransmittanceMediumTextures* guest : this->GuestTextures)
     {
       textures.push_back(guest->GetVolumeTexture());

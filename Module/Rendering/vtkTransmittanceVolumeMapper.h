@@ -11,12 +11,12 @@
  * vtkVolumeProperty with VTK's meaning (Shade off: VTK's unlit
  * emission-absorption picture; Shade on: VTK's gradient shading, each
  * light shadowed by the medium, vtkTyndallShading; its nearest or linear interpolation); VTK's
- * projection blend modes (maximum, minimum and average intensity, additive) are drawn as VTK draws
- * them (vtkTyndallProjection), and its isosurface blend mode as VTK draws it, each surface also
- * shadowing what lies behind it from the light (vtkTyndallIsosurfaces); the model is defined in
- * Documentation/rendering-model.md, and
- * vtkSingleScatteringReference renders the same scene on the CPU, read by the same internal reader.
- * This class holds only the GPU integrator's settings.
+ * projection blend modes (maximum, minimum and average intensity, additive, the slice) are drawn as
+ * VTK draws them (vtkTyndallProjection), and its isosurface blend mode as VTK draws it, each
+ * surface also shadowing what lies behind it from the light (vtkTyndallIsosurfaces); the model is
+ * defined in Documentation/rendering-model.md, and vtkSingleScatteringReference renders the same
+ * scene on the CPU, read by the same internal reader. This class holds only the GPU integrator's
+ * settings.
  *
  * Light transmittance, the expensive part of single scattering, comes from
  * per-light transmittance maps built once and reused for every camera ray:

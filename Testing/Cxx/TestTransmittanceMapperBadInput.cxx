@@ -19,6 +19,7 @@
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
 
 #include "TyndallTestCheck.h"
@@ -244,6 +245,39 @@ int TestTransmittanceMapperBadInput(int, char*[])
     window->Render();
     Check(!observer->GetError() && CountForeground(window) > withoutVolume,
       "the mask removed: the volume drawn again");
+
+    // A plain property's 2-D transfer function that cannot be read: an
+    // error naming it, nothing of the volume drawn; a valid one is drawn.
+    vtkSmartPointer<vtkVolumeProperty> medium = property; // the volume's, kept while swapped
+    vtkNew<vtkVolumeProperty> plain;
+    plain->DeepCopy(property);
+    plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+    volume->SetProperty(plain);
+    auto expectTransfer2D =
+      [&](vtkImageData* function, const std::string& text, const std::string& what)
+    {
+      plain->SetTransferFunction2D(function);
+      observer->Clear();
+      window->Render();
+      Check(observer->GetError() && observer->GetErrorMessage().find(text) != std::string::npos,
+        what + ": an error naming it (" + observer->GetErrorMessage() + ")");
+      Check(CountForeground(window) == withoutVolume, what + ": nothing of the volume drawn");
+    };
+    expectTransfer2D(nullptr, "no 2-D transfer function", "TF_2D without a function");
+    // (vtkVolumeProperty itself refuses, with its own error, what is not a
+    // 4-component float image.)
+    vtkSmartPointer<vtkImageData> function = MakeImage(8, 4, 1, 4, 1.5);
+    expectTransfer2D(function, "in [0, 1]", "a 2-D function's opacity of 1.5");
+    function = MakeImage(8, 4, 1, 4, std::numeric_limits<double>::quiet_NaN());
+    expectTransfer2D(function, "in [0, 1]", "a NaN in a 2-D function");
+    function = MakeImage(8, 4, 2, 4, 0.5);
+    expectTransfer2D(function, "W x H x 1", "a 2-D function of two slices");
+    plain->SetTransferFunction2D(MakeImage(8, 4, 1, 4, 0.5));
+    observer->Clear();
+    window->Render();
+    Check(!observer->GetError() && CountForeground(window) > withoutVolume,
+      "a valid 2-D function: drawn");
+    volume->SetProperty(medium);
   }
 
   // No lights: ambient and emission only, no error; here the volume is dark.

@@ -22,7 +22,9 @@
 // shaded), isosurfaces (TestGPURayCastIsosurface:
 // three values on the wavelet, shaded and not, under the headlight and a
 // scene light, and a CT's skin and bone; against VTK without shadows,
-// against the CPU reference with them), and an
+// against the CPU reference with them), the slice blend mode
+// (TestGPURayCastSlicePlane, alone and cropped), 2-D transfer functions
+// (TestGPURayCastTransfer2D: the wavelet, and the CT shaded), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
 // lights). One scene is Tyndall's own: isosurfaces of a
 // vtkParticipatingMediumProperty lit by single scattering under a scene
@@ -373,6 +375,50 @@ void UnlitAmbientIsoProperty(vtkVolumeProperty* property, const double range[2])
   property->SetAmbient(0.0);
 }
 
+// TestGPURayCastSlicePlane's property: the isosurface colours and
+// opacities, a plane through (1, 0, 0) at 45 degrees as the slice function.
+void SliceProperty(vtkVolumeProperty* property, const double range[2])
+{
+  UnshadedIsoProperty(property, range);
+  vtkNew<vtkPlane> slice;
+  slice->SetOrigin(1.0, 0.0, 0.0);
+  slice->SetNormal(0.707107, 0.0, 0.707107);
+  property->SetSliceFunction(slice);
+}
+
+// TestGPURayCastTransfer2D's 2-D function (256 x 256, RGBA): colour and an
+// opacity up to 0.25 growing with the gradient magnitude, for scalars at 51
+// to 74 % of the range and gradients below a fifth of the axis; TF_2D.
+void Transfer2DProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ColorProperty(property, range);
+  const int bins = 256;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(bins, bins, 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  auto* rgba = static_cast<float*>(image->GetScalarPointer());
+  std::fill(rgba, rgba + 4 * bins * bins, 0.0f);
+  for (int j = 0; j < 50; ++j)
+  {
+    for (int i = 131; i < 190; ++i)
+    {
+      float* p = rgba + 4 * (bins * j + i);
+      p[0] = static_cast<float>(i) / bins;
+      p[1] = p[2] = static_cast<float>(j) / 50.0f;
+      p[3] = 0.25f * static_cast<float>(j) / 50.0f;
+    }
+  }
+  property->SetTransferFunction2D(image);
+  property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+}
+
+// Transfer2DProperty with Shade on.
+void ShadedTransfer2DProperty(vtkVolumeProperty* property, const double range[2])
+{
+  Transfer2DProperty(property, range);
+  property->ShadeOn();
+}
+
 // A CT's skin (translucent) and bone (opaque), Shade on.
 void HeadIsoProperty(vtkVolumeProperty* property, const double range[2])
 {
@@ -570,6 +616,19 @@ std::vector<Scene> Scenes()
       HalfMask },
     { "Isosurface-WaveletMedium", MakeWavelet, UnlitAmbientIsoProperty, Blend(M::ISOSURFACE_BLEND),
       SceneLight, true, 35.0, false, true, nullptr, true },
+    { "Slice-Wavelet", MakeWavelet, SliceProperty, Blend(M::SLICE_BLEND), Tilted, true },
+    { "Slice-WaveletCropping", MakeWavelet, SliceProperty,
+      [](vtkVolumeMapper* m)
+      {
+        m->SetBlendModeToSlice();
+        m->CroppingOn();
+        m->SetCroppingRegionPlanes(0, 32, -31, 32, -31, 32);
+        m->SetCroppingRegionFlagsToSubVolume();
+      },
+      Tilted, true },
+    { "Transfer2D-Wavelet", MakeWavelet, Transfer2DProperty, none, Tilted, true },
+    { "Transfer2D-ShadedHead", MakeHead, ShadedTransfer2DProperty, none, Tilted, true, 35.0, false,
+      true },
     { "Head-MaximumIntensity", MakeHead,
       [](vtkVolumeProperty* p, const double r[2]) { RampProperty(p, r, 1.0); },
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },

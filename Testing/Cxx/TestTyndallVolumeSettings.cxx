@@ -5,9 +5,9 @@
 // which both renderers use (no OpenGL):
 //
 // 0. VTK's projection blend modes (vtkTyndallProjection) and its
-//    isosurface mode (vtkTyndallIsosurfaces) are drawn: not named; the slice
-//    mode is, and procedural detail and gradient shading in a projection,
-//    gradient opacity in a projection or the isosurface mode;
+//    isosurface mode (vtkTyndallIsosurfaces) are drawn: not named, nor the
+//    slice mode with a vtkPlane; without one it is, and procedural detail and gradient shading in a
+//    projection, gradient opacity in a projection or the isosurface mode;
 // 1. a plain vtkVolumeProperty at VTK's defaults (composite, shade off, no
 //    gradient opacity, TF_1D, nearest) gives no warning, nor linear, nor does a
 //    vtkParticipatingMediumProperty with Shade on and nearest interpolation (Tyndall's meaning);
@@ -30,6 +30,7 @@
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -43,6 +44,7 @@
 
 #include "TyndallTestCheck.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
@@ -141,10 +143,9 @@ int TestTyndallVolumeSettings(int, char*[])
   vtkSmartVolumeMapper* mapper = scene.Mapper;
   // The projections (vtkTyndallProjection) and isosurfaces
   // (vtkTyndallIsosurfaces) are drawn: nothing said.
-  for (int mode :
-    { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND,
-      vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, vtkVolumeMapper::ADDITIVE_BLEND,
-      vtkVolumeMapper::ISOSURFACE_BLEND })
+  for (int mode : { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND,
+         vtkVolumeMapper::MINIMUM_INTENSITY_BLEND, vtkVolumeMapper::AVERAGE_INTENSITY_BLEND,
+         vtkVolumeMapper::ADDITIVE_BLEND, vtkVolumeMapper::ISOSURFACE_BLEND })
   {
     mapper->SetBlendMode(mode);
     Check(scene.Read() == 0, "a projection or the isosurface blend mode is drawn: no warning");
@@ -152,6 +153,15 @@ int TestTyndallVolumeSettings(int, char*[])
   CheckSetting(
     scene, "slice blend mode", [&] { mapper->SetBlendModeToSlice(); },
     [&] { mapper->SetBlendModeToComposite(); });
+  // With a vtkPlane as its slice function the slice is drawn (vtkTyndallProjection).
+  vtkNew<vtkPlane> slicePlane;
+  plain->SetSliceFunction(slicePlane);
+  mapper->SetBlendModeToSlice();
+  Check(scene.Read() == 0 &&
+      scene.Reader.GetMedium().GetProjection().GetMode() == vtkTyndallProjection::SLICE,
+    "the slice blend mode with a vtkPlane: drawn, no warning");
+  plain->SetSliceFunction(nullptr);
+  mapper->SetBlendModeToComposite();
   // Shading in a projection: VTK's projections are unshaded here.
   mapper->SetBlendModeToMaximumIntensity();
   CheckSetting(
@@ -194,10 +204,26 @@ int TestTyndallVolumeSettings(int, char*[])
   plain->DisableGradientOpacityOff();
   Check(scene.Read() == 0 && !scene.Reader.GetMedium().GetGradientOpacity(),
     "a gradient opacity of 1 everywhere changes nothing: no warning, not read");
+  // 2-D transfer functions are drawn (vtkTyndallTransferTable::Has2D()), but
+  // in a projection or for isosurfaces.
+  vtkNew<vtkImageData> transfer2D;
+  transfer2D->SetDimensions(4, 3, 1);
+  transfer2D->AllocateScalars(VTK_FLOAT, 4);
+  auto* tf = static_cast<float*>(transfer2D->GetScalarPointer());
+  std::fill(tf, tf + 4 * 4 * 3, 0.5f);
+  plain->SetTransferFunction2D(transfer2D);
+  plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+  Check(scene.Read() == 0 && scene.Reader.GetMedium().GetTable().Has2D(),
+    "2-D transfer functions in composite: drawn, no warning");
+  plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
+  Check(scene.Read() == 0 && !scene.Reader.GetMedium().GetTable().Has2D(),
+    "back to TF_1D: the 2-D function dropped");
+  mapper->SetBlendModeToMaximumIntensity();
   CheckSetting(
-    scene, "2-D transfer functions",
+    scene, "2-D transfer functions in the maximum intensity blend mode",
     [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); },
     [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D); });
+  mapper->SetBlendModeToComposite();
   // Depth peeling for volumes (ParaView's default): said only with
   // translucent geometry in the renderer.
   scene.Renderer->UseDepthPeelingOn();
@@ -216,17 +242,20 @@ int TestTyndallVolumeSettings(int, char*[])
     [&] { scene.Renderer->UseDepthPeelingForVolumesOff(); });
 
   // Two at once: one warning naming both; a change of the set warns again.
-  mapper->SetBlendModeToSlice();
+  mapper->SetBlendModeToMaximumIntensity();
+  plain->ShadeOn();
   plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
-  Check(scene.Read("slice blend mode") == 1 &&
+  Check(scene.Read("gradient shading") == 1 &&
       scene.Log->Messages.front().find("2-D transfer functions") != std::string::npos &&
       scene.Log->Messages.size() == 1,
     "two settings: one warning naming both");
   plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
-  Check(scene.Read("slice blend mode") == 1 &&
+  Check(scene.Read("gradient shading") == 1 &&
       scene.Log->Messages.front().find("2-D transfer functions") == std::string::npos,
     "one of them back to its default: warned again, naming the other");
+  plain->ShadeOff();
   // Shading in the slice (drawn as composite) and isosurface blend modes is drawn.
+  mapper->SetBlendModeToSlice();
   plain->ShadeOn();
   Check(scene.Read("gradient shading") == 0, "gradient shading in the slice mode: drawn");
   mapper->SetBlendModeToIsoSurface();
@@ -240,10 +269,10 @@ int TestTyndallVolumeSettings(int, char*[])
   other->SetMapper(mapper);
   vtkNew<vtkVolumeProperty> shaded;
   shaded->DeepCopy(plain);
-  shaded->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+  shaded->ShadeOn();
   other->SetProperty(shaded);
   scene.Renderer->AddVolume(other);
-  mapper->SetBlendModeToComposite();
+  mapper->SetBlendModeToMaximumIntensity();
   int said = 0;
   for (int frame = 0; frame < 3; ++frame)
   {
@@ -252,8 +281,9 @@ int TestTyndallVolumeSettings(int, char*[])
     Check(scene.Reader.Update(scene.Renderer, other, scene.Reporter), "the other volume is read");
     said += static_cast<int>(scene.Log->Messages.size());
   }
-  Check(said == 1, "two volumes of one mapper: the 2-D one said once over three frames");
+  Check(said == 1, "two volumes of one mapper: the shaded one said once over three frames");
   scene.Renderer->RemoveVolume(other);
+  mapper->SetBlendModeToComposite();
 
   // A vtkMultiVolume: an error, nothing read.
   vtkNew<vtkMultiVolume> multi;

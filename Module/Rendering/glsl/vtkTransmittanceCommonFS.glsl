@@ -139,7 +139,7 @@ float tyndallFootprint = 0.0;
 // procedural detail brings vtkTransmittanceDetailFS.glsl (TYNDALL_DETAIL_GROUPS > 0).
 //TYNDALL::Medium
 
-#if TYNDALL_SHADING || TYNDALL_GRADIENT_OPACITY
+#if TYNDALL_SHADING || TYNDALL_GRADIENT_OPACITY || TYNDALL_TRANSFER_2D
 // The scalar's change across one texel each way along each texture axis
 // at the texture coordinate t, F(t + d_i) - F(t - d_i) (d_i one texel); 0
 // where a difference meets missing data. d value / d q (box coordinates q)
@@ -182,23 +182,50 @@ vec3 tyndallScalarGradient(vec3 x)
 }
 #endif
 
-#if TYNDALL_GRADIENT_OPACITY
-// A plain property's gradient opacity at the texture coordinate t (CPU
-// twin: vtkTyndallGridMedium::GradientOpacityAt()): the scalar's change per
-// average voxel, |d value / d q_i * gradientBoxToVoxel_i|, through the
-// table's gradient row over [0, GradientMaximum] (gradientToTable: its
-// inverse), clamped to its end.
+#if TYNDALL_GRADIENT_OPACITY || TYNDALL_TRANSFER_2D
+// The scalar's change per average voxel at the texture coordinate t,
+// |d value / d q_i * gradientBoxToVoxel_i|, over GradientMaximum
+// (gradientToTable: its inverse), clamped to 1: what a plain property's
+// gradient opacity and 2-D transfer function read, as VTK 9.1 does (CPU
+// twin: vtkTyndallGridMedium::GradientOpacityAt(), Transfer2DSample()).
 uniform vec3 gradientBoxToVoxel;
 uniform float gradientToTable;
 
-float tyndallGradientOpacity(vec3 t)
+float tyndallGradientMagnitude(vec3 t)
 {
   vec3 d;
   vec3 perBox = tyndallTexelDifferences(t, d) * volumeTexScale / (2.0 * d);
-  float g = min(length(perBox * gradientBoxToVoxel) * gradientToTable, 1.0);
-  float coord = g * (float(TYNDALL_TABLE_SIZE) - 1.0) / float(TYNDALL_TABLE_SIZE) +
-    0.5 / float(TYNDALL_TABLE_SIZE);
+  return min(length(perBox * gradientBoxToVoxel) * gradientToTable, 1.0);
+}
+#endif
+
+#if TYNDALL_GRADIENT_OPACITY
+// A plain property's gradient opacity at the texture coordinate t: the
+// table's gradient row at tyndallGradientMagnitude().
+float tyndallGradientOpacity(vec3 t)
+{
+  float coord = tyndallGradientMagnitude(t) * (float(TYNDALL_TABLE_SIZE) - 1.0) /
+      float(TYNDALL_TABLE_SIZE) + 0.5 / float(TYNDALL_TABLE_SIZE);
   return texture(transferTexture, vec2(coord, TYNDALL_TABLE_GRADIENT_ROW)).r;
+}
+#endif
+
+#if TYNDALL_TRANSFER_2D
+// A plain property's 2-D transfer function (CPU twin:
+// vtkTyndallGridMedium::Transfer2DSample()): RGBA at (the scalar on its
+// range, tyndallGradientMagnitude()), its opacity per VTK's automatic step
+// as an extinction (transfer2DExtinction: the density scale over the
+// smallest spacing).
+uniform sampler2D transfer2DTexture;
+uniform vec2 transfer2DScalar; // u = value * x + y
+uniform float transfer2DExtinction;
+
+float tyndallTransfer2D(float value, vec3 t, out vec3 color)
+{
+  vec4 tf = texture(transfer2DTexture,
+    vec2(value * transfer2DScalar.x + transfer2DScalar.y, tyndallGradientMagnitude(t)));
+  color = tf.rgb;
+  return -log(1.0 - min(tf.a, 0.999999)) * transfer2DExtinction;
 }
 #endif
 
@@ -245,6 +272,8 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
 #endif
 #if TYNDALL_DETAIL_GROUPS > 0
   return tyndallDetailExtinction(q);
+#elif TYNDALL_TRANSFER_2D
+  return tyndallTransfer2D(value, texel, color);
 #elif TYNDALL_GRADIENT_OPACITY
   return densityScale * tf.a * tyndallGradientOpacity(texel);
 #else
