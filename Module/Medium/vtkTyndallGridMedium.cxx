@@ -750,12 +750,8 @@ bool vtkTyndallGridMedium::TablePosition(const double p[3], int& k, double& f) c
 }
 
 //------------------------------------------------------------------------------
-double vtkTyndallGridMedium::GradientOpacityAt(const double p[3]) const
+double vtkTyndallGridMedium::GradientMagnitudeAt(const double p[3]) const
 {
-  if (!this->GetGradientOpacity())
-  {
-    return 1.0;
-  }
   double g[3], sum = 0.0;
   this->IndexDifferences(p, g); // 0 at missing data: no gradient
   for (int a = 0; a < 3; ++a)
@@ -763,11 +759,18 @@ double vtkTyndallGridMedium::GradientOpacityAt(const double p[3]) const
     const double d = g[a] * this->GradientToVoxel[a];
     sum += d * d;
   }
-  return this->Table.GradientOpacityAt(std::sqrt(sum));
+  return std::sqrt(sum);
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallGridMedium::IsoValue(const double p[3], bool clip, double& value) const
+double vtkTyndallGridMedium::GradientOpacityAt(const double p[3]) const
+{
+  return this->GetGradientOpacity() ? this->Table.GradientOpacityAt(this->GradientMagnitudeAt(p))
+                                    : 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::KeptScalar(const double p[3], bool clip, double& value) const
 {
   if (clip && !this->Clip.InsideIndex(p))
   {
@@ -783,7 +786,7 @@ bool vtkTyndallGridMedium::IsoSample(
 {
   double v0, v1, rgb[3], alpha;
   first = 0.0;
-  if (!this->IsoValue(p0, true, v0) || !this->IsoValue(p1, true, v1) ||
+  if (!this->KeptScalar(p0, true, v0) || !this->KeptScalar(p1, true, v1) ||
     !this->Isosurfaces.Composite(this->Table, v0, v1, rgb, alpha, first) || !(alpha > 0.0))
   {
     return false;
@@ -822,7 +825,7 @@ double vtkTyndallGridMedium::OpticalDepth(const double o[3], const double d[3], 
     const double t = t0 + m * dt;
     const double q[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
     double v1;
-    const bool valid1 = this->IsoValue(q, clipped, v1);
+    const bool valid1 = this->KeptScalar(q, clipped, v1);
     if (valid0 && valid1)
     {
       tau += this->Isosurfaces.OpticalDepth(this->Table, v0, v1);
@@ -842,15 +845,7 @@ bool vtkTyndallGridMedium::Transfer2DSample(const double p[3], double rgba[4]) c
     return false; // missing data
   }
   const vtkTyndallTransferTable& t = this->Table;
-  double g[3], sum = 0.0;
-  this->IndexDifferences(p, g); // 0 at missing data: no gradient
-  for (int a = 0; a < 3; ++a)
-  {
-    const double d = g[a] * this->GradientToVoxel[a];
-    sum += d * d;
-  }
-  const double u = t.Maximum > t.Minimum ? (s - t.Minimum) / (t.Maximum - t.Minimum) : 0.0;
-  t.Transfer2DAt(u, std::min(std::sqrt(sum) / t.GradientMaximum, 1.0), rgba);
+  t.Transfer2DAt(t.Unit(s), std::min(this->GradientMagnitudeAt(p) / t.GradientMaximum, 1.0), rgba);
   return true;
 }
 

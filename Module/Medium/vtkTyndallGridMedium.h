@@ -255,6 +255,21 @@ public:
    */
   virtual double FieldScalar(const double p[3]) const;
 
+  /**
+   * The scalar at the field index point p as VTK's blend modes that read it
+   * take it (the projections, an isosurface step's ends; the CPU twin of the
+   * shaders' tyndallKeptScalar()): false where p is clipped away or cropped
+   * (with `clip`) or its data are missing (NaN, masked).
+   */
+  bool KeptScalar(const double p[3], bool clip, double& value) const;
+
+  /**
+   * The scalar's change per average voxel at the field index point p: the
+   * central differences (IndexDifferences()) times GetGradientToVoxel(),
+   * their length; what gradient opacity and 2-D transfer functions read.
+   */
+  double GradientMagnitudeAt(const double p[3]) const;
+
   /// The table position (k, f) of FieldScalar(p); false at missing data (NaN).
   bool TablePosition(const double p[3], int& k, double& f) const;
 
@@ -369,9 +384,7 @@ private:
   // The central differences of FieldScalar() one sample apart along each
   // index axis at p, per sample; 0 (and false) where one meets missing data.
   bool IndexDifferences(const double p[3], double g[3]) const;
-  // The scalar at the field index point p for an isosurface step's end
-  // (IsoSample()); false where p is clipped away (with `clip`) or missing.
-  bool IsoValue(const double p[3], bool clip, double& value) const;
+
   // The sampler of the scalars' value type for FieldScalar() (after a
   // change of the scalars or of GetNearest()).
   void MakeField();

@@ -17,14 +17,6 @@ bool Crosses(double v0, double v1, double s)
   return (v0 < s) != (v1 < s);
 }
 
-// The opacity function at s.
-double OpacityAt(const vtkTyndallTransferTable& table, double s)
-{
-  int k;
-  double f;
-  table.Locate(s, k, f);
-  return table.OpacityAt(k, f);
-}
 }
 
 //------------------------------------------------------------------------------
@@ -112,7 +104,7 @@ double vtkTyndallIsosurfaces::OpticalDepth(
   {
     if (Crosses(v0, v1, s))
     {
-      tau -= std::log1p(-std::min(OpacityAt(table, s), MaximumOpacity));
+      tau -= std::log1p(-std::min(table.OpacityOf(s), MaximumOpacity));
     }
   }
   return tau;

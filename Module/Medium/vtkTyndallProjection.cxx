@@ -88,22 +88,6 @@ vtkTyndallProjection::Ray::Ray(
 }
 
 //------------------------------------------------------------------------------
-double vtkTyndallProjection::Ray::Opacity(double value) const
-{
-  int k;
-  double f;
-  this->Table->Locate(value, k, f);
-  return this->Table->OpacityAt(k, f);
-}
-
-//------------------------------------------------------------------------------
-double vtkTyndallProjection::Ray::Unit(double value) const
-{
-  const vtkTyndallTransferTable& t = *this->Table;
-  return t.Maximum > t.Minimum ? (value - t.Minimum) / (t.Maximum - t.Minimum) : 0.0;
-}
-
-//------------------------------------------------------------------------------
 void vtkTyndallProjection::Ray::Add(double value, double dt)
 {
   switch (this->P->Mode)
@@ -122,10 +106,11 @@ void vtkTyndallProjection::Ray::Add(double value, double dt)
       {
         return; // not counted
       }
-      this->Sum += this->Opacity(value) * this->Unit(value);
+      this->Sum += this->Table->OpacityOf(value) * this->Table->Unit(value);
       break;
     case ADDITIVE:
-      this->Sum += this->Opacity(value) * dt / this->P->UnitDistance * this->Unit(value);
+      this->Sum +=
+        this->Table->OpacityOf(value) * dt / this->P->UnitDistance * this->Table->Unit(value);
       break;
     default:
       return;

@@ -106,8 +106,6 @@ public:
     double Extremum = 0.0;
     double Sum = 0.0;
     int Count = 0;
-    double Opacity(double value) const;
-    double Unit(double value) const;
   };
 
 private:

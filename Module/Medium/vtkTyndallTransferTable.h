@@ -172,6 +172,27 @@ public:
   {
     return this->Opacity[k] + f * (this->Opacity[k + 1] - this->Opacity[k]);
   }
+  /// The opacity function at scalar s (Locate() and OpacityAt()).
+  double OpacityOf(double s) const
+  {
+    int k;
+    double f;
+    this->Locate(s, k, f);
+    return this->OpacityAt(k, f);
+  }
+  ///@{
+  /**
+   * The scalar on the finite range, u = (s - Minimum) / (Maximum - Minimum)
+   * (0 for a single value), as UnitScale() s + UnitShift() (the shaders'
+   * uniforms).
+   */
+  double UnitScale() const
+  {
+    return this->Maximum > this->Minimum ? 1.0 / (this->Maximum - this->Minimum) : 0.0;
+  }
+  double UnitShift() const { return -this->Minimum * this->UnitScale(); }
+  double Unit(double s) const { return (s - this->Minimum) * this->UnitScale(); }
+  ///@}
   static void RGBAt(const std::vector<double>& table, int k, double f, double rgb[3])
   {
     const double* a = table.data() + 3 * k;

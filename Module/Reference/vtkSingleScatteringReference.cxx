@@ -272,10 +272,9 @@ private:
     // The scalar at the distance t, to the ray (kept, not missing).
     auto add = [&](double t, double dt)
     {
-      double p[3];
+      double p[3], value;
       rays.At(0, t, p);
-      const double value = grid.GetClipRegion().InsideIndex(p) ? grid.FieldScalar(p) : std::nan("");
-      if (!std::isnan(value))
+      if (grid.KeptScalar(p, true, value))
       {
         ray.Add(value, dt);
       }

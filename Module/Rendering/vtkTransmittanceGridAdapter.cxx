@@ -83,9 +83,8 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
     // Declared only by the 2-D transfer function's variant: the scalar on
     // the function's x axis (the finite range), the extinction of its opacity.
     program->SetUniformi("transfer2DTexture", transfer2D->GetTextureUnit());
-    const double span = table.Maximum - table.Minimum;
-    const float toUnit[2] = { span > 0.0 ? static_cast<float>(1.0 / span) : 0.0f,
-      span > 0.0 ? static_cast<float>(-table.Minimum / span) : 0.0f };
+    const float toUnit[2] = { static_cast<float>(table.UnitScale()),
+      static_cast<float>(table.UnitShift()) };
     program->SetUniform2f("transfer2DScalar", toUnit);
     program->SetUniformf("transfer2DExtinction",
       static_cast<float>(grid.GetParameters().DensityScale / grid.GetMinimumWorldSpacing()));

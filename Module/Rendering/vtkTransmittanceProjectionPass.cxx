@@ -76,9 +76,8 @@ void vtkTransmittanceProjectionPass::SetUniforms(
 {
   const vtkTyndallTransferTable& table = frame.Medium->GetTable();
   const vtkTyndallProjection& projection = frame.Medium->GetProjection();
-  const double span = table.Maximum - table.Minimum;
-  const float toUnit[2] = { span > 0.0 ? static_cast<float>(1.0 / span) : 0.0f,
-    span > 0.0 ? static_cast<float>(-table.Minimum / span) : 0.0f };
+  const float toUnit[2] = { static_cast<float>(table.UnitScale()),
+    static_cast<float>(table.UnitShift()) };
   program->SetUniform2f("valueToUnit", toUnit);
   const double* range = projection.GetAverageRange();
   const float average[2] = { static_cast<float>(std::max(range[0], -1e38)),

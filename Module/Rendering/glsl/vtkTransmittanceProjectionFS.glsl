@@ -50,9 +50,9 @@ bool tyndallProjectionPixel(TyndallProjection p, out vec4 pixel)
   {
     return false;
   }
-  float coord = p.Value * scalarToTable.x + scalarToTable.y;
-  vec3 color = texture(transferTexture, vec2(coord, TYNDALL_TABLE_ALBEDO_ROW)).rgb;
-  float alpha = texture(transferTexture, vec2(coord, TYNDALL_TABLE_EMISSION_ROW)).a;
+  vec3 color = texture(transferTexture,
+    vec2(p.Value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW)).rgb;
+  float alpha = tyndallOpacityFunction(p.Value);
   pixel = vec4(color * alpha, alpha);
 #elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_AVERAGE
   if (p.Count == 0)
