@@ -87,6 +87,14 @@ const Spec kOptions[] = {
   { "component", "", Kind::Integer, 0, 1024, false, "", "N", "", "Input", Both,
     "component of multi-component scalars to render (default: multi-component data is "
     "refused)" },
+  { "components", "", Kind::Choice, 0, 0, false, "one|independent|dependent", "MODE", "one",
+    "Input", Both,
+    "draw multi-component scalars (2 to 4) together: independent (each component its own "
+    "transfer functions, the preset's over its range, coloured red, green, blue, grey; their "
+    "extinctions add) or dependent (2: colour from the first, opacity from the second; 4: RGBA); "
+    "default one (pick it with --component)" },
+  { "component-weights", "", Kind::Text, 0, 0, false, "", "W,W,...", "", "Input", Both,
+    "the weight of each independent component in [0, 1] (comma-separated; default 1 each)" },
   { "frame", "", Kind::Integer, 0, 1000000, false, "", "N", "0", "Input", Both,
     "time frame of a 4-D file (NIfTI with a time dimension)" },
   { "no-rescale", "", Kind::Flag, 0, 0, false, "", "", "", "Input", Both,
@@ -705,7 +713,16 @@ public:
     {
       return "--grid needs a .vdb input";
     }
-    for (const char* name : { "component", "frame", "no-rescale", "level-set-to-fog" })
+    if (set("component") && set("components"))
+    {
+      return "--component picks one component, --components draws them together";
+    }
+    if (set("component-weights") && !set("components"))
+    {
+      return "--component-weights needs --components independent";
+    }
+    for (const char* name :
+      { "component", "components", "component-weights", "frame", "no-rescale", "level-set-to-fog" })
     {
       if (input.empty() && set(name))
       {

@@ -4,12 +4,14 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkContourValues.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkCullerCollection.h"
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
@@ -26,6 +28,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataReader.h"
@@ -585,6 +588,7 @@ bool vtkTyndallSceneBuilder::LoadMedium()
   {
     reader->SetComponent(static_cast<int>(o->GetNumber("component")));
   }
+  reader->SetAllComponents(o->GetChoice("components") != 0); // --components
   reader->SetFrame(static_cast<int>(o->GetNumber("frame")));
   this->ProgressLabel = std::string("loading ") + o->GetInput();
   // The reader reports its own error (one line starting with the path).
@@ -618,7 +622,7 @@ bool vtkTyndallSceneBuilder::ChooseTransferFunction()
   {
     this->TransferFunctionFile->Apply(this->Property);
     this->TransferFunctionDescription = std::string("file ") + o->GetText("transfer-function");
-    return true;
+    return this->ApplyComponents("");
   }
   if (o->IsSet("preset") || !this->DefaultScene)
   {
@@ -636,10 +640,116 @@ bool vtkTyndallSceneBuilder::ChooseTransferFunction()
       return false;
     }
     this->TransferFunctionDescription = "preset " + preset + (guessed ? " (guessed)" : "");
-    return true;
+    return this->ApplyComponents(preset);
   }
   DefaultCloudTransferFunction(this->Property);
   this->TransferFunctionDescription = "white cloud";
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::ApplyComponents(const std::string& preset)
+{
+  vtkTyndallOptions* o = this->Options;
+  const int mode = o->GetChoice("components"); // one, independent, dependent
+  vtkDataArray* scalars = this->Image ? this->Image->GetPointData()->GetScalars() : nullptr;
+  scalars = scalars || !this->Image ? scalars : this->Image->GetCellData()->GetScalars();
+  const int count = scalars ? scalars->GetNumberOfComponents() : 1;
+  std::vector<double> weights;
+  if (o->IsSet("component-weights"))
+  {
+    std::istringstream in(o->GetText("component-weights"));
+    std::string item;
+    while (std::getline(in, item, ','))
+    {
+      char* end = nullptr;
+      const double w = std::strtod(item.c_str(), &end);
+      if (item.empty() || *end != '\0' || !(w >= 0.0 && w <= 1.0))
+      {
+        vtkErrorMacro(<< "--component-weights: \"" << item << "\" is not a number in [0, 1].");
+        return false;
+      }
+      weights.push_back(w);
+    }
+    if (mode != 1 || static_cast<int>(weights.size()) != count)
+    {
+      vtkErrorMacro(<< "--component-weights: " << weights.size() << " weights; --components "
+                    << "independent needs one per component (" << count << ").");
+      return false;
+    }
+  }
+  if (mode == 0 || count < 2)
+  {
+    return true;
+  }
+  this->Property->SetIndependentComponents(mode == 1);
+  if (mode == 2 && count == 3)
+  {
+    vtkErrorMacro(<< "--components dependent: the scalars have 3 components; dependent "
+                     "components are 2 (colour, opacity) or 4 (RGBA).");
+    return false;
+  }
+  const double unit = this->Property->GetScalarOpacityUnitDistance(0);
+  // The preset over component c's finite range (a file's functions as they are).
+  auto over = [&](int c, vtkVolumeProperty* target)
+  {
+    double range[2];
+    scalars->GetFiniteRange(range, c);
+    if (!(range[1] > range[0]))
+    {
+      range[1] = range[0] + 1.0;
+    }
+    if (preset.empty())
+    {
+      this->TransferFunctionFile->Apply(target);
+    }
+    else
+    {
+      vtkTransferFunctionPresets::Apply(preset.c_str(), target, range);
+    }
+    return std::vector<double>{ range[0], range[1] };
+  };
+  vtkNew<vtkVolumeProperty> opacitySource;
+  if (mode == 2)
+  {
+    // Function 0: its colour over component 0's range, its opacity over the
+    // last component's.
+    over(0, this->Property);
+    over(count - 1, opacitySource);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->DeepCopy(opacitySource->GetScalarOpacity());
+    this->Property->SetScalarOpacity(0, opacity);
+    this->Property->SetScalarOpacityUnitDistance(count - 1, unit);
+    this->TransferFunctionDescription +=
+      count == 2 ? ", 2 dependent components (colour, opacity)" : ", 4 dependent components (RGBA)";
+    return true;
+  }
+  // Independent: each component its own opacity over its range, and a
+  // colour of its own (as microscopy viewers show channels) with a preset.
+  const double palette[4][3] = { { 1.0, 0.3, 0.25 }, { 0.3, 1.0, 0.3 }, { 0.3, 0.45, 1.0 },
+    { 0.9, 0.9, 0.9 } };
+  for (int c = 0; c < count; ++c)
+  {
+    vtkNew<vtkVolumeProperty> source;
+    const std::vector<double> range = over(c, source);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->DeepCopy(source->GetScalarOpacity());
+    this->Property->SetScalarOpacity(c, opacity);
+    this->Property->SetScalarOpacityUnitDistance(c, unit);
+    vtkNew<vtkColorTransferFunction> color;
+    if (preset.empty())
+    {
+      color->DeepCopy(source->GetRGBTransferFunction());
+    }
+    else
+    {
+      color->AddRGBPoint(range[0], palette[c][0], palette[c][1], palette[c][2]);
+      color->AddRGBPoint(range[1], palette[c][0], palette[c][1], palette[c][2]);
+    }
+    this->Property->SetColor(c, color);
+    this->Property->SetComponentWeight(c, weights.empty() ? 1.0 : weights[c]);
+  }
+  this->TransferFunctionDescription += ", " + std::to_string(count) + " independent components";
   return true;
 }
 

@@ -169,6 +169,10 @@ private:
   // that is not a finite number or more than vtkTyndallIsosurfaces allows.
   bool ReadIsoValues();
   bool ChooseTransferFunction();
+  // --components: several components drawn together, each component's
+  // functions over its own range (vtkTyndallComponents' rules); false (with
+  // an error) for a mode the data cannot be drawn in or bad weights.
+  bool ApplyComponents(const std::string& preset);
   // The --detail options: the property's DetailNoise (null without --detail).
   void ApplyDetail();
   // The --clip-... and --crop-... options: the mapper's clipping plane and cropping.

@@ -842,15 +842,21 @@ bool vtkVolumeFileReader::Finish(const std::string& path)
     this->Error = os.str();
     return false;
   }
-  if (components > 1 && this->Component < 0)
+  if (components > 1 && this->Component < 0 && (!this->AllComponents || components > 4))
   {
     std::ostringstream os;
-    os << path << ": the scalars ('" << arrayName << "') have " << components
-       << " components; choose one (--component 0.." << components - 1 << ")";
+    os << path << ": the scalars ('" << arrayName << "') have " << components << " components; "
+       << (this->AllComponents ? "at most 4 are drawn together: " : "")
+       << "choose one (--component 0.." << components - 1 << ")"
+       << (this->AllComponents ? "" : " or draw them together (--components)");
     this->Error = os.str();
     return false;
   }
-  if (components > 1 && cellScalars)
+  if (components > 1 && this->Component < 0)
+  {
+    // Every component kept (AllComponents).
+  }
+  else if (components > 1 && cellScalars)
   {
     // vtkImageExtractComponents works on point scalars only.
     vtkSmartPointer<vtkDataArray> one;
@@ -910,6 +916,7 @@ void vtkVolumeFileReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "GridName: " << (this->GridName ? this->GridName : "(none)") << "\n";
   os << indent << "Component: " << this->Component << "\n";
+  os << indent << "AllComponents: " << this->AllComponents << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
   os << indent << "Frame: " << this->Frame << "\n";
   os << indent << "Rescale: " << (this->Rescale ? "on" : "off") << "\n";

@@ -120,10 +120,21 @@ public:
   ///@{
   /**
    * The component of multi-component scalars to keep, in [-1, 1024];
-   * default -1: multi-component scalars are refused.
+   * default -1: multi-component scalars are refused (unless AllComponents).
    */
   vtkSetClampMacro(Component, int, -1, 1024);
   vtkGetMacro(Component, int);
+  ///@}
+
+  ///@{
+  /**
+   * Whether multi-component scalars are kept whole when Component is -1:
+   * 2 to 4 components (what a volume mapper draws; more are refused with an
+   * error naming the limit). Default off.
+   */
+  vtkSetMacro(AllComponents, bool);
+  vtkGetMacro(AllComponents, bool);
+  vtkBooleanMacro(AllComponents, bool);
   ///@}
 
   ///@{
@@ -209,6 +220,7 @@ protected:
   char* GridName = nullptr;
   char* ExtraGridName = nullptr;
   int Component = -1;
+  bool AllComponents = false;
   double MemoryLimit = 4096.0;
   int Frame = 0;
   bool Rescale = true;

@@ -31,4 +31,6 @@ void vtkParticipatingMediumMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaskType: " << (this->MaskType == BinaryMaskType ? "Binary" : "LabelMap")
      << "\n";
   os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
+  os << indent << "VectorMode: " << this->VectorMode << "\n";
+  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
 }

@@ -88,6 +88,31 @@ public:
   vtkGetMacro(MaskBlendFactor, float);
   ///@}
 
+  /// vtkSmartVolumeMapper's vector modes (the same values).
+  enum VectorModes
+  {
+    DISABLED = -1,
+    MAGNITUDE = 0,
+    COMPONENT = 1
+  };
+
+  ///@{
+  /**
+   * vtkSmartVolumeMapper's vector mode, for scalars of several components
+   * with a property's IndependentComponents on: DISABLED (the default)
+   * draws the components (vtkTyndallComponents' rules), MAGNITUDE the
+   * length of each tuple and COMPONENT the component VectorComponent (in
+   * [0, 3], default 0; one that the scalars lack is an error), each as one
+   * component classified by the property's functions 0. Dependent
+   * components and one-component scalars are drawn as they are, whatever
+   * the mode (ParaView sets it from its colour map's vector mode).
+   */
+  vtkSetClampMacro(VectorMode, int, DISABLED, COMPONENT);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
 #ifndef __VTK_WRAP__
   /// Internal (the scene reader): whether the medium is a particle cloud (GetParticles()).
   virtual bool DrawsParticles()
@@ -118,6 +143,8 @@ protected:
   vtkImageData* MaskInput = nullptr;
   int MaskType = LabelMapMaskType;
   float MaskBlendFactor = 1.0f;
+  int VectorMode = DISABLED;
+  int VectorComponent = 0;
 
 private:
   vtkParticipatingMediumMapper(const vtkParticipatingMediumMapper&) = delete;

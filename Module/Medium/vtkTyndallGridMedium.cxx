@@ -20,6 +20,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTyndallProjection.h"
 #include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
@@ -32,30 +33,81 @@
 
 namespace
 {
-// Finite range and counts of NaN and infinite values.
+// Each component's finite range (of `components` per sample, n samples),
+// the count of samples with a NaN component and of infinite values.
 template <typename T>
-void ScanScalars(const T* data, vtkIdType n, double range[2], vtkIdType& nan, vtkIdType& inf)
+void ScanScalars(
+  const T* data, vtkIdType n, int components, double range[][2], vtkIdType& nan, vtkIdType& inf)
 {
-  range[0] = std::numeric_limits<double>::infinity();
-  range[1] = -std::numeric_limits<double>::infinity();
+  for (int c = 0; c < components; ++c)
+  {
+    range[c][0] = std::numeric_limits<double>::infinity();
+    range[c][1] = -std::numeric_limits<double>::infinity();
+  }
   nan = inf = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double v = static_cast<double>(data[i]);
-    if (std::isnan(v))
+    bool missing = false;
+    for (int c = 0; c < components; ++c)
     {
-      ++nan;
+      const double v = static_cast<double>(data[i * components + c]);
+      if (std::isnan(v))
+      {
+        missing = true;
+      }
+      else if (std::isinf(v))
+      {
+        ++inf;
+      }
+      else
+      {
+        range[c][0] = std::min(range[c][0], v);
+        range[c][1] = std::max(range[c][1], v);
+      }
     }
-    else if (std::isinf(v))
+    nan += missing ? 1 : 0;
+  }
+}
+
+// vtkParticipatingMediumMapper's vector mode applied to `scalars` (several
+// components): their magnitude, or one component (null, with `error`, for a
+// component they lack).
+vtkSmartPointer<vtkDataArray> VectorScalars(
+  vtkDataArray* scalars, int mode, int component, std::ostream& error)
+{
+  const int count = scalars->GetNumberOfComponents();
+  vtkSmartPointer<vtkDataArray> one;
+  if (mode == vtkParticipatingMediumMapper::COMPONENT)
+  {
+    if (component >= count)
     {
-      ++inf;
+      error << "The mapper's vector mode draws component " << component << "; the scalars '"
+            << (scalars->GetName() ? scalars->GetName() : "") << "' have " << count << ".";
+      return nullptr;
     }
-    else
+    one.TakeReference(scalars->NewInstance());
+    one->SetNumberOfComponents(1);
+    one->SetNumberOfTuples(scalars->GetNumberOfTuples());
+    one->CopyComponent(0, scalars, component);
+  }
+  else
+  {
+    one = vtkSmartPointer<vtkDoubleArray>::New();
+    one->SetNumberOfTuples(scalars->GetNumberOfTuples());
+    std::vector<double> tuple(static_cast<size_t>(count));
+    for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
     {
-      range[0] = std::min(range[0], v);
-      range[1] = std::max(range[1], v);
+      scalars->GetTuple(i, tuple.data());
+      double sum = 0.0;
+      for (double v : tuple)
+      {
+        sum += v * v;
+      }
+      one->SetComponent(i, 0, std::sqrt(sum));
     }
   }
+  one->SetName(scalars->GetName());
+  return one;
 }
 
 bool AllFinite(const double* v, int n)
@@ -77,17 +129,19 @@ class vtkTyndallGridMedium::FieldBase
 public:
   virtual ~FieldBase() = default;
   virtual double Scalar(const double p[3]) const = 0;
+  virtual void Values(const double p[3], double* values) const = 0;
 };
 
 template <typename T>
 class vtkTyndallGridMedium::TypedField : public vtkTyndallGridMedium::FieldBase
 {
 public:
-  TypedField(const vtkTyndallGridMedium& medium)
-    : S(medium)
+  TypedField(const vtkTyndallGridMedium& medium, int component)
+    : S(medium, component)
   {
   }
   double Scalar(const double p[3]) const override { return this->S.Scalar(p); }
+  void Values(const double p[3], double* values) const override { this->S.Values(p, values); }
 
 private:
   Sampler<T> S;
@@ -109,7 +163,7 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
   if (nearest != this->Nearest)
   {
     this->Nearest = nearest;
-    this->Field = nullptr;
+    this->Field.clear();
     this->ExtinctionTime.Modified(); // the maps see the other interpolation
   }
   // The blend mode first: the table reads it (gradient opacity is not
@@ -125,9 +179,9 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
     return false;
   }
   this->Valid = this->UpdateScalars(volume, reporter) && this->UpdateMask(volume, reporter) &&
-    this->UpdateEmissionArray(volume, reporter) && this->UpdateGeometry(volume, reporter) &&
-    this->UpdateTable(volume, reporter);
-  if (this->Valid && !this->Field)
+    this->UpdateEmissionArray(volume, reporter) && this->UpdateComponents(volume, reporter) &&
+    this->UpdateGeometry(volume, reporter) && this->UpdateTable(volume, reporter);
+  if (this->Valid && this->Field.empty())
   {
     this->MakeField();
   }
@@ -185,10 +239,20 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
   // The image's MTime, not only its extent: VTK's convention lets a program
   // edit the values in place and mark the image (not the array) modified.
   // A spacing or origin change then rescans too, which is rare.
+  // vtkSmartVolumeMapper's vector mode (a Tyndall mapper's): independent
+  // components drawn as their magnitude or one of them.
+  auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
+  const int vectorMode = tyndall && volume->GetProperty() &&
+      volume->GetProperty()->GetIndependentComponents() && scalars &&
+      scalars->GetNumberOfComponents() > 1
+    ? tyndall->GetVectorMode()
+    : vtkParticipatingMediumMapper::DISABLED;
+  const int vectorComponent = tyndall ? tyndall->GetVectorComponent() : 0;
   const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(image)),
     static_cast<double>(image->GetMTime()),
     static_cast<double>(reinterpret_cast<uintptr_t>(scalars)),
-    scalars ? static_cast<double>(scalars->GetMTime()) : -1.0, double(cellFlag) };
+    scalars ? static_cast<double>(scalars->GetMTime()) : -1.0, double(cellFlag), double(vectorMode),
+    double(vectorComponent) };
   if (key == this->ScalarsKey)
   {
     // Unchanged: the same result, and the same error again without a rescan.
@@ -200,10 +264,16 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
   }
   this->ScalarsKey = key;
   this->Scalars = nullptr;
-  this->Field = nullptr;
+  this->Field.clear();
   this->ScalarsTime.Modified();
   std::ostringstream error;
-  const bool ok = this->ReadScalars(image, scalars, cellFlag, error, reporter);
+  vtkSmartPointer<vtkDataArray> derived;
+  if (vectorMode != vtkParticipatingMediumMapper::DISABLED)
+  {
+    derived = VectorScalars(scalars, vectorMode, vectorComponent, error);
+  }
+  const bool ok = (vectorMode == vtkParticipatingMediumMapper::DISABLED || derived) &&
+    this->ReadScalars(image, derived ? derived.Get() : scalars, cellFlag, error, reporter);
   this->ScalarsError = error.str();
   if (!ok)
   {
@@ -239,7 +309,7 @@ bool vtkTyndallGridMedium::UpdateMask(vtkVolume* volume, vtkObject* reporter)
   this->MaskKey = key;
   this->Mask.clear();
   this->MaskedCount = 0;
-  this->Field = nullptr;        // the sampler reads the mask
+  this->Field.clear();          // the sampler reads the mask
   this->ScalarsTime.Modified(); // the GPU's validity texture holds it
   this->ExtinctionTime.Modified();
   std::ostringstream error;
@@ -325,10 +395,12 @@ bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalar
     error << "The selected scalars are field data, which cannot be rendered.";
     return false;
   }
-  if (scalars->GetNumberOfComponents() != 1)
+  const int components = scalars->GetNumberOfComponents();
+  if (components < 1 || components > vtkTyndallComponents::MaximumCount)
   {
     error << "The scalars '" << (scalars->GetName() ? scalars->GetName() : "") << "' have "
-          << scalars->GetNumberOfComponents() << " components; one component is rendered.";
+          << components << " components; 1 to " << vtkTyndallComponents::MaximumCount
+          << " are drawn (VTK's mappers draw at most 4).";
     return false;
   }
   this->CellScalars = cellFlag == 1;
@@ -363,20 +435,26 @@ bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalar
   switch (values->GetDataType())
   {
     vtkTemplateMacro(ScanScalars(static_cast<const VTK_TT*>(values->GetVoidPointer(0)), expected,
-      this->FiniteRange, this->NaNCount, this->InfCount));
+      components, this->ComponentRanges, this->NaNCount, this->InfCount));
   }
-  if (!(this->FiniteRange[0] <= this->FiniteRange[1]))
+  for (int c = 0; c < components; ++c)
   {
-    error << "The scalars have no finite value.";
-    return false;
+    if (!(this->ComponentRanges[c][0] <= this->ComponentRanges[c][1]))
+    {
+      error << "The scalars have no finite value"
+            << (components > 1 ? " in component " + std::to_string(c) : std::string()) << ".";
+      return false;
+    }
   }
+  this->FiniteRange[0] = this->ComponentRanges[0][0];
+  this->FiniteRange[1] = this->ComponentRanges[0][1];
   if (this->NaNCount > 0 || this->InfCount > 0)
   {
-    vtkWarningWithObjectMacro(
-      reporter, << this->NaNCount << " NaN scalars (missing data: "
-                << "samples interpolated from them are empty medium) and " << this->InfCount
-                << " infinite ones (given the finite range's ends, [" << this->FiniteRange[0]
-                << ", " << this->FiniteRange[1] << "]).");
+    vtkWarningWithObjectMacro(reporter,
+      << this->NaNCount << (components > 1 ? " samples with a NaN component" : " NaN scalars")
+      << " (missing data: samples interpolated from them are empty medium) and " << this->InfCount
+      << " infinite values (given the finite range's ends, [" << this->FiniteRange[0] << ", "
+      << this->FiniteRange[1] << "]" << (components > 1 ? " for component 0" : "") << ").");
   }
   this->Scalars = values;
   this->MakeField();
@@ -384,14 +462,24 @@ bool vtkTyndallGridMedium::ReadScalars(vtkImageData* image, vtkDataArray* scalar
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallGridMedium::IndexDifferences(const double p[3], double g[3]) const
+bool vtkTyndallGridMedium::IndexDifferences(const double p[3], double g[3], int component) const
 {
+  // Several components: each difference of the one asked for, missing
+  // where any component is (the GPU's validity).
+  auto value = [this, component](const double q[3])
+  {
+    double values[vtkTyndallComponents::MaximumCount];
+    return !this->Components.Enabled()
+      ? this->FieldScalar(q)
+      : (this->FieldComponents(q, values) ? values[component]
+                                          : std::numeric_limits<double>::quiet_NaN());
+  };
   for (int a = 0; a < 3; ++a)
   {
     double plus[3] = { p[0], p[1], p[2] }, minus[3] = { p[0], p[1], p[2] };
     plus[a] += 1.0;
     minus[a] -= 1.0;
-    g[a] = 0.5 * (this->FieldScalar(plus) - this->FieldScalar(minus));
+    g[a] = 0.5 * (value(plus) - value(minus));
     if (std::isnan(g[a]))
     {
       g[0] = g[1] = g[2] = 0.0;
@@ -402,10 +490,10 @@ bool vtkTyndallGridMedium::IndexDifferences(const double p[3], double g[3]) cons
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3]) const
+void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3], int component) const
 {
   double g[3];
-  this->IndexDifferences(p, g); // 0 at missing data
+  this->IndexDifferences(p, g, component); // 0 at missing data
   // p = W x (W: world -> index): d/dx = W^T d/dp.
   const double* w = this->WorldToIndex;
   for (int j = 0; j < 3; ++j)
@@ -417,9 +505,13 @@ void vtkTyndallGridMedium::FieldGradient(const double p[3], double gradient[3]) 
 //------------------------------------------------------------------------------
 void vtkTyndallGridMedium::MakeField()
 {
-  switch (this->Scalars->GetDataType())
+  this->Field.clear();
+  for (int c = 0; c < this->Scalars->GetNumberOfComponents(); ++c)
   {
-    vtkTemplateMacro(this->Field.reset(new TypedField<VTK_TT>(*this)));
+    switch (this->Scalars->GetDataType())
+    {
+      vtkTemplateMacro(this->Field.emplace_back(new TypedField<VTK_TT>(*this, c)));
+    }
   }
 }
 
@@ -603,10 +695,28 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   std::vector<double> extinction = { property->GetScalarOpacityUnitDistance(0),
     this->FiniteRange[0], this->FiniteRange[1], double(this->GetLinearExtinction()) };
   identify(extinction, property->GetScalarOpacity(0));
+  // Multi-component scalars (vtkTyndallComponents): each table's function,
+  // range and unit distance, and how the tables mix.
+  const vtkTyndallComponents& components = this->Components;
+  const int tables = components.GetTableCount();
+  extinction.insert(extinction.end(),
+    { double(components.GetMode()), double(components.GetCount()),
+      double(components.GetAdditive()) });
+  extinction.insert(extinction.end(), components.GetWeights(),
+    components.GetWeights() + vtkTyndallComponents::MaximumCount);
+  for (int t = 0; t < tables; ++t)
+  {
+    const int c = components.TableComponent(t);
+    extinction.insert(extinction.end(),
+      { this->ComponentRanges[c][0], this->ComponentRanges[c][1],
+        property->GetScalarOpacityUnitDistance(c) });
+    identify(extinction, property->GetScalarOpacity(components.TableFunction(t)));
+  }
   // A plain property's gradient opacity multiplies the extinction (not in a
-  // projection, which reads the opacity alone, nor for isosurfaces).
+  // projection, which reads the opacity alone, nor for isosurfaces, nor for
+  // several components: vtkTyndallVolumeSettings names it).
   vtkPiecewiseFunction* gradientOpacity = !medium && !this->Projection.Enabled() &&
-      !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() &&
+      !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() && !components.Enabled() &&
       vtkTyndallVolumeSettings::HasGradientOpacity(property)
     ? property->GetGradientOpacity(0)
     : nullptr;
@@ -647,10 +757,15 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   extinction.insert(extinction.end(), isoValues.begin(), isoValues.end());
   const bool gray = property->GetColorChannels(0) == 1;
   std::vector<double> key = extinction;
-  key.push_back(double(gray));
-  identify(key,
-    gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
-         : static_cast<vtkObject*>(property->GetRGBTransferFunction(0)));
+  for (int t = 0; t < tables; ++t)
+  {
+    const int function = components.TableFunction(t);
+    const bool grayFunction = property->GetColorChannels(function) == 1;
+    key.push_back(double(grayFunction));
+    identify(key,
+      grayFunction ? static_cast<vtkObject*>(property->GetGrayTransferFunction(function))
+                   : static_cast<vtkObject*>(property->GetRGBTransferFunction(function)));
+  }
   identify(key, emission);
   const bool blackbody = fromArray && medium->GetBlackbody();
   const double temperatureScale = medium ? medium->GetTemperatureScale() : 1.0;
@@ -667,12 +782,18 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   this->TableKey.clear();
   this->TableTime.Modified();
   std::string error;
-  if (!this->Table.Build(property, emission, this->FiniteRange[0], this->FiniteRange[1], error,
-        this->GetLinearExtinction()))
+  this->ComponentTables.resize(static_cast<size_t>(tables - 1));
+  for (int t = 0; t < tables; ++t)
   {
-    this->ExtinctionKey.clear();
-    vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
-    return false;
+    const int c = components.TableComponent(t);
+    vtkTyndallTransferTable& table = t == 0 ? this->Table : this->ComponentTables[t - 1];
+    if (!table.Build(property, emission, this->ComponentRanges[c][0], this->ComponentRanges[c][1],
+          error, this->GetLinearExtinction(), components.TableFunction(t), c))
+    {
+      this->ExtinctionKey.clear();
+      vtkErrorWithObjectMacro(reporter, << "Cannot use the volume's property: " << error);
+      return false;
+    }
   }
   this->Table.TabulateGradientOpacity(gradientOpacity);
   if (transfer2D &&
@@ -734,7 +855,22 @@ double vtkTyndallGridMedium::WorldExtinction(const double world[3]) const
 //------------------------------------------------------------------------------
 double vtkTyndallGridMedium::FieldScalar(const double p[3]) const
 {
-  return this->Field->Scalar(p);
+  return this->Field[0]->Scalar(p);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::FieldComponents(
+  const double p[3], double values[vtkTyndallComponents::MaximumCount]) const
+{
+  this->Field[0]->Values(p, values);
+  for (size_t c = 0; c < this->Field.size(); ++c)
+  {
+    if (std::isnan(values[c]))
+    {
+      return false; // missing data
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -859,6 +995,11 @@ double vtkTyndallGridMedium::Transfer2DExtinction(double opacity) const
 //------------------------------------------------------------------------------
 double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
 {
+  if (this->Components.Enabled())
+  {
+    Point point;
+    return this->ComponentSample(p, point) ? point.Extinction : 0.0;
+  }
   if (this->Table.Has2D())
   {
     double rgba[4];
@@ -874,6 +1015,10 @@ double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) const
 {
+  if (this->Components.Enabled())
+  {
+    return this->ComponentSample(p, point) && point.Extinction > 0.0;
+  }
   if (this->Table.Has2D())
   {
     double rgba[4];
@@ -905,6 +1050,10 @@ bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) 
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::FieldMaterial(const double p[3], Point& point) const
 {
+  if (this->Components.Enabled())
+  {
+    return this->ComponentSample(p, point);
+  }
   if (this->Table.Has2D())
   {
     double rgba[4];
@@ -964,8 +1113,133 @@ void vtkTyndallGridMedium::ArrayEmission(const double p[3], double rgb[3]) const
 //------------------------------------------------------------------------------
 double vtkTyndallGridMedium::GetMajorant() const
 {
-  const std::vector<double>& extinction = this->Table.Extinction;
-  const double largest =
-    extinction.empty() ? 0.0 : *std::max_element(extinction.begin(), extinction.end());
-  return this->Parameters.DensityScale * largest;
+  double largest[vtkTyndallComponents::MaximumCount] = { 0.0, 0.0, 0.0, 0.0 };
+  for (int t = 0; t < this->Components.GetTableCount(); ++t)
+  {
+    const std::vector<double>& extinction = this->GetComponentTable(t).Extinction;
+    largest[t] = extinction.empty() ? 0.0 : *std::max_element(extinction.begin(), extinction.end());
+  }
+  return this->Parameters.DensityScale * this->Components.Majorant(largest);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::LookUpComponents(const double p[3], ComponentLookup& lookup) const
+{
+  if (!this->FieldComponents(p, lookup.Values))
+  {
+    return false;
+  }
+  const vtkTyndallComponents& components = this->Components;
+  for (int t = 0; t < components.GetTableCount(); ++t)
+  {
+    const vtkTyndallTransferTable& table = this->GetComponentTable(t);
+    int k;
+    double f;
+    table.Locate(lookup.Values[components.TableComponent(t)], k, f);
+    lookup.Sigma[t] = table.ExtinctionAt(k, f);
+    vtkTyndallTransferTable::RGBAt(table.Albedo, k, f, lookup.Colors[t]);
+    if (t == 0)
+    {
+      lookup.K0 = k;
+      lookup.F0 = f;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::ComponentParts(const double p[3],
+  double weights[vtkTyndallComponents::MaximumCount],
+  double colors[vtkTyndallComponents::MaximumCount][3]) const
+{
+  ComponentLookup lookup;
+  if (!this->LookUpComponents(p, lookup))
+  {
+    return false;
+  }
+  this->Components.Parts(lookup.Sigma, weights);
+  std::copy(&lookup.Colors[0][0], &lookup.Colors[0][0] + 3 * vtkTyndallComponents::MaximumCount,
+    &colors[0][0]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::ComponentSample(const double p[3], Point& point) const
+{
+  ComponentLookup lookup;
+  if (!this->LookUpComponents(p, lookup))
+  {
+    return false;
+  }
+  double unit[vtkTyndallComponents::MaximumCount] = { 0.0, 0.0, 0.0, 0.0 };
+  for (int c = 0; c < this->Components.GetCount(); ++c)
+  {
+    const double* r = this->ComponentRanges[c];
+    unit[c] = r[1] > r[0] ? (lookup.Values[c] - r[0]) / (r[1] - r[0]) : 0.0;
+  }
+  point.Extinction = this->Parameters.DensityScale *
+    this->Components.Mix(lookup.Sigma, lookup.Colors, unit, point.Albedo);
+  // Emission through the table: table 0's, at its component's value.
+  if (this->Parameters.HasEmission && !this->GetEmissionFromArray())
+  {
+    vtkTyndallTransferTable::RGBAt(this->Table.Emission, lookup.K0, lookup.F0, point.Emission);
+  }
+  else
+  {
+    point.Emission[0] = point.Emission[1] = point.Emission[2] = 0.0;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::UpdateComponents(vtkVolume* volume, vtkObject* reporter)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  std::string error;
+  if (!this->Components.Read(
+        property, this->Scalars->GetNumberOfComponents(), medium != nullptr, error))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot draw the volume: " << error);
+    return false;
+  }
+  if (!this->Components.Enabled())
+  {
+    return true;
+  }
+  std::string what;
+  if (this->Projection.Enabled())
+  {
+    what = std::string("the ") + vtkTyndallProjection::GetModeName(this->Projection.GetMode()) +
+      " blend mode";
+  }
+  else if (this->Isosurfaces.Enabled())
+  {
+    what = "the isosurface blend mode";
+  }
+  else if (!medium && property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
+  {
+    what = "a 2-D transfer function (TF_2D)";
+  }
+  else if (medium && medium->GetDetailNoise())
+  {
+    what = "procedural detail";
+  }
+  else if (!this->EmissionValues.empty())
+  {
+    what = "an emission array";
+  }
+  else if (this->GetLinearExtinction())
+  {
+    what = "a particle cloud's density";
+  }
+  if (!what.empty())
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot draw the volume's " << this->Components.Describe()
+                                      << " with " << what
+                                      << ": several components are drawn in the composite blend "
+                                         "mode, with 1-D transfer functions.");
+    return false;
+  }
+  return true;
 }

@@ -15,7 +15,9 @@
  *
  * - the scalars: vtkAbstractMapper::GetScalars() with the mapper's
  *   ScalarMode, ArrayAccessMode, ArrayId and ArrayName (by default point
- *   scalars, else cell scalars); one component; field data refused;
+ *   scalars, else cell scalars); 1 to 4 components (vtkTyndallComponents:
+ *   dependent or independent, as VTK classifies them, composite blend mode
+ *   only); field data refused;
  * - non-finite scalars: NaN is missing data, and every sample interpolated
  *   from a NaN voxel (a NaN among the 8 voxels around it) is empty medium;
  *   +-Inf take the finite range's ends; a warning counts them; no finite
@@ -55,6 +57,7 @@
 #include "vtkSmartPointer.h"         // For vtkSmartPointer
 #include "vtkTimeStamp.h"            // For vtkTimeStamp
 #include "vtkTyndallClipRegion.h"    // For the clip region
+#include "vtkTyndallComponents.h"    // For the components
 #include "vtkTyndallIsosurfaces.h"   // For the isosurfaces
 #include "vtkTyndallMedium.h"        // For the interface
 #include "vtkTyndallProjection.h"    // For the projection
@@ -101,9 +104,28 @@ public:
   ///@}
 
   ///@{
-  /// The finite scalar range, and the count of NaN scalars.
+  /**
+   * The finite scalar range (component 0's), and the count of samples with
+   * a NaN component; the finite range of component c (0 .. 3).
+   */
   const double* GetFiniteRange() const { return this->FiniteRange; }
   vtkIdType GetNumberOfNaNScalars() const { return this->NaNCount; }
+  const double* GetComponentRange(int c) const { return this->ComponentRanges[c]; }
+  ///@}
+
+  ///@{
+  /**
+   * The scalars' components (vtkTyndallComponents: how they are classified)
+   * and table t of the components' GetTableCount() (table 0 is GetTable()).
+   */
+  const vtkTyndallComponents& GetComponents() const { return this->Components; }
+  const vtkTyndallTransferTable& GetComponentTable(int t) const
+  {
+    return t == 0 ? this->Table : this->ComponentTables[t - 1];
+  }
+  ///@}
+
+  ///@{
 
   /**
    * The mapper's binary mask (vtkParticipatingMediumMapper::SetMaskInput()
@@ -230,9 +252,20 @@ public:
    * world axes (the CPU twin of the shaders' tyndallScalarGradient()):
    * central differences of FieldScalar() one sample apart along each index
    * axis (clamped at the border), mapped through the world -> index
-   * matrix's transpose; 0 where a difference meets missing data.
+   * matrix's transpose; 0 where a difference meets missing data. Of
+   * component `component` (0 .. 3) of several (vtkTyndallComponents; then
+   * 0 where any component is missing).
    */
-  void FieldGradient(const double p[3], double gradient[3]) const;
+  void FieldGradient(const double p[3], double gradient[3], int component = 0) const;
+
+  /**
+   * Independent components' parts at the field index point p
+   * (vtkTyndallComponents::Parts(): each component's weight in the
+   * mixture's colour) and colours (each table's); false at missing data.
+   * What their shading reads (vtkTyndallShading).
+   */
+  bool ComponentParts(const double p[3], double weights[vtkTyndallComponents::MaximumCount],
+    double colors[vtkTyndallComponents::MaximumCount][3]) const;
 
   ///@{
   /// vtkTyndallMedium: emission from an array, the majorant (the table's largest extinction), a
@@ -250,10 +283,16 @@ public:
 
   /**
    * The scalar the CPU integrators read at the field index point p (NaN at
-   * missing data): trilinear interpolation of the scalars (Sampler), or for
-   * a particle cloud the particles' exact sum.
+   * missing data): trilinear interpolation of the scalars (Sampler;
+   * component 0), or for a particle cloud the particles' exact sum.
    */
   virtual double FieldScalar(const double p[3]) const;
+
+  /**
+   * Every component at the field index point p, interpolated on its own
+   * (Sampler); false when one is NaN (missing data).
+   */
+  bool FieldComponents(const double p[3], double values[vtkTyndallComponents::MaximumCount]) const;
 
   /**
    * The scalar at the field index point p as VTK's blend modes that read it
@@ -294,13 +333,13 @@ public:
   ///@}
 
   /**
-   * A finite scalar as both renderers see it: +-Inf become the range's ends
-   * (NaN passes through: see Sampler).
+   * A finite scalar of component c as both renderers see it: +-Inf become
+   * the range's ends (NaN passes through: see Sampler).
    */
-  double Clean(double v) const
+  double Clean(double v, int c = 0) const
   {
-    return v < this->FiniteRange[0] ? this->FiniteRange[0]
-                                    : (v > this->FiniteRange[1] ? this->FiniteRange[1] : v);
+    const double* r = this->ComponentRanges[c];
+    return v < r[0] ? r[0] : (v > r[1] ? r[1] : v);
   }
 
   /**
@@ -309,28 +348,39 @@ public:
    * clamp-to-edge); NaN when one of the 8 voxels around the point is NaN
    * (missing data: empty medium). With the medium's GetNearest() the
    * nearest sample's value instead (the GPU's nearest filtering: index
-   * round(p), clamped). T is the scalars' value type.
+   * round(p), clamped). T is the scalars' value type; `component` the
+   * component read.
    */
   template <typename T>
   class Sampler
   {
   public:
-    Sampler(const vtkTyndallGridMedium& medium);
+    Sampler(const vtkTyndallGridMedium& medium, int component = 0);
     /// Another array of the same layout (the emission array), not cleaned.
     Sampler(const vtkTyndallGridMedium& medium, const T* data);
     double Scalar(const double p[3]) const;
+    /// Every component at p at once (GetScalars()' components of them).
+    void Values(const double p[3], double* values) const;
 
   private:
-    double Value(T v) const
+    // The sample (nearest: base, steps 0) or the cell (trilinear: its first
+    // sample, the steps to the next along each axis, the fractions) p reads;
+    // false when a sample it reads is masked.
+    bool Cell(const double p[3], vtkIdType& base, vtkIdType step[3], double f[3]) const;
+    double Interpolate(
+      vtkIdType base, const vtkIdType step[3], const double f[3], int component) const;
+    double Value(T v, int component) const
     {
       if (std::numeric_limits<T>::has_quiet_NaN && this->Clean)
       {
-        return this->Medium->Clean(static_cast<double>(v));
+        return this->Medium->Clean(static_cast<double>(v), component);
       }
       return static_cast<double>(v);
     }
     const vtkTyndallGridMedium* Medium;
     const T* Data;
+    int Components = 1;                  // values per sample
+    int Component = 0;                   // the one read
     const unsigned char* Mask = nullptr; // the binary mask (GetMask()), or none
     bool Clean = true;
     bool Nearest = false;
@@ -383,10 +433,28 @@ private:
   double Transfer2DExtinction(double opacity) const;
   // The central differences of FieldScalar() one sample apart along each
   // index axis at p, per sample; 0 (and false) where one meets missing data.
-  bool IndexDifferences(const double p[3], double g[3]) const;
+  bool IndexDifferences(const double p[3], double g[3], int component = 0) const;
+  // Several components at p: their values, each table's extinction and
+  // colour at its component's value, and table 0's position (k, f).
+  struct ComponentLookup
+  {
+    double Values[vtkTyndallComponents::MaximumCount];
+    double Sigma[vtkTyndallComponents::MaximumCount] = { 0.0, 0.0, 0.0, 0.0 };
+    double Colors[vtkTyndallComponents::MaximumCount][3] = {};
+    int K0 = 0;
+    double F0 = 0.0;
+  };
+  // Fills `lookup` at p; false at missing data (ComponentSample(), ComponentParts()).
+  bool LookUpComponents(const double p[3], ComponentLookup& lookup) const;
+  // Several components' sample at p (vtkTyndallComponents::Mix()); false at
+  // missing data.
+  bool ComponentSample(const double p[3], Point& point) const;
+  // Reads the components' classification (after the scalars); false (with
+  // an error) for a setting multi-component scalars are not drawn with.
+  bool UpdateComponents(vtkVolume* volume, vtkObject* reporter);
 
-  // The sampler of the scalars' value type for FieldScalar() (after a
-  // change of the scalars or of GetNearest()).
+  // The samplers of the scalars' value type for FieldScalar() and
+  // FieldComponents() (after a change of the scalars or of GetNearest()).
   void MakeField();
 
   // The scalars and what they were read from (Input: during Update() only).
@@ -400,6 +468,9 @@ private:
   int Dimensions[3] = { 0, 0, 0 };
   bool CellScalars = false;
   double FiniteRange[2] = { 0.0, 0.0 };
+  double ComponentRanges[vtkTyndallComponents::MaximumCount][2] = {};
+  vtkTyndallComponents Components;
+  std::vector<vtkTyndallTransferTable> ComponentTables; // tables 1 .. GetTableCount() - 1
   vtkIdType NaNCount = 0;
   std::vector<unsigned char> Mask;
   std::vector<double> MaskKey;
@@ -436,14 +507,16 @@ private:
   class FieldBase;
   template <typename T>
   class TypedField;
-  std::unique_ptr<FieldBase> Field;
+  std::vector<std::unique_ptr<FieldBase>> Field; // one per component
 };
 
 //------------------------------------------------------------------------------
 template <typename T>
-vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium)
+vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, int component)
   : Medium(&medium)
   , Data(static_cast<const T*>(medium.GetScalars()->GetVoidPointer(0)))
+  , Components(medium.GetScalars()->GetNumberOfComponents())
+  , Component(component)
   , Mask(medium.Mask.empty() ? nullptr : medium.Mask.data())
   , Nearest(medium.Nearest)
 {
@@ -462,6 +535,8 @@ vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, co
   : Sampler(medium)
 {
   this->Data = data;
+  this->Components = 1;
+  this->Component = 0;
   this->Mask = nullptr; // another array: its own values
   this->Clean = false;
   this->Nearest = false; // another array (emission: never a plain property's)
@@ -469,26 +544,22 @@ vtkTyndallGridMedium::Sampler<T>::Sampler(const vtkTyndallGridMedium& medium, co
 
 //------------------------------------------------------------------------------
 template <typename T>
-double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
+bool vtkTyndallGridMedium::Sampler<T>::Cell(
+  const double p[3], vtkIdType& base, vtkIdType step[3], double f[3]) const
 {
+  base = 0;
   if (this->Nearest)
   {
-    vtkIdType index = 0;
     for (int a = 0; a < 3; ++a)
     {
       const int n = this->Dims[a];
       const double x = p[a] > 0.0 ? (p[a] < n - 1 ? p[a] : n - 1) : 0.0;
-      index += static_cast<vtkIdType>(x + 0.5) * this->Stride[a];
+      base += static_cast<vtkIdType>(x + 0.5) * this->Stride[a];
+      step[a] = 0; // the 8 corners are the nearest sample
+      f[a] = 0.0;
     }
-    if (this->Mask && !this->Mask[index])
-    {
-      return std::numeric_limits<double>::quiet_NaN(); // masked
-    }
-    return this->Value(this->Data[index]);
+    return !this->Mask || this->Mask[base];
   }
-  vtkIdType base = 0;
-  vtkIdType step[3];
-  double f[3];
   for (int a = 0; a < 3; ++a)
   {
     const int n = this->Dims[a];
@@ -506,21 +577,27 @@ double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
   if (this->Mask)
   {
     const unsigned char* m = this->Mask + base;
-    if (!(m[0] && m[step[0]] && m[step[1]] && m[step[0] + step[1]] && m[step[2]] &&
-          m[step[0] + step[2]] && m[step[1] + step[2]] && m[step[0] + step[1] + step[2]]))
-    {
-      return std::numeric_limits<double>::quiet_NaN(); // interpolated from a masked sample
-    }
+    return m[0] && m[step[0]] && m[step[1]] && m[step[0] + step[1]] && m[step[2]] &&
+      m[step[0] + step[2]] && m[step[1] + step[2]] && m[step[0] + step[1] + step[2]];
   }
-  const T* d = this->Data + base;
-  const double c000 = this->Value(d[0]);
-  const double c100 = this->Value(d[step[0]]);
-  const double c010 = this->Value(d[step[1]]);
-  const double c110 = this->Value(d[step[0] + step[1]]);
-  const double c001 = this->Value(d[step[2]]);
-  const double c101 = this->Value(d[step[0] + step[2]]);
-  const double c011 = this->Value(d[step[1] + step[2]]);
-  const double c111 = this->Value(d[step[0] + step[1] + step[2]]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+double vtkTyndallGridMedium::Sampler<T>::Interpolate(
+  vtkIdType base, const vtkIdType step[3], const double f[3], int component) const
+{
+  const int nc = this->Components;
+  const T* d = this->Data + base * nc + component;
+  const double c000 = this->Value(d[0], component);
+  const double c100 = this->Value(d[step[0] * nc], component);
+  const double c010 = this->Value(d[step[1] * nc], component);
+  const double c110 = this->Value(d[(step[0] + step[1]) * nc], component);
+  const double c001 = this->Value(d[step[2] * nc], component);
+  const double c101 = this->Value(d[(step[0] + step[2]) * nc], component);
+  const double c011 = this->Value(d[(step[1] + step[2]) * nc], component);
+  const double c111 = this->Value(d[(step[0] + step[1] + step[2]) * nc], component);
   const double c00 = c000 + f[0] * (c100 - c000);
   const double c10 = c010 + f[0] * (c110 - c010);
   const double c01 = c001 + f[0] * (c101 - c001);
@@ -528,6 +605,30 @@ double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
   const double c0 = c00 + f[1] * (c10 - c00);
   const double c1 = c01 + f[1] * (c11 - c01);
   return c0 + f[2] * (c1 - c0);
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+double vtkTyndallGridMedium::Sampler<T>::Scalar(const double p[3]) const
+{
+  vtkIdType base, step[3];
+  double f[3];
+  return this->Cell(p, base, step, f) ? this->Interpolate(base, step, f, this->Component)
+                                      : std::numeric_limits<double>::quiet_NaN(); // masked
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+void vtkTyndallGridMedium::Sampler<T>::Values(const double p[3], double* values) const
+{
+  vtkIdType base, step[3];
+  double f[3];
+  const bool kept = this->Cell(p, base, step, f);
+  for (int c = 0; c < this->Components; ++c)
+  {
+    values[c] =
+      kept ? this->Interpolate(base, step, f, c) : std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 #endif

@@ -3,6 +3,7 @@
 #include "vtkNew.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
+#include "vtkTyndallComponents.h"
 #include "vtkTyndallTransferTable.h"
 
 #include <algorithm>
@@ -56,8 +57,9 @@ int vtkTyndallMajorantGrid::BlockOf(int a, double v) const
 
 //------------------------------------------------------------------------------
 double vtkTyndallMajorantGrid::BuildRanges(
-  const float* values, const unsigned char* valid, const int dims[3])
+  const float* values, int components, const unsigned char* valid, const int dims[3])
 {
+  this->Components = components;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   for (int a = 0; a < 3; ++a)
@@ -65,8 +67,8 @@ double vtkTyndallMajorantGrid::BuildRanges(
     this->Counts[a] = std::max(dims[a] - 1, 0) / BlockSize + 1;
   }
   const size_t blocks = static_cast<size_t>(this->Counts[0]) * this->Counts[1] * this->Counts[2];
-  this->Low.assign(blocks, std::numeric_limits<float>::infinity());
-  this->High.assign(blocks, -std::numeric_limits<float>::infinity());
+  this->Low.assign(blocks * components, std::numeric_limits<float>::infinity());
+  this->High.assign(blocks * components, -std::numeric_limits<float>::infinity());
   this->Majorants.assign(blocks, 0.0f);
   const int* counts = this->Counts;
   vtkSMPTools::For(0, counts[1] * counts[2],
@@ -78,7 +80,8 @@ double vtkTyndallMajorantGrid::BuildRanges(
         for (int bx = 0; bx < counts[0]; ++bx)
         {
           const size_t block = (static_cast<size_t>(bz) * counts[1] + by) * counts[0] + bx;
-          float lo = this->Low[block], hi = this->High[block];
+          float* lo = this->Low.data() + block * components;
+          float* hi = this->High.data() + block * components;
           // Samples b BlockSize - 1 .. (b + 1) BlockSize + 1 (clamped).
           auto first = [](int b) { return std::max(b * BlockSize - 1, 0); };
           auto last = [dims](int b, int a)
@@ -93,14 +96,16 @@ double vtkTyndallMajorantGrid::BuildRanges(
               {
                 if (!valid || valid[rowStart + x])
                 {
-                  lo = std::min(lo, values[rowStart + x]);
-                  hi = std::max(hi, values[rowStart + x]);
+                  const float* v = values + (rowStart + x) * components;
+                  for (int c = 0; c < components; ++c)
+                  {
+                    lo[c] = std::min(lo[c], v[c]);
+                    hi[c] = std::max(hi[c], v[c]);
+                  }
                 }
               }
             }
           }
-          this->Low[block] = lo;
-          this->High[block] = hi;
         }
       }
     });
@@ -111,24 +116,46 @@ double vtkTyndallMajorantGrid::BuildRanges(
 //------------------------------------------------------------------------------
 double vtkTyndallMajorantGrid::BuildMajorants(const vtkTyndallTransferTable& table)
 {
+  const vtkTyndallTransferTable* tables[] = { &table };
+  return this->BuildMajorants(tables, vtkTyndallComponents());
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallMajorantGrid::BuildMajorants(
+  const vtkTyndallTransferTable* const tables[], const vtkTyndallComponents& components)
+{
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  const RangeMaximum maximum(table.Extinction);
-  const int last = static_cast<int>(table.Extinction.size()) - 1;
+  const int count = components.GetTableCount();
+  std::vector<RangeMaximum> maxima;
+  for (int t = 0; t < count; ++t)
+  {
+    maxima.emplace_back(tables[t]->Extinction);
+  }
   // The table position x = (s - Minimum) * Scale; linear filtering weighs
   // entries floor(x) and floor(x) + 1, the second with weight x - floor(x):
   // values in [lo, hi] read entries floor(x_lo) .. ceil(x_hi).
-  auto entry = [&table, last](double s, double (*round)(double))
+  auto entry = [](const vtkTyndallTransferTable& table, double s, double (*round)(double))
   {
     const double x = round((s - table.Minimum) * table.Scale);
-    return static_cast<int>(std::min(std::max(x, 0.0), static_cast<double>(last)));
+    const double last = static_cast<double>(table.Extinction.size()) - 1.0;
+    return static_cast<int>(std::min(std::max(x, 0.0), last));
   };
+  const int nc = this->Components;
   for (size_t b = 0; b < this->Majorants.size(); ++b)
   {
-    this->Majorants[b] = this->Low[b] > this->High[b]
-      ? 0.0f
-      : static_cast<float>(
-          maximum.Query(entry(this->Low[b], std::floor), entry(this->High[b], std::ceil)));
+    double largest[vtkTyndallComponents::MaximumCount] = { 0.0, 0.0, 0.0, 0.0 };
+    bool empty = false;
+    for (int t = 0; t < count && !empty; ++t)
+    {
+      const int c = components.TableComponent(t);
+      const float lo = this->Low[b * nc + c], hi = this->High[b * nc + c];
+      empty = lo > hi; // every sample missing
+      largest[t] = empty
+        ? 0.0
+        : maxima[t].Query(entry(*tables[t], lo, std::floor), entry(*tables[t], hi, std::ceil));
+    }
+    this->Majorants[b] = empty ? 0.0f : static_cast<float>(components.Majorant(largest));
   }
   timer->StopTimer();
   return timer->GetElapsedTime();

@@ -42,6 +42,7 @@
 
 #include <vector> // For std::vector
 
+class vtkTyndallComponents;
 class vtkTyndallTransferTable;
 
 class TYNDALLMEDIUM_EXPORT vtkTyndallMajorantGrid
@@ -51,17 +52,25 @@ public:
   static constexpr int BlockSize = 8;
 
   /**
-   * The scalar range of every block of `values` (dims[0] x dims[1] x
-   * dims[2] samples, x fastest); `valid` (may be null) is 0 for missing
-   * samples. Returns the seconds it took.
-   */
-  double BuildRanges(const float* values, const unsigned char* valid, const int dims[3]);
-
-  /**
-   * Each block's majorant under `table` (after BuildRanges()). Returns the
+   * The range of each of the `components` of every block of `values`
+   * (dims[0] x dims[1] x dims[2] samples, x fastest, `components` values
+   * each); `valid` (may be null) is 0 for missing samples. Returns the
    * seconds it took.
    */
+  double BuildRanges(
+    const float* values, int components, const unsigned char* valid, const int dims[3]);
+
+  ///@{
+  /**
+   * Each block's majorant (after BuildRanges()) under one `table`, or under
+   * the tables of `components` (vtkTyndallComponents::GetTableCount() of
+   * them, each over the range of its component; vtkTyndallComponents::
+   * Majorant() bounds their mixture). Returns the seconds it took.
+   */
   double BuildMajorants(const vtkTyndallTransferTable& table);
+  double BuildMajorants(
+    const vtkTyndallTransferTable* const tables[], const vtkTyndallComponents& components);
+  ///@}
 
   /// Blocks per axis.
   const int* GetBlockCounts() const { return this->Counts; }
@@ -77,8 +86,9 @@ public:
 
 private:
   int Counts[3] = { 0, 0, 0 };
-  std::vector<float> Low;  // per block; +inf when every sample is missing
-  std::vector<float> High; // per block; -inf when every sample is missing
+  int Components = 1;
+  std::vector<float> Low;  // per block and component; +inf when every sample is missing
+  std::vector<float> High; // per block and component; -inf when every sample is missing
   std::vector<float> Majorants;
 };
 

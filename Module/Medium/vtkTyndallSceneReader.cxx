@@ -364,6 +364,10 @@ void vtkTyndallSceneReader::UpdateGuests(
     {
       reason = "has a 2-D transfer function";
     }
+    else if (g.Medium->GetComponents().Enabled())
+    {
+      reason = "has several components";
+    }
     else if (otherProperty && otherProperty->GetDetailNoise())
     {
       reason = "has procedural detail";

@@ -18,40 +18,41 @@ void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* propert
   projection.Read(mapper, property);
   this->On = property && !vtkParticipatingMediumProperty::SafeDownCast(property) &&
     property->GetShade(0) && !projection.Enabled();
-  if (property)
+  for (int c = 0; c < 4 && property; ++c)
   {
-    this->Ambient = property->GetAmbient(0);
-    this->Diffuse = property->GetDiffuse(0);
-    this->Specular = property->GetSpecular(0);
-    this->SpecularPower = property->GetSpecularPower(0);
+    this->Coefficients[c][0] = property->GetAmbient(c);
+    this->Coefficients[c][1] = property->GetDiffuse(c);
+    this->Coefficients[c][2] = property->GetSpecular(c);
+    this->Coefficients[c][3] = property->GetSpecularPower(c);
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallShading::Start(const double color[3], double rgb[3]) const
+void vtkTyndallShading::Start(const double color[3], double rgb[3], int c) const
 {
-  for (int c = 0; c < 3; ++c)
+  for (int i = 0; i < 3; ++i)
   {
-    rgb[c] = this->Ambient * color[c];
+    rgb[i] = this->Coefficients[c][0] * color[i];
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkTyndallShading::AddLight(const double n[3], const double l[3], const double v[3],
-  const double color[3], const double E[3], const double T[3], double rgb[3]) const
+  const double color[3], const double E[3], const double T[3], double rgb[3], int c) const
 {
   double h[3] = { l[0] + v[0], l[1] + v[1], l[2] + v[2] };
   const double length = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-  for (int c = 0; c < 3; ++c)
+  for (int i = 0; i < 3; ++i)
   {
-    h[c] = length > 0.0 ? h[c] / length : 0.0;
+    h[i] = length > 0.0 ? h[i] / length : 0.0;
   }
+  const double* k = this->Coefficients[c];
   const double nl = std::abs(n[0] * l[0] + n[1] * l[1] + n[2] * l[2]);
   const double nh = std::abs(n[0] * h[0] + n[1] * h[1] + n[2] * h[2]);
-  const double specular = this->Specular * std::pow(nh, this->SpecularPower);
-  for (int c = 0; c < 3; ++c)
+  const double specular = k[2] * std::pow(nh, k[3]);
+  for (int i = 0; i < 3; ++i)
   {
-    rgb[c] += T[c] * E[c] * (this->Diffuse * nl * color[c] + specular);
+    rgb[i] += T[i] * E[i] * (k[1] * nl * color[i] + specular);
   }
 }
 

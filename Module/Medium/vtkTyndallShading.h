@@ -34,8 +34,16 @@
  * several lights VTK keeps the last light's specular term only; here every
  * light adds its own.
  *
+ * Independent components (vtkTyndallComponents) are shaded each with its
+ * own gradient, colour and coefficients (the property's for that
+ * component), clamped, then mixed with the weights w_i sigma_i / sigma of
+ * their mixture (vtkTyndallGridMedium::ComponentParts()), as VTK 9.1
+ * shades and mixes them; dependent ones with component 0's gradient and
+ * coefficients, as VTK does.
+ *
  * Start(), AddLight() and Finish() are the CPU twin of the shader's
- * tyndallSurfaceShading() (vtkTransmittanceRayCastFS.glsl).
+ * tyndallSurfaceShading() and tyndallComponentShading()
+ * (vtkTransmittanceRayCastFS.glsl).
  *
  * Internal to Tyndall::Medium; not wrapped.
  */
@@ -60,17 +68,17 @@ public:
 
   bool Enabled() const { return this->On; }
   ///@{
-  /// The property's Ambient, Diffuse, Specular and SpecularPower (component 0).
-  double GetAmbient() const { return this->Ambient; }
-  double GetDiffuse() const { return this->Diffuse; }
-  double GetSpecular() const { return this->Specular; }
-  double GetSpecularPower() const { return this->SpecularPower; }
+  /// The property's Ambient, Diffuse, Specular and SpecularPower (of a component, 0 .. 3).
+  double GetAmbient(int c = 0) const { return this->Coefficients[c][0]; }
+  double GetDiffuse(int c = 0) const { return this->Coefficients[c][1]; }
+  double GetSpecular(int c = 0) const { return this->Coefficients[c][2]; }
+  double GetSpecularPower(int c = 0) const { return this->Coefficients[c][3]; }
   ///@}
 
   /**
-   * Starts a sample's shading: rgb = Ka c.
+   * Starts a sample's shading with component c's coefficients: rgb = Ka c.
    */
-  void Start(const double color[3], double rgb[3]) const;
+  void Start(const double color[3], double rgb[3], int c = 0) const;
 
   /**
    * Adds light l's term T E (Kd |n.l| c + Ks |n.h|^p) to rgb: n the unit
@@ -79,7 +87,7 @@ public:
    * channel.
    */
   void AddLight(const double n[3], const double l[3], const double v[3], const double color[3],
-    const double E[3], const double T[3], double rgb[3]) const;
+    const double E[3], const double T[3], double rgb[3], int c = 0) const;
 
   /// How far towards a light its transmittance is taken, in voxels (see the class description).
   static constexpr double ShadowOffset = 1.0;
@@ -89,10 +97,9 @@ public:
 
 private:
   bool On = false;
-  double Ambient = 0.1;
-  double Diffuse = 0.7;
-  double Specular = 0.2;
-  double SpecularPower = 10.0;
+  // Per component: Ambient, Diffuse, Specular, SpecularPower.
+  double Coefficients[4][4] = { { 0.1, 0.7, 0.2, 10.0 }, { 0.1, 0.7, 0.2, 10.0 },
+    { 0.1, 0.7, 0.2, 10.0 }, { 0.1, 0.7, 0.2, 10.0 } };
 };
 
 #endif

@@ -14,9 +14,9 @@
 
 //------------------------------------------------------------------------------
 bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission,
-  double lo, double hi, std::string& error, bool linearExtinction)
+  double lo, double hi, std::string& error, bool linearExtinction, int function, int unitComponent)
 {
-  const double unitDistance = property->GetScalarOpacityUnitDistance(0);
+  const double unitDistance = property->GetScalarOpacityUnitDistance(unitComponent);
   if (!(unitDistance > 0.0) || !std::isfinite(unitDistance))
   {
     std::ostringstream os;
@@ -32,10 +32,11 @@ bool vtkTyndallTransferTable::Build(vtkVolumeProperty* property, vtkColorTransfe
   this->Transfer2DSize[0] = this->Transfer2DSize[1] = 0;
   this->Scale = this->Maximum > this->Minimum ? (Size - 1) / (this->Maximum - this->Minimum) : 0.0;
 
-  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
-  const bool gray = property->GetColorChannels(0) == 1;
-  vtkPiecewiseFunction* grayFunction = gray ? property->GetGrayTransferFunction(0) : nullptr;
-  vtkColorTransferFunction* rgbFunction = gray ? nullptr : property->GetRGBTransferFunction(0);
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(function);
+  const bool gray = property->GetColorChannels(function) == 1;
+  vtkPiecewiseFunction* grayFunction = gray ? property->GetGrayTransferFunction(function) : nullptr;
+  vtkColorTransferFunction* rgbFunction =
+    gray ? nullptr : property->GetRGBTransferFunction(function);
   this->Extinction.assign(Size, 0.0);
   this->Albedo.assign(3 * Size, 0.0);
   this->Emission.assign(3 * Size, 0.0);

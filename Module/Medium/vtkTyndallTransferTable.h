@@ -57,12 +57,15 @@ public:
   ///@}
 
   /**
-   * Tabulates component 0 of `property` (and `emission`, may be null) over
-   * the finite scalar range [lo, hi]. False with `error` set when the
-   * property cannot be used (non-positive or non-finite unit distance).
+   * Tabulates the functions of index `function` of `property` (and
+   * `emission`, may be null) over the finite scalar range [lo, hi], the
+   * opacity with the scalar opacity unit distance of component
+   * `unitComponent` (vtkTyndallComponents: the component read). False with
+   * `error` set when the property cannot be used (non-positive or
+   * non-finite unit distance).
    */
   bool Build(vtkVolumeProperty* property, vtkColorTransferFunction* emission, double lo, double hi,
-    std::string& error, bool linearExtinction = false);
+    std::string& error, bool linearExtinction = false, int function = 0, int unitComponent = 0);
 
   ///@{
   /**

@@ -1,5 +1,9 @@
 #include "vtkTyndallVolumeSettings.h"
 
+#include "vtkAbstractMapper.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkImageData.h"
 #include "vtkParticipatingMediumMapper.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
@@ -46,6 +50,20 @@ bool HasTranslucentGeometry(vtkRenderer* renderer)
     }
   }
   return false;
+}
+
+// The number of components of the scalars `mapper` draws (0 without).
+int ScalarComponents(vtkVolumeMapper* mapper)
+{
+  auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
+  vtkDataSet* input =
+    tyndall ? static_cast<vtkDataSet*>(tyndall->GetMediumImage()) : mapper->GetDataSetInput();
+  int cellFlag = 0;
+  vtkDataArray* scalars = input
+    ? vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+        mapper->GetArrayId(), mapper->GetArrayName(), cellFlag)
+    : nullptr;
+  return scalars ? scalars->GetNumberOfComponents() : 0;
 }
 
 }
@@ -135,6 +153,11 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   {
     notDrawn.push_back(std::string("gradient opacity in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
+  }
+  // Gradient opacity is not read with several components (vtkTyndallComponents).
+  if (mapper && HasGradientOpacity(property) && ScalarComponents(mapper) > 1)
+  {
+    notDrawn.push_back("gradient opacity with several components (ignored)");
   }
   // Gradient opacity is not read in the isosurface blend mode (vtkTyndallIsosurfaces).
   if (mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND &&

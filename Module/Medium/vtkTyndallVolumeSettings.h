@@ -22,14 +22,16 @@
  * meaning):
  * - gradient shading in a projection blend mode (unshaded; drawn in the
  *   others: vtkTyndallShading);
- * - gradient opacity in a projection or the isosurface blend mode
- *   (ignored; drawn in the others: vtkTyndallGridMedium::GetGradientOpacity());
+ * - gradient opacity in a projection or the isosurface blend mode, or
+ *   with several components (ignored; drawn in the others:
+ *   vtkTyndallGridMedium::GetGradientOpacity());
  * - 2-D transfer functions in a projection or the isosurface blend mode
  *   (TF_2D: the 1-D functions are used; drawn in the others).
  * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
  * vtkTyndallGridMedium::GetNearest().)
- * The first component's settings are read (more components are refused
- * elsewhere). vtkTyndallSceneReader warns with the list once when it
+ * The first component's settings are read (several components are
+ * classified by vtkTyndallComponents; the settings they are not drawn
+ * with are an error there). vtkTyndallSceneReader warns with the list once when it
  * changes, for both renderers.
  *
  * Internal to Tyndall::Medium; not wrapped.

@@ -219,17 +219,34 @@ private:
     const LocalRays& rays, double J[3]) const
   {
     const Scene& s = *this->S;
-    const vtkTyndallShading& shading = s.Shaded->GetShading();
-    double p[3], n[3];
+    const vtkTyndallGridMedium& grid = *s.Shaded;
+    const vtkTyndallShading& shading = grid.GetShading();
+    double p[3];
     rays.At(0, tNormal, p);
-    s.Shaded->FieldGradient(p, n);
-    const double length = vtkMath::Norm(n);
-    for (int c = 0; c < 3; ++c)
+    // One part (the sample's colour), or independent components' each
+    // (vtkTyndallGridMedium::ComponentParts()) with its own gradient.
+    constexpr int most = vtkTyndallComponents::MaximumCount;
+    double weights[most] = { 1.0, 0.0, 0.0, 0.0 }, colors[most][3] = {};
+    std::copy(point.Albedo, point.Albedo + 3, colors[0]);
+    const bool independent = grid.GetComponents().GetMode() == vtkTyndallComponents::Independent;
+    const int parts = independent ? grid.GetComponents().GetCount() : 1;
+    if (independent && !grid.ComponentParts(p, weights, colors))
     {
-      n[c] = length > 0.0 ? n[c] / length : 0.0;
+      J[0] = J[1] = J[2] = 0.0;
+      return;
+    }
+    double n[most][3], sums[most][3];
+    for (int i = 0; i < parts; ++i)
+    {
+      grid.FieldGradient(p, n[i], i);
+      const double length = vtkMath::Norm(n[i]);
+      for (int c = 0; c < 3; ++c)
+      {
+        n[i][c] = length > 0.0 ? n[i][c] / length : 0.0;
+      }
+      shading.Start(colors[i], sums[i], i);
     }
     const double v[3] = { -w[0], -w[1], -w[2] };
-    shading.Start(point.Albedo, J);
     for (const Scene::LightSource& light : s.Lights)
     {
       double l[3], factor, tMax;
@@ -238,12 +255,23 @@ private:
         continue;
       }
       double T[3];
-      this->SurfaceTransmittance(*s.Shaded, x, l, tMax, T);
+      this->SurfaceTransmittance(grid, x, l, tMax, T);
       const double E[3] = { factor * light.Color[0], factor * light.Color[1],
         factor * light.Color[2] };
-      shading.AddLight(n, light.Headlight ? v : l, v, point.Albedo, E, T, J);
+      for (int i = 0; i < parts; ++i)
+      {
+        shading.AddLight(n[i], light.Headlight ? v : l, v, colors[i], E, T, sums[i], i);
+      }
     }
-    vtkTyndallShading::Finish(J);
+    J[0] = J[1] = J[2] = 0.0;
+    for (int i = 0; i < parts; ++i)
+    {
+      vtkTyndallShading::Finish(sums[i]);
+      for (int c = 0; c < 3; ++c)
+      {
+        J[c] += weights[i] * sums[i][c];
+      }
+    }
   }
 
   // T_l of a surface at the world point x towards l (up to tMax) on `grid`

@@ -2,6 +2,7 @@
 
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTyndallComponents.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallTransferTable.h"
 
@@ -32,6 +33,10 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
   variant.Transfer2D = textures.GetTransfer2DTexture() != nullptr;
   variant.Isosurfaces = grid.GetIsosurfaces().Enabled();
   variant.IsoCount = static_cast<int>(grid.GetIsosurfaces().GetValues().size());
+  const vtkTyndallComponents& components = grid.GetComponents();
+  variant.Components = components.GetCount();
+  variant.ComponentMode = static_cast<int>(components.GetMode());
+  variant.ComponentAdditive = components.GetAdditive();
   // Emission from a separate array glows where the extinction is 0, and
   // isosurfaces lie where the table may be empty: no block is empty then.
   variant.SkipEmpty = variant.SkipEmpty && !grid.GetEmissionFromArray() && !variant.Isosurfaces;
@@ -102,6 +107,10 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
     program->SetUniform3f("gradientBoxToVoxel", toVoxel);
     program->SetUniformf("gradientToTable", static_cast<float>(1.0 / table.GradientMaximum));
   }
+  if (grid.GetComponents().Enabled())
+  {
+    this->SetComponentUniforms(program, grid, textures);
+  }
   const std::vector<double>& isoValues = grid.GetIsosurfaces().GetValues();
   if (grid.GetIsosurfaces().Enabled() && !isoValues.empty())
   {
@@ -116,5 +125,39 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
     const float toEmission[2] = { static_cast<float>(table.EmissionTextureScale()),
       static_cast<float>(table.EmissionTextureShift()) };
     program->SetUniform2f("emissionToTable", toEmission);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceGridAdapter::SetComponentUniforms(vtkShaderProgram* program,
+  const vtkTyndallGridMedium& grid, const vtkTransmittanceMediumTextures& textures) const
+{
+  // Declared only by the components' variant (tyndallComponentMedium()):
+  // table t's coordinate at its component's value, each component on its
+  // finite range, the weights.
+  const vtkTyndallComponents& components = grid.GetComponents();
+  float toTable[8] = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f };
+  for (int t = 0; t < components.GetTableCount(); ++t)
+  {
+    const vtkTyndallTransferTable& table = grid.GetComponentTable(t);
+    toTable[t] = static_cast<float>(table.TextureScale());
+    toTable[4 + t] = static_cast<float>(table.TextureShift());
+  }
+  float toUnit[8] = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f };
+  float weights[4];
+  for (int c = 0; c < vtkTyndallComponents::MaximumCount; ++c)
+  {
+    const double* r = grid.GetComponentRange(c);
+    const double scale = c < components.GetCount() && r[1] > r[0] ? 1.0 / (r[1] - r[0]) : 0.0;
+    toUnit[c] = static_cast<float>(scale);
+    toUnit[4 + c] = static_cast<float>(-r[0] * scale);
+    weights[c] = static_cast<float>(components.GetWeights()[c]);
+  }
+  program->SetUniform4fv("componentToTable", 2, toTable);
+  program->SetUniform4fv("componentUnit", 2, toUnit);
+  program->SetUniform4f("componentWeights", weights);
+  if (vtkTextureObject* tables = textures.GetComponentTexture())
+  {
+    program->SetUniformi("componentTexture", tables->GetTextureUnit());
   }
 }

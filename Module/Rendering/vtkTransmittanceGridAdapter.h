@@ -4,7 +4,7 @@
  *
  * Uploads the grid's scalars, validity (missing data), transfer table,
  * majorant blocks and emission array (vtkTransmittanceMediumTextures);
- * declares the switches TYNDALL_MISSING_DATA, TYNDALL_CLIP,
+ * declares the switches TYNDALL_MISSING_DATA, TYNDALL_CLIP, TYNDALL_COMPONENTS,
  * TYNDALL_CHROMATIC, TYNDALL_EMISSION and TYNDALL_EMISSION_ARRAY (and turns
  * TYNDALL_SKIP_EMPTY off for an emission array, which glows in blocks
  * without extinction); sets their uniforms. Its GLSL is the common
@@ -30,6 +30,11 @@ public:
     const vtkTransmittanceMediumTextures& textures) const override;
   /// None for a plain grid.
   vtkTransmittanceMediumTextures::Extras GetExtras(const vtkTyndallMedium& medium) const override;
+
+private:
+  // Several components' uniforms (vtkTyndallComponents; tyndallComponentMedium()).
+  void SetComponentUniforms(vtkShaderProgram* program, const vtkTyndallGridMedium& grid,
+    const vtkTransmittanceMediumTextures& textures) const;
 };
 
 #endif

@@ -18,12 +18,13 @@ vtkStandardNewMacro(vtkTransmittanceMediumTextures);
 
 namespace
 {
-// The cleaned scalars at every `factor`-th sample, as floats, and where
-// `valid` is given, 0 for NaN (which becomes the range's minimum) and for a
-// masked sample (vtkTyndallGridMedium::GetMask()), 255 elsewhere.
+// The cleaned scalars (every component) at every `factor`-th sample, as
+// floats, and where `valid` is given, 0 for a NaN component (which becomes
+// its range's minimum) and for a masked sample
+// (vtkTyndallGridMedium::GetMask()), 255 elsewhere.
 template <typename T>
-void Gather(const vtkTyndallGridMedium& medium, const T* data, int factor, const int dims[3],
-  float* out, unsigned char* valid)
+void Gather(const vtkTyndallGridMedium& medium, const T* data, int components, int factor,
+  const int dims[3], float* out, unsigned char* valid)
 {
   const int* full = medium.GetDimensions();
   const bool floating = std::numeric_limits<T>::has_quiet_NaN;
@@ -39,10 +40,15 @@ void Gather(const vtkTyndallGridMedium& medium, const T* data, int factor, const
       for (int x = 0; x < dims[0]; ++x, ++i)
       {
         const vtkIdType index = row + static_cast<vtkIdType>(x) * factor;
-        const double v = static_cast<double>(data[index]);
-        const bool missing = std::isnan(v);
-        out[i] = static_cast<float>(
-          missing ? medium.GetFiniteRange()[0] : (floating ? medium.Clean(v) : v));
+        bool missing = false;
+        for (int c = 0; c < components; ++c)
+        {
+          const double v = static_cast<double>(data[index * components + c]);
+          const bool nan = std::isnan(v);
+          missing = missing || nan;
+          out[i * components + c] = static_cast<float>(
+            nan ? medium.GetComponentRange(c)[0] : (floating ? medium.Clean(v, c) : v));
+        }
         if (valid)
         {
           valid[i] = missing || (mask && !mask[index]) ? 0 : 255;
@@ -170,11 +176,13 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   const size_t count =
     static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
   const bool missing = medium.HasMissingData(); // NaN scalars or a mask
+  vtkDataArray* scalars = medium.GetScalars();
+  const int components = scalars->GetNumberOfComponents();
   std::vector<float> values;
   std::vector<unsigned char> valid;
   try
   {
-    values.resize(count);
+    values.resize(count * components);
     valid.resize(missing ? count : 0);
   }
   catch (const std::bad_alloc&)
@@ -182,21 +190,20 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
     vtkErrorWithObjectMacro(reporter, << "Cannot allocate " << count << " floats for the volume.");
     return false;
   }
-  vtkDataArray* scalars = medium.GetScalars();
   switch (scalars->GetDataType())
   {
-    vtkTemplateMacro(Gather(medium, static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), factor,
-      this->Dimensions, values.data(), missing ? valid.data() : nullptr));
+    vtkTemplateMacro(Gather(medium, static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
+      components, factor, this->Dimensions, values.data(), missing ? valid.data() : nullptr));
   }
-  this->BlockRangeTime =
-    this->Majorants.BuildRanges(values.data(), missing ? valid.data() : nullptr, this->Dimensions);
+  this->BlockRangeTime = this->Majorants.BuildRanges(
+    values.data(), components, missing ? valid.data() : nullptr, this->Dimensions);
   if (!this->VolumeTexture)
   {
     this->VolumeTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTransmittanceOffscreenDraw::SetClamped(this->VolumeTexture, window, true);
-  if (!this->VolumeTexture->Create3DFromRaw(
-        this->Dimensions[0], this->Dimensions[1], this->Dimensions[2], 1, VTK_FLOAT, values.data()))
+  if (!this->VolumeTexture->Create3DFromRaw(this->Dimensions[0], this->Dimensions[1],
+        this->Dimensions[2], components, VTK_FLOAT, values.data()))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not create the volume's 3-D texture.");
     return false;
@@ -327,6 +334,10 @@ bool vtkTransmittanceMediumTextures::UploadTable(
     vtkErrorWithObjectMacro(reporter, << "Could not create the transfer-function texture.");
     return false;
   }
+  if (!this->UploadComponentTables(window, medium, reporter))
+  {
+    return false;
+  }
   const vtkTyndallTransferTable& table = medium.GetTable();
   if (!table.Has2D())
   {
@@ -355,10 +366,54 @@ bool vtkTransmittanceMediumTextures::UploadTable(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadComponentTables(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  // Tables 1 .. of several components (vtkTyndallComponents): their albedo
+  // rows (colour, extinction), one row each.
+  const int tables = medium.GetComponents().GetTableCount();
+  if (tables < 2)
+  {
+    if (this->ComponentTexture)
+    {
+      this->ComponentTexture->ReleaseGraphicsResources(window);
+    }
+    this->ComponentTexture = nullptr;
+    return true;
+  }
+  std::vector<float> rows, table;
+  const size_t width = 4 * static_cast<size_t>(vtkTyndallTransferTable::Size);
+  for (int t = 1; t < tables; ++t)
+  {
+    medium.GetComponentTable(t).GetTexture(table);
+    const auto row = table.begin() + width * vtkTyndallTransferTable::AlbedoRow;
+    rows.insert(rows.end(), row, row + width);
+  }
+  if (!this->ComponentTexture)
+  {
+    this->ComponentTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTransmittanceOffscreenDraw::SetClamped(this->ComponentTexture, window, true);
+  if (!this->ComponentTexture->Create2DFromRaw(
+        vtkTyndallTransferTable::Size, tables - 1, 4, VTK_FLOAT, rows.data()))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the components' transfer texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceMediumTextures::UploadMajorants(
   vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
 {
-  this->MajorantTime = this->Majorants.BuildMajorants(medium.GetTable());
+  const vtkTyndallComponents& components = medium.GetComponents();
+  const vtkTyndallTransferTable* tables[vtkTyndallComponents::MaximumCount] = {};
+  for (int t = 0; t < components.GetTableCount(); ++t)
+  {
+    tables[t] = &medium.GetComponentTable(t);
+  }
+  this->MajorantTime = this->Majorants.BuildMajorants(tables, components);
   if (!this->BlockTexture)
   {
     this->BlockTexture = vtkSmartPointer<vtkTextureObject>::New();
@@ -416,9 +471,10 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
 //------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
-         this->TransferTexture.Get(), this->Transfer2DTexture.Get(), this->BlockTexture.Get(),
-         this->DetailTexture.Get(), this->EmissionTexture.Get(), this->ScatteringTexture.Get() })
+  for (vtkTextureObject* texture :
+    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get(),
+      this->Transfer2DTexture.Get(), this->BlockTexture.Get(), this->ComponentTexture.Get(),
+      this->DetailTexture.Get(), this->EmissionTexture.Get(), this->ScatteringTexture.Get() })
   {
     if (texture)
     {
@@ -429,6 +485,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->ValidityTexture = nullptr;
   this->TransferTexture = nullptr;
   this->Transfer2DTexture = nullptr;
+  this->ComponentTexture = nullptr;
   this->BlockTexture = nullptr;
   this->DetailTexture = nullptr;
   this->EmissionTexture = nullptr;

@@ -84,6 +84,12 @@ public:
   /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()); null without.
   vtkTextureObject* GetTransfer2DTexture() const { return this->Transfer2DTexture; }
   /**
+   * Several components' tables 1 .. (vtkTyndallComponents::GetTableCount();
+   * table 0 is GetTransferTexture()): each one row, the table's albedo row;
+   * null for fewer than 2 tables.
+   */
+  vtkTextureObject* GetComponentTexture() const { return this->ComponentTexture; }
+  /**
    * When what a map build sees of the uploaded medium last changed: its
    * scalars, its extinction (not its colours) or its clipping.
    */
@@ -130,11 +136,14 @@ private:
     const char* what, vtkObject* reporter);
   bool UploadMajorants(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadComponentTables(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> VolumeTexture;
   vtkSmartPointer<vtkTextureObject> ValidityTexture;
   vtkSmartPointer<vtkTextureObject> TransferTexture;
   vtkSmartPointer<vtkTextureObject> Transfer2DTexture;
+  vtkSmartPointer<vtkTextureObject> ComponentTexture;
   vtkSmartPointer<vtkTextureObject> BlockTexture;
   vtkSmartPointer<vtkTextureObject> DetailTexture;
   vtkSmartPointer<vtkTextureObject> EmissionTexture;

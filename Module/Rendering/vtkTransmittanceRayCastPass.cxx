@@ -278,9 +278,16 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
     // Declared only by the shading variant.
     program->SetUniform3fv("lightColor", kMaxLights, color);
     program->SetUniform1iv("lightHeadlight", kMaxLights, headlight);
-    const float coefficients[4] = { float(shading.GetAmbient()), float(shading.GetDiffuse()),
-      float(shading.GetSpecular()), float(shading.GetSpecularPower()) };
-    program->SetUniform4f("shadingCoefficients", coefficients);
+    // Per component (independent components are shaded each with its own).
+    float coefficients[4][4];
+    for (int c = 0; c < 4; ++c)
+    {
+      coefficients[c][0] = static_cast<float>(shading.GetAmbient(c));
+      coefficients[c][1] = static_cast<float>(shading.GetDiffuse(c));
+      coefficients[c][2] = static_cast<float>(shading.GetSpecular(c));
+      coefficients[c][3] = static_cast<float>(shading.GetSpecularPower(c));
+    }
+    program->SetUniform4fv("shadingCoefficients", 4, coefficients);
   }
   if (shading.Enabled() || frame.Medium->GetIsosurfaces().Enabled())
   {

@@ -4,6 +4,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTyndallClipRegion.h"
+#include "vtkTyndallComponents.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallIsosurfaces.h"
 #include "vtkTyndallProjection.h"
@@ -75,6 +76,18 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("SHADING", variant.Shading ? 1 : 0);
   define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
   define("TRANSFER_2D", variant.Transfer2D ? 1 : 0);
+  define("COMPONENTS", variant.Components);
+  define("COMPONENT_MODE", variant.ComponentMode);
+  define("COMPONENT_ADDITIVE", variant.ComponentAdditive ? 1 : 0);
+  // Independent components shaded each on its own (vtkTyndallShading).
+  define("COMPONENT_SHADING",
+    variant.Shading && variant.Components > 1 &&
+        variant.ComponentMode == static_cast<int>(vtkTyndallComponents::Independent)
+      ? 1
+      : 0);
+  define("COMPONENTS_INDEPENDENT", static_cast<int>(vtkTyndallComponents::Independent));
+  define("COMPONENTS_LA", static_cast<int>(vtkTyndallComponents::DependentLA));
+  define("COMPONENTS_RGBA", static_cast<int>(vtkTyndallComponents::DependentRGBA));
   define("ISOSURFACES", variant.Isosurfaces ? 1 : 0);
   define("ISO_COUNT", variant.IsoCount);
   define("ISO_MAX_OPACITY", vtkTyndallIsosurfaces::MaximumOpacity);

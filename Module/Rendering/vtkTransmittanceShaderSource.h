@@ -174,6 +174,14 @@ public:
     bool GradientOpacity = false;
     /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()).
     bool Transfer2D = false;
+    /**
+     * Several components (vtkTyndallComponents): their number (1: one),
+     * how they are classified (vtkTyndallComponents::Mode) and whether
+     * independent ones' extinctions add.
+     */
+    int Components = 1;
+    int ComponentMode = 0;
+    bool ComponentAdditive = false;
     /// VTK's isosurface blend mode (vtkTyndallIsosurfaces) and its number of iso values.
     bool Isosurfaces = false;
     int IsoCount = 0;

@@ -4,6 +4,7 @@ vtk_add_test_cxx(TyndallMediumCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestTransferFunctionFileReader.cxx
   TestTransferFunctionPresets.cxx
+  TestTyndallComponents.cxx
   TestTyndallDetailMedium.cxx
   TestTyndallFootprintFilter.cxx
   TestTyndallVolumeSettings.cxx)

@@ -1015,9 +1015,9 @@ void TestBadInput()
   expectError(withImage(noScalars), "no scalars", "no scalars");
   vtkNew<vtkImageData> vectors;
   vectors->SetDimensions(4, 4, 4);
-  vectors->AllocateScalars(VTK_DOUBLE, 3);
+  vectors->AllocateScalars(VTK_DOUBLE, 5);
   vectors->GetPointData()->GetScalars()->Fill(1.0);
-  expectError(withImage(vectors), "3 components", "3-component scalars");
+  expectError(withImage(vectors), "5 components; 1 to 4", "5-component scalars");
   // A direction matrix is honoured: the same as turning the volume. (The
   // parallel scale moves the pixel centres off the box's edges, where the
   // rounding of a 90 degree vtkTransform decides inside or outside.)

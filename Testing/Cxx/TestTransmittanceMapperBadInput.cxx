@@ -127,7 +127,25 @@ int TestTransmittanceMapperBadInput(int, char*[])
   };
 
   expectError(MakeImage(8, 8, 8, 0, 0.0), "no scalars", "no scalars");
-  expectError(MakeImage(8, 8, 8, 3, 1.0), "components", "three-component scalars");
+  expectError(MakeImage(8, 8, 8, 5, 1.0), "5 components; 1 to 4", "five-component scalars");
+  {
+    // Three components are drawn independent (VTK's default), not dependent.
+    volume->GetProperty()->IndependentComponentsOff();
+    expectError(MakeImage(8, 8, 8, 3, 1.0), "3 dependent components", "three dependent components");
+    volume->GetProperty()->IndependentComponentsOn();
+    auto image = MakeImage(8, 8, 8, 2, 1.0);
+    auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+    for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    {
+      values->SetComponent(i, 1, std::numeric_limits<float>::quiet_NaN());
+    }
+    expectError(image, "no finite value in component 1", "a component of NaN only");
+    // Several components in a blend mode they are not drawn in.
+    mapper->SetBlendModeToMaximumIntensity();
+    expectError(MakeImage(8, 8, 8, 2, 1.0), "maximum intensity blend mode",
+      "two components, maximum intensity");
+    mapper->SetBlendModeToComposite();
+  }
   expectError(MakeImage(8, 8, 1, 1, 1.0), "at least 2", "one voxel thick");
   expectError(MakeImage(0, 0, 0, 1, 1.0), "empty", "an empty image");
   {

@@ -82,7 +82,7 @@ bool CheckMajorants(vtkImageData* data)
     return false;
   }
   vtkTyndallMajorantGrid grid;
-  const double rangeTime = grid.BuildRanges(values, nullptr, dims);
+  const double rangeTime = grid.BuildRanges(values, 1, nullptr, dims);
   const double majorantTime = grid.BuildMajorants(table);
   std::cout << "Grid " << grid.GetBlockCounts()[0] << "^3 blocks: " << rangeTime << " s ranges, "
             << majorantTime << " s majorants, " << 100.0 * grid.GetEmptyFraction() << " % empty\n";

@@ -24,11 +24,17 @@
 // scene light, and a CT's skin and bone; against VTK without shadows,
 // against the CPU reference with them), the slice blend mode
 // (TestGPURayCastSlicePlane, alone and cropped), 2-D transfer functions
-// (TestGPURayCastTransfer2D: the wavelet, and the CT shaded), and an
+// (TestGPURayCastTransfer2D: the wavelet, and the CT shaded), components
+// (TestGPURayCastFourComponentsComposite's RGBA, two dependent components,
+// TestGPURayCastIndependentComponentsLightParameters' three independent ones
+// with weights, unshaded and shaded with each component's coefficients, the
+// dependent ones shaded, and vtkSmartVolumeMapper's vector modes, magnitude
+// and a component, against that mapper's GPU mode), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
-// lights). One scene is Tyndall's own: isosurfaces of a
+// lights). Two scenes are Tyndall's own: isosurfaces of a
 // vtkParticipatingMediumProperty lit by single scattering under a scene
-// light (against the CPU reference only: VTK draws it unlit). The data are made here (a box of
+// light, and three independent components of one, whose extinctions add
+// (against the CPU reference only: VTK draws them unlit). The data are made here (a box of
 // unsigned chars, VTK's wavelet); with ../shared/data present, the CT head (headsq) too, else those
 // scenes are skipped with a message.
 //
@@ -58,6 +64,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSingleScatteringReference.h"
+#include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkTesting.h"
 #include "vtkTransform.h"
@@ -102,6 +109,9 @@ struct Scene
   // The property a vtkParticipatingMediumProperty (Tyndall's meaning: single
   // scattering): against the CPU reference only (with Shaded: with shadows).
   bool Medium = false;
+  // VTK's picture by vtkSmartVolumeMapper (its GPU mode), whose vector mode
+  // the scene's Mapper sets on both.
+  bool Smart = false;
 };
 
 // TestGPURayCastCompositeBinaryMask's mask: the half of the samples with x
@@ -245,6 +255,81 @@ vtkSmartPointer<vtkImageData> MakeWaveletCells()
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->DeepCopy(cells->GetOutput());
   return image;
+}
+
+// A 64^3 image of `components` components of `type`, component c at index
+// (i, j, k) value(c, i, j, k, wavelet), the wavelet (37 .. 277) there.
+vtkSmartPointer<vtkImageData> MakeComponents(
+  int type, int components, const std::function<double(int, int, int, int, double)>& value)
+{
+  vtkSmartPointer<vtkImageData> wavelet = MakeWavelet();
+  auto* w = static_cast<float*>(wavelet->GetScalarPointer());
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(wavelet->GetExtent());
+  image->SetOrigin(wavelet->GetOrigin());
+  image->SetSpacing(wavelet->GetSpacing());
+  image->AllocateScalars(type, components);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  const int n = 64;
+  for (int k = 0, i = 0; k < n; ++k)
+  {
+    for (int y = 0; y < n; ++y)
+    {
+      for (int x = 0; x < n; ++x, ++i)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          scalars->SetComponent(i, c, value(c, x, y, k, w[i]));
+        }
+      }
+    }
+  }
+  return image;
+}
+
+// TestGPURayCastFourComponentsComposite's data (RGBA unsigned chars, the
+// colour and the opacity's scalar): red along x, green along y, blue and
+// the opacity's scalar from the wavelet.
+vtkSmartPointer<vtkImageData> MakeRGBA()
+{
+  return MakeComponents(VTK_UNSIGNED_CHAR, 4,
+    [](int c, int i, int j, int, double w)
+    {
+      const double unit = (w - 37.0) / 240.0;
+      const double values[4] = { 255.0 * i / 63.0, 255.0 * j / 63.0, 255.0 * (1.0 - unit),
+        255.0 * unit };
+      return std::floor(std::min(std::max(values[c], 0.0), 255.0));
+    });
+}
+
+// Two dependent components (floats): the colour's scalar (the wavelet) and
+// the opacity's (0 .. 100, falling away from the centre).
+vtkSmartPointer<vtkImageData> MakeTwoDependent()
+{
+  return MakeComponents(VTK_FLOAT, 2,
+    [](int c, int i, int j, int k, double w)
+    {
+      const double r =
+        std::sqrt((i - 31.5) * (i - 31.5) + (j - 31.5) * (j - 31.5) + (k - 31.5) * (k - 31.5));
+      return c == 0 ? w : std::max(0.0, 100.0 * (1.0 - r / 36.0));
+    });
+}
+
+// TestGPURayCastIndependentComponentsLightParameters' data (doubles): three
+// overlapping balls, one per component, 0.33 inside, softened over 4
+// voxels at the edge (a hard edge is a picture of aliasing, not of mixing).
+vtkSmartPointer<vtkImageData> MakeIndependent()
+{
+  return MakeComponents(VTK_DOUBLE, 3,
+    [](int c, int i, int j, int k, double)
+    {
+      const double centres[3][3] = { { 21.0, 31.5, 31.5 }, { 42.0, 31.5, 31.5 },
+        { 31.5, 21.0, 31.5 } };
+      const double* o = centres[c];
+      const double r =
+        std::sqrt((i - o[0]) * (i - o[0]) + (j - o[1]) * (j - o[1]) + (k - o[2]) * (k - o[2]));
+      return 0.33 * std::min(std::max((20.0 - r) / 4.0, 0.0), 1.0);
+    });
 }
 
 // VTK's CT head (../shared/data/volumes/headsq), or null when it is not there.
@@ -419,6 +504,120 @@ void ShadedTransfer2DProperty(vtkVolumeProperty* property, const double range[2]
   property->ShadeOn();
 }
 
+// The RGBA scene's property: dependent components, the opacity of the
+// fourth from 0 to 0.3 (TestGPURayCastFourComponentsComposite's ramp, less
+// dense: its 1 is an opaque block).
+void RGBAProperty(vtkVolumeProperty* property, const double*)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(255.0, 0.3);
+  property->IndependentComponentsOff();
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(2.0);
+}
+
+// Two dependent components: ColorProperty's colours over the first's range
+// (the wavelet's), an opacity ramp over the second's (0 .. 100).
+void TwoDependentProperty(vtkVolumeProperty* property, const double*)
+{
+  const double range[2] = { 37.0, 277.0 };
+  ColorProperty(property, range);
+  property->GetScalarOpacity()->RemoveAllPoints();
+  property->GetScalarOpacity()->AddPoint(0.0, 0.0);
+  property->GetScalarOpacity()->AddPoint(100.0, 0.25);
+  property->IndependentComponentsOff();
+}
+
+// TestGPURayCastIndependentComponentsLightParameters' property: each
+// component from black to its own colour (red, green, blue), opacity 0 to
+// 0.2 over 0 .. 0.33, weights 1, 0.6 and 1.
+void IndependentProperty(vtkVolumeProperty* property, const double*)
+{
+  const double colors[3][3] = { { 1.0, 0.2, 0.1 }, { 0.2, 1.0, 0.2 }, { 0.2, 0.3, 1.0 } };
+  const double weights[3] = { 1.0, 0.6, 1.0 };
+  property->IndependentComponentsOn();
+  for (int c = 0; c < 3; ++c)
+  {
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+    color->AddRGBPoint(0.33, colors[c][0], colors[c][1], colors[c][2]);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(0.33, 0.2);
+    property->SetColor(c, color);
+    property->SetScalarOpacity(c, opacity);
+    property->SetScalarOpacityUnitDistance(c, 1.0);
+    property->SetComponentWeight(c, weights[c]);
+  }
+}
+
+// The dependent scenes with Shade on (VTK shades with the first component's gradient).
+void ShadedRGBAProperty(vtkVolumeProperty* property, const double* range)
+{
+  RGBAProperty(property, range);
+  property->ShadeOn();
+}
+void ShadedTwoDependentProperty(vtkVolumeProperty* property, const double* range)
+{
+  TwoDependentProperty(property, range);
+  property->SetScalarOpacityUnitDistance(0.5);
+  property->ShadeOn();
+}
+
+// A grey ramp and a soft opacity over 0 .. 0.5 (the independent balls'
+// magnitude; function 0 only).
+void VectorProperty(vtkVolumeProperty* property, const double*)
+{
+  const double range[2] = { 0.0, 0.5 };
+  RampProperty(property, range, 0.3);
+  property->IndependentComponentsOn();
+}
+
+// vtkSmartVolumeMapper's vector mode on both mappers (VTK's GPU mode).
+std::function<void(vtkVolumeMapper*)> VectorMode(int mode, int component)
+{
+  return [=](vtkVolumeMapper* m)
+  {
+    if (auto* smart = vtkSmartVolumeMapper::SafeDownCast(m))
+    {
+      smart->SetRequestedRenderModeToGPU();
+      smart->SetVectorMode(mode);
+      smart->SetVectorComponent(component);
+    }
+    if (auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(m))
+    {
+      tyndall->SetVectorMode(mode);
+      tyndall->SetVectorComponent(component);
+    }
+  };
+}
+
+// IndependentProperty with Shade on and each component's own coefficients
+// (TestGPURayCastIndependentComponentsLightParameters'), denser.
+void ShadedIndependentProperty(vtkVolumeProperty* property, const double* range)
+{
+  IndependentProperty(property, range);
+  const double coefficients[3][4] = { { 0.2, 0.9, 0.4, 10.0 }, { 0.5, 0.3, 0.1, 1.0 },
+    { 0.7, 0.9, 0.4, 10.0 } };
+  property->ShadeOn();
+  for (int c = 0; c < 3; ++c)
+  {
+    property->SetScalarOpacityUnitDistance(c, 0.3);
+    property->SetAmbient(c, coefficients[c][0]);
+    property->SetDiffuse(c, coefficients[c][1]);
+    property->SetSpecular(c, coefficients[c][2]);
+    property->SetSpecularPower(c, coefficients[c][3]);
+  }
+}
+
+// ShadedTwoDependentProperty without the ambient term (see UnlitAmbientShadedProperty).
+void UnlitAmbientShadedTwoDependentProperty(vtkVolumeProperty* property, const double* range)
+{
+  ShadedTwoDependentProperty(property, range);
+  property->SetAmbient(0.0);
+}
+
 // A CT's skin (translucent) and bone (opaque), Shade on.
 void HeadIsoProperty(vtkVolumeProperty* property, const double range[2])
 {
@@ -527,6 +726,15 @@ std::vector<Scene> Scenes()
       },
       false },
     { "Wavelet-CompositeCellData", MakeWaveletCells, ColorProperty, none, Tilted, false },
+    { "Wavelet-CompositeCameraInside", MakeWavelet, ColorProperty, none,
+      [](vtkRenderer* r, vtkVolume* v)
+      {
+        // TestGPURayCastCameraInside: the camera in the volume's box.
+        Tilted(r, v);
+        r->GetActiveCamera()->Dolly(8.0);
+        r->ResetCameraClippingRange();
+      },
+      true },
     { "Wavelet-CompositeParallel", MakeWavelet, ColorProperty, none,
       [](vtkRenderer* r, vtkVolume* v)
       {
@@ -629,6 +837,25 @@ std::vector<Scene> Scenes()
     { "Transfer2D-Wavelet", MakeWavelet, Transfer2DProperty, none, Tilted, true },
     { "Transfer2D-ShadedHead", MakeHead, ShadedTransfer2DProperty, none, Tilted, true, 35.0, false,
       true },
+    { "Components-RGBA", MakeRGBA, RGBAProperty, none, Tilted, true },
+    { "Components-TwoDependent", MakeTwoDependent, TwoDependentProperty, none, Tilted, true },
+    { "Components-Independent", MakeIndependent, IndependentProperty, none, Tilted, true },
+    // (Against VTK only: the dependent components' shading is
+    // ShadedTwoDependent's, whose reference costs 10 s.)
+    { "Components-ShadedRGBA", MakeRGBA, ShadedRGBAProperty, none, Tilted, false, 35.0, false,
+      true },
+    { "Components-ShadedTwoDependent", MakeTwoDependent, UnlitAmbientShadedTwoDependentProperty,
+      none, SceneLight, true, 35.0, false, true },
+    { "Components-ShadedIndependent", MakeIndependent, ShadedIndependentProperty, none, Tilted,
+      true, 35.0, false, true },
+    { "Components-IndependentMedium", MakeIndependent, IndependentProperty, none, SceneLight, true,
+      35.0, false, true, nullptr, true },
+    { "Components-VectorMagnitude", MakeIndependent, VectorProperty,
+      VectorMode(vtkSmartVolumeMapper::MAGNITUDE, 0), Tilted, false, 35.0, false, false, nullptr,
+      false, true },
+    { "Components-VectorComponent", MakeIndependent, VectorProperty,
+      VectorMode(vtkSmartVolumeMapper::COMPONENT, 1), Tilted, false, 35.0, false, false, nullptr,
+      false, true },
     { "Head-MaximumIntensity", MakeHead,
       [](vtkVolumeProperty* p, const double r[2]) { RampProperty(p, r, 1.0); },
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
@@ -680,10 +907,17 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   property->SetInterpolationType(
     scene.Nearest ? VTK_NEAREST_INTERPOLATION : VTK_LINEAR_INTERPOLATION);
   scene.Property(property, range);
-  vtkNew<vtkGPUVolumeRayCastMapper> vtkMapper;
+  vtkSmartPointer<vtkVolumeMapper> vtkMapper;
+  if (scene.Smart)
+  {
+    vtkMapper = vtkSmartPointer<vtkSmartVolumeMapper>::New();
+  }
+  else
+  {
+    vtkMapper = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
+  }
   vtkNew<vtkTransmittanceVolumeMapper> tyndall;
-  for (vtkVolumeMapper* m :
-    { static_cast<vtkVolumeMapper*>(vtkMapper), static_cast<vtkVolumeMapper*>(tyndall.Get()) })
+  for (vtkVolumeMapper* m : { vtkMapper.Get(), static_cast<vtkVolumeMapper*>(tyndall.Get()) })
   {
     m->SetInputData(data);
     scene.Mapper(m);
@@ -695,8 +929,9 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   if (scene.Mask)
   {
     vtkSmartPointer<vtkImageData> mask = scene.Mask(data);
-    vtkMapper->SetMaskInput(mask);
-    vtkMapper->SetMaskTypeToBinary();
+    auto* gpu = vtkGPUVolumeRayCastMapper::SafeDownCast(vtkMapper);
+    gpu->SetMaskInput(mask);
+    gpu->SetMaskTypeToBinary();
     tyndall->SetMaskInput(mask);
     tyndall->SetMaskTypeToBinary();
   }
@@ -769,8 +1004,14 @@ int TestTransmittanceMapperVTKScenes(int argc, char* argv[])
   vtkNew<vtkRenderWindow> window;
   window->SetMultiSamples(0);
   int failed = 0, compared = 0;
+  // TYNDALL_VTK_SCENES, when set: only the scenes whose names contain it.
+  const char* only = std::getenv("TYNDALL_VTK_SCENES");
   for (const Scene& scene : Scenes())
   {
+    if (only && std::string(scene.Name).find(only) == std::string::npos)
+    {
+      continue;
+    }
     bool skipped = false;
     failed += RunScene(scene, window, out, skipped) ? 0 : 1;
     compared += skipped ? 0 : 1;

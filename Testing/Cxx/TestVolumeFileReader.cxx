@@ -391,6 +391,30 @@ int TestVolumeFileReader(int, char*[])
   CheckError(dir + "/rgb.vti", "have 3 components; choose one", "three components refused");
   CheckRead(dir + "/rgb.vti", "VTK XML", true, 2);
   CheckError(dir + "/rgb.vti", "component 3 requested", "a component out of range", nullptr, 3);
+  {
+    // Kept whole for a volume mapper's components (AllComponents): 2 to 4.
+    vtkNew<vtkVolumeFileReader> reader;
+    reader->SetFileName((dir + "/rgb.vti").c_str());
+    reader->AllComponentsOn();
+    reader->Update();
+    vtkDataArray* scalars = reader->GetOutput()->GetPointData()->GetScalars();
+    Check(scalars && scalars->GetNumberOfComponents() == 3, "AllComponents keeps 3 components");
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(MakeImage(5));
+    w->SetFileName((dir + "/five.vti").c_str());
+    w->Write();
+    vtkNew<vtkTest::ErrorObserver> errors;
+    vtkNew<vtkVolumeFileReader> five;
+    five->AddObserver(vtkCommand::ErrorEvent, errors);
+    five->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+    five->SetFileName((dir + "/five.vti").c_str());
+    five->AllComponentsOn();
+    five->Update();
+    Check(errors->GetError() &&
+        errors->GetErrorMessage().find("5 components; at most 4 are drawn together") !=
+          std::string::npos,
+      "AllComponents refuses 5 components (" + errors->GetErrorMessage() + ")");
+  }
 
   // Bad paths and files.
   CheckError(dir + "/absent.vti", "absent.vti: no such file", "a missing file");

@@ -1,5 +1,6 @@
 #include "vtkTyndallVolumeRepresentation.h"
 
+#include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
@@ -63,7 +64,19 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   this->Medium->SetScalarOpacity(paraview->GetScalarOpacity(0));
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
+  // ParaView's Map Scalars and Multi Components Mapping (the superclass
+  // sets IndependentComponents from them): a vector array drawn as its
+  // colour map's magnitude or component (the vector mode ParaView gives its
+  // own vtkSmartVolumeMapper), or with them off its components as colour
+  // and opacity (vtkTyndallComponents).
   this->Medium->SetIndependentComponents(paraview->GetIndependentComponents());
+  vtkColorTransferFunction* colors = paraview->GetRGBTransferFunction(0);
+  const int vectorMode = colors ? colors->GetVectorMode() : vtkScalarsToColors::MAGNITUDE;
+  this->TyndallMapper->SetVectorMode(vectorMode == vtkScalarsToColors::COMPONENT
+      ? vtkParticipatingMediumMapper::COMPONENT
+      : (vectorMode == vtkScalarsToColors::MAGNITUDE ? vtkParticipatingMediumMapper::MAGNITUDE
+                                                     : vtkParticipatingMediumMapper::DISABLED));
+  this->TyndallMapper->SetVectorComponent(colors ? colors->GetVectorComponent() : 0);
   // The Isosurface blend mode's values (ParaView's Isosurfaces property),
   // copied only when they change.
   vtkContourValues* values = paraview->GetIsoSurfaceValues();

@@ -14,7 +14,10 @@
  *   function of the coloured array, the scalar opacity unit distance, the
  *   interpolation), so the colour map editor drives the medium. The colour
  *   map is the medium's albedo and, with an EmissionScale above 0, the
- *   colour of its emission.
+ *   colour of its emission. A vector array is drawn as ParaView draws it:
+ *   its colour map's magnitude or component (the mapper's vector mode), or,
+ *   with Map Scalars off or Multi Components Mapping on, its components as
+ *   colour and opacity (vtkTyndallComponents).
  *
  * Everything else is ParaView's: the data delivery, the outline shown while
  * interacting on ranks without data, the array selection, the volume's

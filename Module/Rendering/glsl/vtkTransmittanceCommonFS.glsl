@@ -140,13 +140,13 @@ float tyndallFootprint = 0.0;
 //TYNDALL::Medium
 
 #if TYNDALL_SHADING || TYNDALL_GRADIENT_OPACITY || TYNDALL_TRANSFER_2D
-// The scalar's change across one texel each way along each texture axis
-// at the texture coordinate t, F(t + d_i) - F(t - d_i) (d_i one texel); 0
-// where a difference meets missing data. d value / d q (box coordinates q)
-// is this times volumeTexScale / (2 d).
-vec3 tyndallTexelDifferences(vec3 t, out vec3 d)
+// Every channel's change across one texel each way along each texture
+// axis at the texture coordinate t, F(t + d_i) - F(t - d_i) (d_i one
+// texel): dx, dy, dz; 0 where a difference meets missing data.
+void tyndallChannelDifferences(vec3 t, out vec3 d, out vec4 dx, out vec4 dy, out vec4 dz)
 {
   d = 1.0 / vec3(textureSize(volumeTexture, 0));
+  dx = dy = dz = vec4(0.0);
 #if TYNDALL_MISSING_DATA
   float valid = min(min(min(texture(validityTexture, t + vec3(d.x, 0.0, 0.0)).r,
                               texture(validityTexture, t - vec3(d.x, 0.0, 0.0)).r),
@@ -156,15 +156,24 @@ vec3 tyndallTexelDifferences(vec3 t, out vec3 d)
       texture(validityTexture, t - vec3(0.0, 0.0, d.z)).r));
   if (valid < 0.999)
   {
-    return vec3(0.0);
+    return;
   }
 #endif
-  return vec3(texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)).r -
-      texture(volumeTexture, t - vec3(d.x, 0.0, 0.0)).r,
-    texture(volumeTexture, t + vec3(0.0, d.y, 0.0)).r -
-      texture(volumeTexture, t - vec3(0.0, d.y, 0.0)).r,
-    texture(volumeTexture, t + vec3(0.0, 0.0, d.z)).r -
-      texture(volumeTexture, t - vec3(0.0, 0.0, d.z)).r);
+  dx = texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)) -
+    texture(volumeTexture, t - vec3(d.x, 0.0, 0.0));
+  dy = texture(volumeTexture, t + vec3(0.0, d.y, 0.0)) -
+    texture(volumeTexture, t - vec3(0.0, d.y, 0.0));
+  dz = texture(volumeTexture, t + vec3(0.0, 0.0, d.z)) -
+    texture(volumeTexture, t - vec3(0.0, 0.0, d.z));
+}
+
+// The first channel's (the scalar's) differences (tyndallChannelDifferences()).
+// d value / d q (box coordinates q) is this times volumeTexScale / (2 d).
+vec3 tyndallTexelDifferences(vec3 t, out vec3 d)
+{
+  vec4 dx, dy, dz;
+  tyndallChannelDifferences(t, d, dx, dy, dz);
+  return vec3(dx.r, dy.r, dz.r);
 }
 #endif
 
@@ -179,6 +188,30 @@ vec3 tyndallScalarGradient(vec3 x)
   vec3 d;
   vec3 perBox = tyndallTexelDifferences(t, d) * volumeTexScale / (2.0 * d);
   return transpose(mat3(worldToVolume)) * perBox;
+}
+#endif
+
+#if TYNDALL_COMPONENT_SHADING
+// Each component's unit gradient at the world point x (columns; 0 where
+// the gradient is 0 or meets missing data): tyndallScalarGradient() of
+// every channel (CPU twin: vtkTyndallGridMedium::FieldGradient() of a
+// component).
+mat4x3 tyndallComponentNormals(vec3 x)
+{
+  vec3 t = (worldToVolume * vec4(x, 1.0)).xyz * volumeTexScale + volumeTexShift;
+  vec3 d;
+  vec4 dx, dy, dz;
+  tyndallChannelDifferences(t, d, dx, dy, dz);
+  mat3 toWorld = transpose(mat3(worldToVolume));
+  vec3 perTexel = volumeTexScale / (2.0 * d);
+  mat4x3 normals;
+  for (int c = 0; c < 4; ++c)
+  {
+    vec3 g = toWorld * (vec3(dx[c], dy[c], dz[c]) * perTexel);
+    float magnitude = length(g);
+    normals[c] = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+  }
+  return normals;
 }
 #endif
 
@@ -229,6 +262,89 @@ float tyndallTransfer2D(float value, vec3 t, out vec3 color)
 }
 #endif
 
+#if TYNDALL_COMPONENTS > 1
+// Several components (vtkTyndallComponents, whose Mix() is the CPU twin):
+// each interpolated on its own (the volume texture's channels), table t
+// read at its component's value (table 0: transferTexture; tables 1..: a
+// row each of componentTexture), then mixed into one extinction and colour.
+uniform vec4 componentToTable[2]; // table t's coordinate: value * [0][t] + [1][t]
+uniform vec4 componentUnit[2];    // component c on its finite range: value * [0][c] + [1][c]
+uniform vec4 componentWeights;
+#if TYNDALL_COMPONENT_SHADING
+// The last sample's parts and colours of independent components, for their
+// shading (set by tyndallComponentMix()).
+vec4 tyndallComponentParts = vec4(0.0);
+mat4x3 tyndallComponentColors = mat4x3(0.0);
+#endif
+#if TYNDALL_COMPONENT_MODE != TYNDALL_COMPONENTS_RGBA
+uniform sampler2D componentTexture;
+#endif
+
+// Table t's (colour, extinction) at its coordinate.
+vec4 tyndallComponentTable(int t, float coord)
+{
+#if TYNDALL_COMPONENT_MODE != TYNDALL_COMPONENTS_RGBA
+  if (t > 0)
+  {
+    int rows = TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_LA ? 1 : TYNDALL_COMPONENTS - 1;
+    return texture(componentTexture, vec2(coord, (float(t) - 0.5) / float(rows)));
+  }
+#endif
+  return texture(transferTexture, vec2(coord, TYNDALL_TABLE_ALBEDO_ROW));
+}
+
+// The extinction (table units), colour and table 0's coordinate of the
+// components `v`.
+float tyndallComponentMix(vec4 v, out vec3 color, out float tableCoord)
+{
+#if TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_LA
+  // Colour from component 0 (table 0), opacity from component 1 (table 1).
+  vec2 coords = v.xy * componentToTable[0].xy + componentToTable[1].xy;
+  tableCoord = coords.x;
+  color = tyndallComponentTable(0, coords.x).rgb;
+  return tyndallComponentTable(1, coords.y).a;
+#elif TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_RGBA
+  // Colour: components 0..2 on their ranges; opacity from component 3 (table 0).
+  tableCoord = v.w * componentToTable[0].x + componentToTable[1].x;
+  color = clamp(v.rgb * componentUnit[0].rgb + componentUnit[1].rgb, 0.0, 1.0);
+  return tyndallComponentTable(0, tableCoord).a;
+#else
+  // Independent: VTK's mixing (or, additive, extinctions that add).
+  vec4 coords = v * componentToTable[0] + componentToTable[1];
+  tableCoord = coords.x;
+  float weighted = 0.0;
+  float squares = 0.0;
+  vec3 emission = vec3(0.0);
+  for (int t = 0; t < TYNDALL_COMPONENTS; ++t)
+  {
+    vec4 tf = tyndallComponentTable(t, coords[t]);
+    float w = componentWeights[t];
+    if (w > 0.0)
+    {
+      weighted += w * tf.a;
+      squares += tf.a * tf.a;
+      emission += w * tf.a * tf.rgb;
+    }
+#if TYNDALL_COMPONENT_SHADING
+    tyndallComponentParts[t] = w > 0.0 ? w * tf.a : 0.0;
+    tyndallComponentColors[t] = tf.rgb;
+#endif
+  }
+#if TYNDALL_COMPONENT_ADDITIVE
+  float sigma = weighted;
+#else
+  float sigma = weighted > 0.0 ? squares / weighted : 0.0;
+#endif
+  color = sigma > 0.0 ? emission / sigma : vec3(0.0);
+#if TYNDALL_COMPONENT_SHADING
+  // What the shading of the components mixes (vtkTyndallComponents::Parts()).
+  tyndallComponentParts = sigma > 0.0 ? tyndallComponentParts / sigma : vec4(0.0);
+#endif
+  return sigma;
+#endif
+}
+#endif
+
 // The medium at a world point: the extinction (density scale applied),
 // returned; the colour (or albedo); and the point's transfer-table
 // coordinate, with which tyndallEmissionColor() reads the emission row
@@ -252,6 +368,10 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
     tableCoord = 0.0;
     return 0.0;
   }
+#endif
+#if TYNDALL_COMPONENTS > 1
+  vec4 components = texture(volumeTexture, texel);
+  return densityScale * tyndallComponentMix(components, color, tableCoord);
 #endif
 #if TYNDALL_DETAIL_UNIFORM_ALBEDO
   // Procedural detail of one colour that emits nothing from the table: the

@@ -337,9 +337,40 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 // scalar's unit gradient at normalAt (0 where it is 0), E_l the light's
 // colour (intensity x colour, attenuated) at x, a headlight's direction
 // along the ray.
-uniform vec4 shadingCoefficients; // Ka, Kd, Ks, specular power
+uniform vec4 shadingCoefficients[4]; // per component: Ka, Kd, Ks, specular power
 uniform vec3 lightColor[TYNDALL_MAX_LIGHTS];
 uniform int lightHeadlight[TYNDALL_MAX_LIGHTS];
+
+// Light l at the shaded sample x (view direction -v): false where it does
+// not reach x; else T_l E_l (TE), the direction s the normal meets it at
+// and the half vector h.
+bool tyndallShadingLight(int l, vec3 x, vec3 v, out vec3 TE, out vec3 s, out vec3 h)
+{
+  vec3 toLight;
+  float distance;
+  vec3 E = lightColor[l];
+  if (!tyndallLightAt(l, x, E, toLight, distance) || occluded(l, x))
+  {
+    return false;
+  }
+  // A surface does not shadow itself: T_l from shadowOffset towards the light.
+  TyndallTransmittance T =
+    lightTransmittance(l, x + shadowOffset * toLight, toLight, distance - shadowOffset);
+  TE = T * E;
+  s = lightHeadlight[l] != 0 ? v : toLight;
+  // h = 0 where the light faces the camera exactly (the CPU's guard).
+  vec3 sv = s + v;
+  float svLength = length(sv);
+  h = svLength > 0.0 ? sv / svLength : vec3(0.0);
+  return true;
+}
+
+// Light's term Kd |n.s| c + Ks |n.h|^p with coefficients k; the base of pow
+// kept positive: pow(0, 0) is undefined in GLSL, 1 on the CPU.
+vec3 tyndallShadingTerm(vec4 k, vec3 n, vec3 s, vec3 h, vec3 color)
+{
+  return k.y * abs(dot(n, s)) * color + k.z * pow(max(abs(dot(n, h)), 1e-30), k.w);
+}
 
 vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color)
 {
@@ -347,31 +378,50 @@ vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color)
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  vec3 sum = shadingCoefficients.x * color;
+  vec3 sum = shadingCoefficients[0].x * color;
   for (int l = 0; l < numberOfLights; ++l)
   {
-    vec3 toLight;
-    float distance;
-    vec3 E = lightColor[l];
-    if (!tyndallLightAt(l, x, E, toLight, distance) || occluded(l, x))
+    vec3 TE, s, h;
+    if (tyndallShadingLight(l, x, v, TE, s, h))
     {
-      continue;
+      sum += TE * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
     }
-    // A surface does not shadow itself: T_l from shadowOffset towards the light.
-    TyndallTransmittance T =
-      lightTransmittance(l, x + shadowOffset * toLight, toLight, distance - shadowOffset);
-    vec3 s = lightHeadlight[l] != 0 ? v : toLight;
-    // h = 0 where the light faces the camera exactly (the CPU's guard); the
-    // base of pow kept positive: pow(0, 0) is undefined in GLSL, 1 on the CPU.
-    vec3 sv = s + v;
-    float svLength = length(sv);
-    vec3 h = svLength > 0.0 ? sv / svLength : vec3(0.0);
-    float specular =
-      shadingCoefficients.z * pow(max(abs(dot(n, h)), 1e-30), shadingCoefficients.w);
-    sum += T * E * (shadingCoefficients.y * abs(dot(n, s)) * color + specular);
   }
   return clamp(sum, 0.0, 1.0);
 }
+
+#if TYNDALL_COMPONENT_SHADING
+// Independent components' shading (vtkTyndallShading): each component's
+// colour shaded with its own unit gradient and coefficients, clamped, and
+// the results mixed by `parts` (vtkTyndallComponents::Parts()).
+vec3 tyndallComponentShading(vec3 x, vec3 normalAt, vec3 w, vec4 parts, mat4x3 colors)
+{
+  mat4x3 n = tyndallComponentNormals(normalAt);
+  vec3 v = -w;
+  mat4x3 sums;
+  for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
+  {
+    sums[c] = shadingCoefficients[c].x * colors[c];
+  }
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    vec3 TE, s, h;
+    if (tyndallShadingLight(l, x, v, TE, s, h))
+    {
+      for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
+      {
+        sums[c] += TE * tyndallShadingTerm(shadingCoefficients[c], n[c], s, h, colors[c]);
+      }
+    }
+  }
+  vec3 mixed = vec3(0.0);
+  for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
+  {
+    mixed += parts[c] * clamp(sums[c], 0.0, 1.0);
+  }
+  return mixed;
+}
+#endif
 #endif
 
 #if TYNDALL_CAMERA_GUESTS
@@ -609,6 +659,10 @@ struct TyndallCameraSample
   vec3 Position;    // where its light is looked up: the sample, or a step's first isosurface
   vec3 Normal;      // where a shaded sample's normal is taken: the sample, or an isosurface
                     // step's end (where VTK shades it)
+#if TYNDALL_COMPONENT_SHADING
+  vec4 Parts;    // independent components' parts in the colour (vtkTyndallComponents::Parts())
+  mat4x3 Colors; // and colours
+#endif
 };
 
 #if TYNDALL_DETAIL_FILTER
@@ -677,6 +731,10 @@ TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
   s.Emission = vec3(0.0);
   s.Sigma = tyndallMedium(x, s.Color, s.TableCoord);
 #endif
+#if TYNDALL_COMPONENT_SHADING
+  s.Parts = tyndallComponentParts;
+  s.Colors = tyndallComponentColors;
+#endif
   tyndallFootprint = 0.0; // the light rays from here see the unfiltered medium
   return s;
 }
@@ -718,7 +776,9 @@ vec3 tyndallSource(TyndallCameraSample medium, vec3 w)
   {
     return medium.Color;
   }
-#if TYNDALL_SHADING
+#if TYNDALL_COMPONENT_SHADING
+  return tyndallComponentShading(medium.Position, medium.Normal, w, medium.Parts, medium.Colors);
+#elif TYNDALL_SHADING
   return tyndallSurfaceShading(medium.Position, medium.Normal, w, medium.Color);
 #else
   return medium.Color * inScattering(medium.Position, w, medium.Color) +

@@ -1,0 +1,351 @@
+// Multi-component scalars (vtkTyndallComponents, vtkTyndallGridMedium;
+// issue 36), on the CPU, against exact math:
+//
+// 1. the rules: 1 to 4 components, independent or dependent (2: colour and
+//    opacity, 4: RGBA), 3 dependent and 5 refused, each table's function
+//    and component;
+// 2. the mixing: VTK's (sum sigma_i^2 / sum w_i sigma_i, colour sum w_i
+//    sigma_i c_i / sigma) is the limit of VTK's own per-step compositing
+//    (alpha sum a_i^2 / sum w_i a_i, premultiplied colour sum w_i a_i c_i)
+//    through a slab, as the step shrinks; the additive mixture; the parts
+//    (vtkTyndallComponents::Parts()) give the colour; the majorant bounds
+//    the mixture;
+// 3. the grid: each component interpolated on its own (linear fields: the
+//    exact values), its own finite range, a NaN in any component is
+//    missing data, the extinction is the mixture of the tables' at the
+//    right components;
+// 4. what several components are not drawn with: an error (the maximum
+//    intensity blend mode, a 2-D transfer function), or named (gradient
+//    opacity).
+#include "vtkColorTransferFunction.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkSmartVolumeMapper.h"
+#include "vtkTestErrorObserver.h"
+#include "vtkTyndallComponents.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkTyndallVolumeSettings.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include "TyndallTestCheck.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+#include <string>
+
+namespace
+{
+using tyndall_test::Check;
+constexpr int N = vtkTyndallComponents::MaximumCount;
+
+void TestRules()
+{
+  vtkNew<vtkVolumeProperty> property;
+  vtkTyndallComponents c;
+  std::string error;
+  Check(c.Read(property, 1, false, error) && !c.Enabled() && c.GetTableCount() == 1,
+    "one component: the single classification");
+  Check(property->GetIndependentComponents() && c.Read(property, 3, false, error) &&
+      c.GetMode() == vtkTyndallComponents::Independent && c.GetTableCount() == 3 &&
+      c.TableFunction(2) == 2 && c.TableComponent(2) == 2,
+    "three independent components (VTK's default): a table each");
+  Check(!c.Read(property, 5, false, error) && error.find("5 components") != std::string::npos &&
+      !c.Enabled(),
+    "five components: refused (" + error + ")");
+  Check(!c.Read(property, 0, false, error), "no component: refused");
+  property->IndependentComponentsOff();
+  Check(c.Read(property, 2, false, error) && c.GetMode() == vtkTyndallComponents::DependentLA &&
+      c.GetTableCount() == 2 && c.TableFunction(1) == 0 && c.TableComponent(1) == 1,
+    "two dependent components: function 0 at components 0 and 1");
+  Check(c.Read(property, 4, false, error) && c.GetMode() == vtkTyndallComponents::DependentRGBA &&
+      c.GetTableCount() == 1 && c.TableComponent(0) == 3,
+    "four dependent components: RGBA, the opacity at component 3");
+  error.clear();
+  Check(!c.Read(property, 3, false, error) && error.find("3 dependent") != std::string::npos,
+    "three dependent components: refused");
+  property->IndependentComponentsOn();
+  Check(c.Read(property, 2, true, error) && c.GetAdditive(),
+    "a participating medium's independent components add");
+}
+
+// VTK's compositing of independent components through a homogeneous slab
+// of thickness L in steps dt (its step alpha and premultiplied colour):
+// the transmittance and the colour.
+void VTKSlab(const double sigma[N], const double color[N][3], const double w[N], int count,
+  double L, double dt, double& T, double rgb[3])
+{
+  double a[N], alpha = 0.0, total = 0.0, premultiplied[3] = { 0.0, 0.0, 0.0 };
+  for (int i = 0; i < count; ++i)
+  {
+    a[i] = 1.0 - std::exp(-sigma[i] * dt); // the table's opacity corrected for dt
+    total += w[i] > 0.0 ? a[i] * w[i] : 0.0;
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    if (w[i] > 0.0)
+    {
+      alpha += a[i] * a[i] / total;
+      for (int c = 0; c < 3; ++c)
+      {
+        premultiplied[c] += color[i][c] * a[i] * w[i];
+      }
+    }
+  }
+  T = 1.0;
+  rgb[0] = rgb[1] = rgb[2] = 0.0;
+  for (int n = 0; n < static_cast<int>(std::lround(L / dt)); ++n)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb[c] += T * premultiplied[c];
+    }
+    T *= 1.0 - alpha;
+  }
+}
+
+void TestMixing()
+{
+  vtkNew<vtkVolumeProperty> property;
+  property->IndependentComponentsOn();
+  const double weights[3] = { 1.0, 0.6, 0.3 };
+  for (int i = 0; i < 3; ++i)
+  {
+    property->SetComponentWeight(i, weights[i]);
+  }
+  vtkTyndallComponents vtkMix, additive;
+  std::string error;
+  vtkMix.Read(property, 3, false, error);
+  additive.Read(property, 3, true, error);
+  const double sigma[N] = { 0.8, 0.3, 1.5, 0.0 };
+  const double color[N][3] = { { 1.0, 0.2, 0.1 }, { 0.1, 0.9, 0.3 }, { 0.2, 0.3, 1.0 }, {} };
+  const double unit[N] = { 0.0, 0.0, 0.0, 0.0 };
+  double rgb[3], rgbAdd[3];
+  const double s = vtkMix.Mix(sigma, color, unit, rgb);
+  const double sAdd = additive.Mix(sigma, color, unit, rgbAdd);
+  double squares = 0.0, weighted = 0.0, emission[3] = { 0.0, 0.0, 0.0 };
+  for (int i = 0; i < 3; ++i)
+  {
+    squares += sigma[i] * sigma[i];
+    weighted += weights[i] * sigma[i];
+    for (int c = 0; c < 3; ++c)
+    {
+      emission[c] += weights[i] * sigma[i] * color[i][c];
+    }
+  }
+  Check(std::abs(s - squares / weighted) < 1e-12, "VTK's mixture: sum sigma^2 / sum w sigma");
+  Check(std::abs(sAdd - weighted) < 1e-12, "the additive mixture: sum w sigma");
+  for (int c = 0; c < 3; ++c)
+  {
+    Check(std::abs(rgb[c] * s - emission[c]) < 1e-12 &&
+        std::abs(rgbAdd[c] * sAdd - emission[c]) < 1e-12,
+      "the colour per unit length: sum w sigma c, either mixture");
+  }
+  // VTK's own compositing converges to the mixture as its step shrinks.
+  const double L = 1.5;
+  double previous = 1.0;
+  for (double dt : { 0.05, 0.005, 0.0005 })
+  {
+    double T, vtkRGB[3];
+    VTKSlab(sigma, color, weights, 3, L, dt, T, vtkRGB);
+    const double expectedT = std::exp(-s * L);
+    double error2 = std::abs(T - expectedT);
+    for (int c = 0; c < 3; ++c)
+    {
+      error2 = std::max(error2, std::abs(vtkRGB[c] - rgb[c] * (1.0 - expectedT)));
+    }
+    std::cout << "VTK's compositing at step " << dt << ": off by " << error2 << "\n";
+    Check(error2 < 0.6 * previous,
+      "VTK's compositing converges to the mixture (step " + std::to_string(dt) + ")");
+    previous = error2;
+  }
+  Check(previous < 2e-4, "VTK's compositing at a small step is the mixture");
+  // Parts: the colour is sum parts_i c_i.
+  double parts[N];
+  vtkMix.Parts(sigma, parts);
+  for (int c = 0; c < 3; ++c)
+  {
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      sum += parts[i] * color[i][c];
+    }
+    Check(std::abs(sum - rgb[c]) < 1e-12, "the parts give the colour");
+  }
+  // A zero weight: the component is left out of both sums (VTK skips it).
+  property->SetComponentWeight(1, 0.0);
+  vtkMix.Read(property, 3, false, error);
+  const double s0 = vtkMix.Mix(sigma, color, unit, rgb);
+  Check(std::abs(s0 - (0.8 * 0.8 + 1.5 * 1.5) / (0.8 + 0.3 * 1.5)) < 1e-12,
+    "a component of weight 0 is left out");
+  // The majorant bounds the mixture over random samples under the bounds.
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(5);
+  const double bounds[N] = { 0.8, 0.3, 1.5, 0.0 };
+  for (vtkTyndallComponents* m : { &vtkMix, &additive })
+  {
+    const double majorant = m->Majorant(bounds);
+    bool below = true;
+    for (int k = 0; k < 2000; ++k)
+    {
+      double x[N] = { 0.0, 0.0, 0.0, 0.0 };
+      for (int i = 0; i < 3; ++i)
+      {
+        x[i] = bounds[i] * random->GetNextValue();
+      }
+      below = below && m->Mix(x, color, unit, rgb) <= majorant * (1.0 + 1e-12);
+    }
+    Check(below, "the majorant bounds the mixture");
+  }
+  // Dependent: LA reads table 1's extinction and table 0's colour; RGBA
+  // the components on their ranges and table 0's extinction.
+  property->IndependentComponentsOff();
+  vtkTyndallComponents la, rgba;
+  la.Read(property, 2, false, error);
+  rgba.Read(property, 4, false, error);
+  const double units[N] = { 0.25, 1.5, -0.5, 0.9 };
+  Check(la.Mix(sigma, color, units, rgb) == sigma[1] && rgb[0] == color[0][0],
+    "two dependent components: extinction of table 1, colour of table 0");
+  Check(rgba.Mix(sigma, color, units, rgb) == sigma[0] && rgb[0] == 0.25 && rgb[1] == 1.0 &&
+      rgb[2] == 0.0,
+    "RGBA: the colour is the components on their ranges, clamped to [0, 1]");
+}
+
+// A 6^3 image of two components, linear in the index: c0 = i + 2j, c1 = 10 + 3k.
+vtkSmartPointer<vtkImageData> MakeLinear()
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(6, 6, 6);
+  vtkNew<vtkDoubleArray> values;
+  values->SetNumberOfComponents(2);
+  values->SetNumberOfTuples(216);
+  for (int k = 0, n = 0; k < 6; ++k)
+  {
+    for (int j = 0; j < 6; ++j)
+    {
+      for (int i = 0; i < 6; ++i, ++n)
+      {
+        values->SetComponent(n, 0, i + 2.0 * j);
+        values->SetComponent(n, 1, 10.0 + 3.0 * k);
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+void TestGrid()
+{
+  vtkSmartPointer<vtkImageData> image = MakeLinear();
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputData(image);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetInterpolationTypeToLinear();
+  property->IndependentComponentsOn();
+  for (int c = 0; c < 2; ++c)
+  {
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(c == 0 ? 0.0 : 10.0, 0.0);
+    opacity->AddPoint(c == 0 ? 15.0 : 25.0, 0.5);
+    property->SetScalarOpacity(c, opacity);
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(0.0, c == 0 ? 1.0 : 0.0, 0.0, c == 1 ? 1.0 : 0.0);
+    color->AddRGBPoint(30.0, c == 0 ? 1.0 : 0.0, 0.0, c == 1 ? 1.0 : 0.0);
+    property->SetColor(c, color);
+    property->SetScalarOpacityUnitDistance(c, 1.0 + c);
+  }
+  property->SetComponentWeight(1, 0.5);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  vtkNew<vtkTest::ErrorObserver> observer;
+  vtkNew<vtkVolume> reporter;
+  reporter->AddObserver(vtkCommand::ErrorEvent, observer);
+  reporter->AddObserver(vtkCommand::WarningEvent, observer);
+  vtkTyndallGridMedium grid;
+  Check(grid.Update(volume, reporter) && !observer->GetError(), "two components: read");
+  Check(grid.GetComponentRange(0)[0] == 0.0 && grid.GetComponentRange(0)[1] == 15.0 &&
+      grid.GetComponentRange(1)[0] == 10.0 && grid.GetComponentRange(1)[1] == 25.0,
+    "each component's own finite range");
+  // Linear fields: trilinear interpolation is exact.
+  const double p[3] = { 1.3, 2.6, 3.7 };
+  double values[N];
+  Check(grid.FieldComponents(p, values) && std::abs(values[0] - (1.3 + 5.2)) < 1e-12 &&
+      std::abs(values[1] - (10.0 + 11.1)) < 1e-12,
+    "each component interpolated on its own");
+  // The extinction: VTK's mixture of each component's function at its value.
+  auto sigma = [](double opacity, double unit) { return -std::log(1.0 - opacity) / unit; };
+  const double s0 = sigma(0.5 * values[0] / 15.0, 1.0);
+  const double s1 = sigma(0.5 * (values[1] - 10.0) / 15.0, 2.0);
+  const double expected = (s0 * s0 + s1 * s1) / (s0 + 0.5 * s1);
+  double world[4];
+  const double index[4] = { p[0], p[1], p[2], 1.0 };
+  for (int r = 0; r < 3; ++r)
+  {
+    world[r] = 0.0;
+    for (int c = 0; c < 4; ++c)
+    {
+      world[r] += grid.GetIndexToWorld()[4 * r + c] * index[c];
+    }
+  }
+  const double got = grid.WorldExtinction(world);
+  std::cout << "mixture at p: " << got << ", exact " << expected << "\n";
+  Check(std::abs(got - expected) < 1e-3 * expected, "the extinction is the tables' mixture");
+  Check(grid.GetMajorant() >= got, "the majorant bounds it");
+
+  // A NaN in component 1 only: missing data where it is interpolated from.
+  auto* array = vtkDoubleArray::SafeDownCast(image->GetPointData()->GetScalars());
+  array->SetComponent(0, 1, std::numeric_limits<double>::quiet_NaN());
+  array->Modified();
+  image->Modified();
+  Check(grid.Update(volume, reporter) && grid.GetNumberOfNaNScalars() == 1,
+    "a NaN component: one missing sample");
+  const double corner[3] = { 0.5, 0.5, 0.5 };
+  Check(!grid.FieldComponents(corner, values), "interpolated from it: missing");
+  array->SetComponent(0, 1, 10.0);
+  image->Modified();
+
+  // What several components are not drawn with.
+  observer->Clear();
+  mapper->SetBlendModeToMaximumIntensity();
+  Check(!grid.Update(volume, reporter) &&
+      observer->GetErrorMessage().find("maximum intensity") != std::string::npos,
+    "two components in the maximum intensity blend mode: an error");
+  mapper->SetBlendModeToComposite();
+  observer->Clear();
+  vtkNew<vtkImageData> function;
+  function->SetDimensions(4, 4, 1);
+  function->AllocateScalars(VTK_FLOAT, 4);
+  property->SetTransferFunction2D(function);
+  property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+  Check(!grid.Update(volume, reporter) &&
+      observer->GetErrorMessage().find("2-D transfer function") != std::string::npos,
+    "two components with a 2-D transfer function: an error");
+  property->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
+  Check(grid.Update(volume, reporter), "back to 1-D functions: read");
+  vtkNew<vtkPiecewiseFunction> gradient;
+  gradient->AddPoint(0.0, 0.0);
+  gradient->AddPoint(5.0, 1.0);
+  property->SetGradientOpacity(gradient);
+  const std::string named =
+    vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(nullptr, volume));
+  Check(named.find("gradient opacity with several components") != std::string::npos,
+    "gradient opacity with several components: named (" + named + ")");
+  Check(grid.Update(volume, reporter) && !grid.GetGradientOpacity(),
+    "gradient opacity with several components: not applied");
+}
+}
+
+int TestTyndallComponents(int, char*[])
+{
+  TestRules();
+  TestMixing();
+  TestGrid();
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
