@@ -29,7 +29,8 @@
 // TestGPURayCastIndependentComponentsLightParameters' three independent ones
 // with weights, unshaded and shaded with each component's coefficients, the
 // dependent ones shaded, and vtkSmartVolumeMapper's vector modes, magnitude
-// and a component, against that mapper's GPU mode), and an
+// and a component, against that mapper's GPU mode), the camera inside the
+// volume (TestGPURayCastCameraInside), and an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
 // lights). Two scenes are Tyndall's own: isosurfaces of a
 // vtkParticipatingMediumProperty lit by single scattering under a scene
@@ -726,12 +727,18 @@ std::vector<Scene> Scenes()
       },
       false },
     { "Wavelet-CompositeCellData", MakeWaveletCells, ColorProperty, none, Tilted, false },
-    { "Wavelet-CompositeCameraInside", MakeWavelet, ColorProperty, none,
+    { "Box-CompositeCameraInside", MakeBox,
+      [](vtkVolumeProperty* p, const double r[2])
+      {
+        ColorProperty(p, r);
+        p->SetScalarOpacityUnitDistance(8.0); // thin enough to see through from inside
+      },
+      none,
       [](vtkRenderer* r, vtkVolume* v)
       {
         // TestGPURayCastCameraInside: the camera in the volume's box.
         Tilted(r, v);
-        r->GetActiveCamera()->Dolly(8.0);
+        r->GetActiveCamera()->Dolly(6.0);
         r->ResetCameraClippingRange();
       },
       true },
