@@ -95,6 +95,10 @@ const Spec kOptions[] = {
     "default one (pick it with --component)" },
   { "component-weights", "", Kind::Text, 0, 0, false, "", "W,W,...", "", "Input", Both,
     "the weight of each independent component in [0, 1] (comma-separated; default 1 each)" },
+  { "mask", "", Kind::Text, 0, 0, false, "", "FILE", "", "Input", Both,
+    "a binary mask: a volume file of the input's dimensions whose samples of 0 or less hide the "
+    "input's there (missing data, for the camera and the light; vtkGPUVolumeRayCastMapper's "
+    "binary mask)" },
   { "frame", "", Kind::Integer, 0, 1000000, false, "", "N", "0", "Input", Both,
     "time frame of a 4-D file (NIfTI with a time dimension)" },
   { "no-rescale", "", Kind::Flag, 0, 0, false, "", "", "", "Input", Both,
@@ -149,6 +153,10 @@ const Spec kOptions[] = {
     Both, "transfer-function file of the most recent --add-volume" },
   { "method", "", Kind::Choice, 0, 0, false, "none|brute-force|tfm|adaptive-tfm|etm|adaptive-etm",
     "M", "adaptive-etm", "Scattering", Both, "light transmittance", KeyMode::Choose, "123456" },
+  { "shade", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "add VTK's gradient surface term (Diffuse 0.7, Specular 0.2, specular power 10) to the "
+    "medium's single scattering, shadowed like it: its surfaces catch highlights",
+    KeyMode::Toggle, "g" },
   { "model", "", Kind::Choice, 0, 0, false, "emission-absorption|single-scattering", "M",
     "single-scattering", "Scattering", Both,
     "single-scattering (colour = albedo) or emission-absorption (colour = emitted colour, as "
@@ -721,8 +729,8 @@ public:
     {
       return "--component-weights needs --components independent";
     }
-    for (const char* name :
-      { "component", "components", "component-weights", "frame", "no-rescale", "level-set-to-fog" })
+    for (const char* name : { "component", "components", "component-weights", "mask", "frame",
+           "no-rescale", "level-set-to-fog" })
     {
       if (input.empty() && set(name))
       {

@@ -592,7 +592,30 @@ bool vtkTyndallSceneBuilder::LoadMedium()
   reader->SetFrame(static_cast<int>(o->GetNumber("frame")));
   this->ProgressLabel = std::string("loading ") + o->GetInput();
   // The reader reports its own error (one line starting with the path).
-  return this->Run(reader);
+  return this->Run(reader) && this->LoadMask();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::LoadMask()
+{
+  vtkTyndallOptions* o = this->Options;
+  this->Mapper->SetMaskInput(nullptr);
+  if (!o->IsSet("mask"))
+  {
+    return true;
+  }
+  vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(o->GetText("mask"));
+  this->ProgressLabel = std::string("loading the mask ") + o->GetText("mask");
+  if (!this->Update(reader))
+  {
+    return false;
+  }
+  // Its dimensions against the volume's: the mapper says so when drawing.
+  auto mask = vtkSmartPointer<vtkImageData>::New();
+  mask->ShallowCopy(reader->GetOutput());
+  this->Mapper->SetMaskInput(mask);
+  this->Mapper->SetMaskTypeToBinary();
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -678,9 +701,16 @@ bool vtkTyndallSceneBuilder::ApplyComponents(const std::string& preset)
       return false;
     }
   }
-  if (mode == 0 || count < 2)
+  if (mode == 0)
   {
     return true;
+  }
+  if (count < 2)
+  {
+    vtkErrorMacro(<< "--components " << o->GetText("components")
+                  << ": the scalars have one component (a 4-D file's time frames are not "
+                     "components: --frame picks one).");
+    return false;
   }
   this->Property->SetIndependentComponents(mode == 1);
   if (mode == 2 && count == 3)
@@ -804,6 +834,7 @@ void vtkTyndallSceneBuilder::ApplyMediumOptions(vtkParticipatingMediumProperty* 
 {
   vtkTyndallOptions* o = this->Options;
   medium->SetScatteringModel(o->GetChoice("model"));
+  medium->SetShade(o->GetFlag("shade"));
   medium->SetScatteringAnisotropy(o->GetNumber("anisotropy"));
   medium->SetAmbientIntensity(o->GetNumber("ambient"));
   medium->SetScatteringOctaves(static_cast<int>(o->GetNumber("octaves")));

@@ -165,6 +165,9 @@ private:
   bool Update(vtkAlgorithm* source);
   bool ReadTransferFunctionFile();
   bool LoadMedium();
+  // --mask FILE: the mapper's binary mask; false (with the reader's error)
+  // when the file cannot be read.
+  bool LoadMask();
   // Parses --iso-values into IsoValues; false (with an error) for a value
   // that is not a finite number or more than vtkTyndallIsosurfaces allows.
   bool ReadIsoValues();

@@ -31,6 +31,7 @@ void vtkParticipatingMediumMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaskType: " << (this->MaskType == BinaryMaskType ? "Binary" : "LabelMap")
      << "\n";
   os << indent << "MaskBlendFactor: " << this->MaskBlendFactor << "\n";
+  os << indent << "VolumetricScatteringBlending: " << this->VolumetricScatteringBlending << "\n";
   os << indent << "VectorMode: " << this->VectorMode << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
 }

@@ -88,6 +88,25 @@ public:
   vtkGetMacro(MaskBlendFactor, float);
   ///@}
 
+  ///@{
+  /**
+   * VTK 9.2's VolumetricScatteringBlending (of vtkGPUVolumeRayCastMapper),
+   * for a plain vtkVolumeProperty with Shade on: in [0, 2], how much of each
+   * shaded sample's colour is isotropic single scattering (lit by the
+   * lights through the medium, no normal) instead of VTK's gradient
+   * (surface) shading, by VTK 9.2's formula in the gradient magnitude and
+   * the opacity (vtkTyndallShading): 0 surface shading only (VTK's
+   * picture), 0.5 surface-like where the gradient is strong and
+   * volumetric where it is weak, 1 volumetric only, 2 volumetric with the
+   * surfaces darkened. Default 0, VTK 9.2's: surface shading, shadowed
+   * (with VTK's formula, 0.5 leaves a CT's edges mostly volumetric: its
+   * surfaces blur; Documentation/mapper.md). The isosurface blend mode is
+   * surface shaded whatever the value.
+   */
+  vtkSetClampMacro(VolumetricScatteringBlending, float, 0.0f, 2.0f);
+  vtkGetMacro(VolumetricScatteringBlending, float);
+  ///@}
+
   /// vtkSmartVolumeMapper's vector modes (the same values).
   enum VectorModes
   {
@@ -143,6 +162,7 @@ protected:
   vtkImageData* MaskInput = nullptr;
   int MaskType = LabelMapMaskType;
   float MaskBlendFactor = 1.0f;
+  float VolumetricScatteringBlending = 0.0f;
   int VectorMode = DISABLED;
   int VectorComponent = 0;
 

@@ -21,9 +21,13 @@
  * - GetIsoSurfaceValues(), when the mapper's blend mode is VTK's isosurface
  *   mode (vtkTyndallIsosurfaces): the surfaces drawn, lit by scattering.
  *
- * VTK's gradient shading (Shade, Ambient, Diffuse, Specular,
- * SpecularPower), gradient opacity, interpolation type and the settings of
- * further components are ignored: Tyndall interpolates the scalars
+ * With Shade on (component 0), VTK's gradient surface term with the
+ * Diffuse, Specular and SpecularPower coefficients is added to the
+ * medium's scattering, shadowed like it (vtkTyndallShading: its surfaces
+ * catch highlights; Ambient is not read, the medium's AmbientIntensity
+ * is). Several components are read as vtkTyndallComponents reads them
+ * (independent ones' extinctions add). Gradient opacity and the
+ * interpolation type are ignored: Tyndall interpolates the scalars
  * trilinearly and lights the medium by scattering. A plain
  * vtkVolumeProperty can be used too, with VTK's meaning: the settings below
  * have their defaults, except that with Shade off (VTK's default) it is

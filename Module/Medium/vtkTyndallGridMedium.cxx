@@ -1150,7 +1150,8 @@ bool vtkTyndallGridMedium::LookUpComponents(const double p[3], ComponentLookup& 
 //------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::ComponentParts(const double p[3],
   double weights[vtkTyndallComponents::MaximumCount],
-  double colors[vtkTyndallComponents::MaximumCount][3]) const
+  double colors[vtkTyndallComponents::MaximumCount][3],
+  double sigma[vtkTyndallComponents::MaximumCount]) const
 {
   ComponentLookup lookup;
   if (!this->LookUpComponents(p, lookup))
@@ -1158,6 +1159,10 @@ bool vtkTyndallGridMedium::ComponentParts(const double p[3],
     return false;
   }
   this->Components.Parts(lookup.Sigma, weights);
+  for (int t = 0; t < vtkTyndallComponents::MaximumCount; ++t)
+  {
+    sigma[t] = this->Parameters.DensityScale * lookup.Sigma[t];
+  }
   std::copy(&lookup.Colors[0][0], &lookup.Colors[0][0] + 3 * vtkTyndallComponents::MaximumCount,
     &colors[0][0]);
   return true;
@@ -1228,6 +1233,12 @@ bool vtkTyndallGridMedium::UpdateComponents(vtkVolume* volume, vtkObject* report
   else if (!this->EmissionValues.empty())
   {
     what = "an emission array";
+  }
+  else if (medium && medium->GetEmissionColor() && medium->GetEmissionScale() > 0.0 &&
+    this->Components.GetMode() != vtkTyndallComponents::DependentLA)
+  {
+    // (2 dependent components emit by their colour component's function.)
+    what = "emission through the transfer functions (EmissionScale above 0)";
   }
   else if (this->GetLinearExtinction())
   {

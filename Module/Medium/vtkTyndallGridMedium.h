@@ -110,7 +110,10 @@ public:
    */
   const double* GetFiniteRange() const { return this->FiniteRange; }
   vtkIdType GetNumberOfNaNScalars() const { return this->NaNCount; }
-  const double* GetComponentRange(int c) const { return this->ComponentRanges[c]; }
+  const double* GetComponentRange(int c) const
+  {
+    return this->ComponentRanges[c < 0 ? 0 : (c > 3 ? 3 : c)];
+  }
   ///@}
 
   ///@{
@@ -121,7 +124,9 @@ public:
   const vtkTyndallComponents& GetComponents() const { return this->Components; }
   const vtkTyndallTransferTable& GetComponentTable(int t) const
   {
-    return t == 0 ? this->Table : this->ComponentTables[t - 1];
+    return t <= 0 || t > static_cast<int>(this->ComponentTables.size())
+      ? this->Table
+      : this->ComponentTables[t - 1];
   }
   ///@}
 
@@ -261,11 +266,13 @@ public:
   /**
    * Independent components' parts at the field index point p
    * (vtkTyndallComponents::Parts(): each component's weight in the
-   * mixture's colour) and colours (each table's); false at missing data.
-   * What their shading reads (vtkTyndallShading).
+   * mixture's colour), colours and extinctions (each table's, the density
+   * scale applied); false at missing data. What their shading reads
+   * (vtkTyndallShading).
    */
   bool ComponentParts(const double p[3], double weights[vtkTyndallComponents::MaximumCount],
-    double colors[vtkTyndallComponents::MaximumCount][3]) const;
+    double colors[vtkTyndallComponents::MaximumCount][3],
+    double sigma[vtkTyndallComponents::MaximumCount]) const;
 
   ///@{
   /// vtkTyndallMedium: emission from an array, the majorant (the table's largest extinction), a

@@ -57,7 +57,8 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
     !medium->GetProjection().Enabled() && !medium->GetIsosurfaces().Enabled() &&
     !property->GetDetailNoise() && !medium->HasMissingData() && !medium->GetClip() &&
-    !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray();
+    !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray() &&
+    !medium->GetComponents().Enabled();
 }
 
 // Whether the world boxes of two media overlap (their world-axis bounds, by
@@ -505,8 +506,9 @@ void vtkTyndallSceneReader::WarnLayers(const std::vector<vtkVolume*>& volumes,
       warning << "This volume's box overlaps that of Tyndall volume " << j
               << " (counting the renderer's visible Tyndall volumes from 0), but they cannot be "
                  "drawn as one medium (different lighting "
-                 "settings, or missing data, clipping, cropping, detail, a coloured extinction "
-                 "or an emission array): each is drawn as a layer, wrong where they "
+                 "settings, or missing data, clipping, cropping, detail, a coloured extinction, "
+                 "an emission array or several components): each is drawn as a layer, wrong "
+                 "where they "
                  "interpenetrate along a camera ray. ";
     }
   }

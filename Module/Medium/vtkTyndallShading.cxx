@@ -1,5 +1,6 @@
 #include "vtkTyndallShading.h"
 
+#include "vtkParticipatingMediumMapper.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkTyndallProjection.h"
 #include "vtkVolumeMapper.h"
@@ -16,8 +17,16 @@ void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* propert
   // without a plane (drawn as composite, with a warning).
   vtkTyndallProjection projection;
   projection.Read(mapper, property);
-  this->On = property && !vtkParticipatingMediumProperty::SafeDownCast(property) &&
-    property->GetShade(0) && !projection.Enabled();
+  this->Additive = vtkParticipatingMediumProperty::SafeDownCast(property) != nullptr;
+  // A medium's isosurfaces are lit by its scattering alone.
+  const bool isosurfaces = mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
+  this->On =
+    property && property->GetShade(0) && !projection.Enabled() && !(this->Additive && isosurfaces);
+  // The isosurfaces are surfaces: no volumetric scattering blended in (nor
+  // into a medium's scattering).
+  auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
+  this->Blending =
+    tyndall && !this->Additive && !isosurfaces ? tyndall->GetVolumetricScatteringBlending() : 0.0;
   for (int c = 0; c < 4 && property; ++c)
   {
     this->Coefficients[c][0] = property->GetAmbient(c);
@@ -28,17 +37,17 @@ void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* propert
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallShading::Start(const double color[3], double rgb[3], int c) const
+void vtkTyndallShading::Start(const double color[3], Sums& sums, int c) const
 {
   for (int i = 0; i < 3; ++i)
   {
-    rgb[i] = this->Coefficients[c][0] * color[i];
+    sums.Surface[i] = sums.Volume[i] = this->Coefficients[c][0] * color[i];
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkTyndallShading::AddLight(const double n[3], const double l[3], const double v[3],
-  const double color[3], const double E[3], const double T[3], double rgb[3], int c) const
+  const double color[3], const double E[3], const double T[3], Sums& sums, int c) const
 {
   double h[3] = { l[0] + v[0], l[1] + v[1], l[2] + v[2] };
   const double length = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
@@ -52,15 +61,31 @@ void vtkTyndallShading::AddLight(const double n[3], const double l[3], const dou
   const double specular = k[2] * std::pow(nh, k[3]);
   for (int i = 0; i < 3; ++i)
   {
-    rgb[i] += T[i] * E[i] * (k[1] * nl * color[i] + specular);
+    sums.Surface[i] += T[i] * E[i] * (k[1] * nl * color[i] + specular);
+    sums.Volume[i] += T[i] * E[i] * k[1] * color[i];
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallShading::Finish(double rgb[3])
+double vtkTyndallShading::BlendWeight(double gradient, double sigma, double range, double h) const
+{
+  const double b = this->Blending;
+  if (!(b > 0.0))
+  {
+    return 0.0;
+  }
+  const double G = range > 0.0 ? 2.0 * h * gradient / range : 0.0;
+  const double a = 1.0 - std::exp(-sigma * h);
+  const double e = std::exp(-2.0 * b * G * a);
+  return b < 1.0 ? 2.0 * b * e : 2.0 * (1.0 - b) * e + 2.0 * b - 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallShading::Finish(const Sums& sums, double k, double rgb[3])
 {
   for (int c = 0; c < 3; ++c)
   {
-    rgb[c] = std::min(std::max(rgb[c], 0.0), 1.0);
+    const double v = (1.0 - k) * sums.Surface[c] + k * sums.Volume[c];
+    rgb[c] = std::min(std::max(v, 0.0), 1.0);
   }
 }

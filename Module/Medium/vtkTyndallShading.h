@@ -34,6 +34,33 @@
  * several lights VTK keeps the last light's specular term only; here every
  * light adds its own.
  *
+ * VTK 9.2's volumetric scattering blending b (vtkParticipatingMediumMapper::
+ * GetVolumetricScatteringBlending(), in [0, 2], default 0; 0 in the
+ * isosurface blend mode) blends isotropic single scattering into each
+ * sample, with VTK 9.2's weight k of the gradient magnitude G and the
+ * sample's opacity a:
+ *
+ *     rgb = clamp((1 - k) S + k V, 0, 1),   S = Ka c + sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p)
+ *                                           V = Ka c + sum_l T_l E_l Kd c
+ *     k = 2 b exp(-2 b G a)                        for b < 1
+ *     k = 2 (1 - b) exp(-2 b G a) + 2 b - 1        for b >= 1
+ *
+ * G = 2 h |grad s| / (s_max - s_min) (the change of the scalar on its
+ * range over two voxels, VTK's central difference; h the smallest world
+ * spacing) and a = 1 - exp(-sigma h) (the opacity over VTK's automatic
+ * step). So b = 0 is the surface shading above, and b = 0.5 is
+ * surface-like where the gradient is strong and volumetric (the light
+ * scattered without a normal, isotropically: its phase function 1 here)
+ * where it is weak.
+ *
+ * A vtkParticipatingMediumProperty keeps Tyndall's meaning: with Shade on
+ * the surface term sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p) (component 0's
+ * gradient and coefficients; no ambient term, no clamp) is added to the
+ * sample's single scattering and emission (GetAdditive()): the medium
+ * glows and scatters as before, and its surfaces catch highlights. The
+ * blending does not apply, and its isosurfaces (the isosurface blend mode)
+ * are lit by its scattering alone.
+ *
  * Independent components (vtkTyndallComponents) are shaded each with its
  * own gradient, colour and coefficients (the property's for that
  * component), clamped, then mixed with the weights w_i sigma_i / sigma of
@@ -76,27 +103,54 @@ public:
   ///@}
 
   /**
-   * Starts a sample's shading with component c's coefficients: rgb = Ka c.
+   * Whether the surface term is added to single scattering (a
+   * vtkParticipatingMediumProperty with Shade on: Tyndall's meaning) rather
+   * than replacing it (a plain property: VTK's).
    */
-  void Start(const double color[3], double rgb[3], int c = 0) const;
+  bool GetAdditive() const { return this->Additive; }
+
+  /// The volumetric scattering blending b drawn (see the class description).
+  double GetBlending() const { return this->Blending; }
+
+  /// A sample's sums: the surface term S and the volumetric term V.
+  struct Sums
+  {
+    double Surface[3];
+    double Volume[3];
+  };
 
   /**
-   * Adds light l's term T E (Kd |n.l| c + Ks |n.h|^p) to rgb: n the unit
-   * normal (or 0), l the unit direction towards the light, v towards the
-   * camera, E the light's colour at the sample, T its transmittance per
-   * channel.
+   * Starts a sample's shading with component c's coefficients: S = V = Ka c.
+   */
+  void Start(const double color[3], Sums& sums, int c = 0) const;
+
+  /**
+   * Adds light l's terms T E (Kd |n.l| c + Ks |n.h|^p) to S and T E Kd c to
+   * V: n the unit normal (or 0), l the unit direction towards the light, v
+   * towards the camera, E the light's colour at the sample, T its
+   * transmittance per channel.
    */
   void AddLight(const double n[3], const double l[3], const double v[3], const double color[3],
-    const double E[3], const double T[3], double rgb[3], int c = 0) const;
+    const double E[3], const double T[3], Sums& sums, int c = 0) const;
+
+  /**
+   * The blending weight k of a sample of gradient magnitude G (per world
+   * unit: |grad s|) and extinction sigma, for scalars over `range` (s_max -
+   * s_min) and the smallest world spacing h (the class description); 0
+   * when the blending is 0.
+   */
+  double BlendWeight(double gradient, double sigma, double range, double h) const;
 
   /// How far towards a light its transmittance is taken, in voxels (see the class description).
   static constexpr double ShadowOffset = 1.0;
 
-  /// Clamps rgb to [0, 1] (VTK clamps the shaded colour).
-  static void Finish(double rgb[3]);
+  /// rgb = clamp((1 - k) S + k V, 0, 1) (VTK clamps the shaded colour).
+  static void Finish(const Sums& sums, double k, double rgb[3]);
 
 private:
   bool On = false;
+  bool Additive = false;
+  double Blending = 0.0;
   // Per component: Ambient, Diffuse, Specular, SpecularPower.
   double Coefficients[4][4] = { { 0.1, 0.7, 0.2, 10.0 }, { 0.1, 0.7, 0.2, 10.0 },
     { 0.1, 0.7, 0.2, 10.0 }, { 0.1, 0.7, 0.2, 10.0 } };

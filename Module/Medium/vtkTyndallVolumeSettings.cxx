@@ -52,8 +52,9 @@ bool HasTranslucentGeometry(vtkRenderer* renderer)
   return false;
 }
 
-// The number of components of the scalars `mapper` draws (0 without).
-int ScalarComponents(vtkVolumeMapper* mapper)
+// The number of components of the scalars `mapper` draws with `property`
+// (0 without; 1 for a Tyndall mapper's vector mode of independent ones).
+int ScalarComponents(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
 {
   auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
   vtkDataSet* input =
@@ -63,20 +64,38 @@ int ScalarComponents(vtkVolumeMapper* mapper)
     ? vtkAbstractMapper::GetScalars(input, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
         mapper->GetArrayId(), mapper->GetArrayName(), cellFlag)
     : nullptr;
-  return scalars ? scalars->GetNumberOfComponents() : 0;
+  const int count = scalars ? scalars->GetNumberOfComponents() : 0;
+  const bool vectorMode = tyndall &&
+    tyndall->GetVectorMode() != vtkParticipatingMediumMapper::DISABLED &&
+    property->GetIndependentComponents();
+  return count > 1 && vectorMode ? 1 : count;
+}
+
+// Whether a gradient opacity of any of the first `count` components'
+// functions changes VTK's picture (HasGradientOpacity()'s rule).
+bool AnyGradientOpacity(vtkVolumeProperty* property, int count)
+{
+  for (int c = 0; c < count && c < 4; ++c)
+  {
+    if (vtkTyndallVolumeSettings::HasGradientOpacity(property, c))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallVolumeSettings::HasGradientOpacity(vtkVolumeProperty* property)
+bool vtkTyndallVolumeSettings::HasGradientOpacity(vtkVolumeProperty* property, int component)
 {
   if (!property || property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D ||
-    property->GetDisableGradientOpacity(0) || !property->HasGradientOpacity(0))
+    property->GetDisableGradientOpacity(component) || !property->HasGradientOpacity(component))
   {
     return false;
   }
-  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(0);
+  vtkPiecewiseFunction* function = property->GetStoredGradientOpacity(component);
   const int size = function ? function->GetSize() : 0;
   for (int i = 0; i < size; ++i)
   {
@@ -155,7 +174,8 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
   }
   // Gradient opacity is not read with several components (vtkTyndallComponents).
-  if (mapper && HasGradientOpacity(property) && ScalarComponents(mapper) > 1)
+  const int components = mapper ? ScalarComponents(mapper, property) : 0;
+  if (components > 1 && AnyGradientOpacity(property, components))
   {
     notDrawn.push_back("gradient opacity with several components (ignored)");
   }

@@ -60,11 +60,11 @@ public:
   static std::vector<std::string> NotDrawn(vtkRenderer* renderer, vtkVolume* volume);
 
   /**
-   * Whether the first component's gradient opacity changes VTK's picture:
-   * TF_1D, enabled, and a function below 1 somewhere (VTK's default,
-   * disabled or all 1, multiplies by 1).
+   * Whether a component's gradient opacity (the first's by default)
+   * changes VTK's picture: TF_1D, enabled, and a function below 1
+   * somewhere (VTK's default, disabled or all 1, multiplies by 1).
    */
-  static bool HasGradientOpacity(vtkVolumeProperty* property);
+  static bool HasGradientOpacity(vtkVolumeProperty* property, int component = 0);
 
   /// The texts of NotDrawn() as one sentence (empty for none).
   static std::string Describe(const std::vector<std::string>& notDrawn);

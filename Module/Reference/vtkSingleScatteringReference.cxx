@@ -221,21 +221,27 @@ private:
     const Scene& s = *this->S;
     const vtkTyndallGridMedium& grid = *s.Shaded;
     const vtkTyndallShading& shading = grid.GetShading();
+    // A medium's Shade: the surface term alone, of the mixture's colour.
+    const bool additive = shading.GetAdditive();
     double p[3];
     rays.At(0, tNormal, p);
     // One part (the sample's colour), or independent components' each
     // (vtkTyndallGridMedium::ComponentParts()) with its own gradient.
     constexpr int most = vtkTyndallComponents::MaximumCount;
     double weights[most] = { 1.0, 0.0, 0.0, 0.0 }, colors[most][3] = {};
+    double sigma[most] = { point.Extinction, 0.0, 0.0, 0.0 };
     std::copy(point.Albedo, point.Albedo + 3, colors[0]);
-    const bool independent = grid.GetComponents().GetMode() == vtkTyndallComponents::Independent;
+    const bool independent =
+      !additive && grid.GetComponents().GetMode() == vtkTyndallComponents::Independent;
     const int parts = independent ? grid.GetComponents().GetCount() : 1;
-    if (independent && !grid.ComponentParts(p, weights, colors))
+    if (independent && !grid.ComponentParts(p, weights, colors, sigma))
     {
       J[0] = J[1] = J[2] = 0.0;
       return;
     }
-    double n[most][3], sums[most][3];
+    // Each part's unit normal and blending weight (vtkTyndallShading).
+    double n[most][3], blend[most];
+    vtkTyndallShading::Sums sums[most];
     for (int i = 0; i < parts; ++i)
     {
       grid.FieldGradient(p, n[i], i);
@@ -244,7 +250,14 @@ private:
       {
         n[i][c] = length > 0.0 ? n[i][c] / length : 0.0;
       }
+      const double* range = grid.GetComponentRange(i);
+      blend[i] =
+        shading.BlendWeight(length, sigma[i], range[1] - range[0], grid.GetMinimumWorldSpacing());
       shading.Start(colors[i], sums[i], i);
+      if (additive)
+      {
+        std::fill(sums[i].Surface, sums[i].Surface + 3, 0.0);
+      }
     }
     const double v[3] = { -w[0], -w[1], -w[2] };
     for (const Scene::LightSource& light : s.Lights)
@@ -266,10 +279,14 @@ private:
     J[0] = J[1] = J[2] = 0.0;
     for (int i = 0; i < parts; ++i)
     {
-      vtkTyndallShading::Finish(sums[i]);
+      double rgb[3] = { sums[i].Surface[0], sums[i].Surface[1], sums[i].Surface[2] };
+      if (!additive)
+      {
+        vtkTyndallShading::Finish(sums[i], blend[i], rgb);
+      }
       for (int c = 0; c < 3; ++c)
       {
-        J[c] += weights[i] * sums[i][c];
+        J[c] += weights[i] * rgb[c];
       }
     }
   }
@@ -395,7 +412,7 @@ private:
       return;
     }
     const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
-    if (s.Shaded)
+    if (s.Shaded && !s.Shaded->GetShading().GetAdditive())
     {
       this->Shade(point, x, w, tNormal, rays, J);
       return;
@@ -414,6 +431,16 @@ private:
         }
       },
       J);
+    if (s.Shaded)
+    {
+      // A vtkParticipatingMediumProperty's Shade: its surface term added.
+      double surface[3];
+      this->Shade(point, x, w, tNormal, rays, surface);
+      for (int c = 0; c < 3; ++c)
+      {
+        J[c] += surface[c];
+      }
+    }
   }
 };
 }

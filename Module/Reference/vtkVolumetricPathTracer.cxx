@@ -719,7 +719,12 @@ bool vtkVolumetricPathTracer::RenderImage(
   {
     return false;
   }
-  if (scene.Shaded)
+  if (scene.Shaded && scene.Shaded->GetShading().GetAdditive())
+  {
+    vtkWarningMacro(<< "The volume's vtkParticipatingMediumProperty has Shade on: its gradient "
+                       "surface term (vtkTyndallShading) is not path traced; the medium is.");
+  }
+  else if (scene.Shaded)
   {
     vtkErrorMacro(<< "The volume's plain vtkVolumeProperty has Shade on: VTK's gradient shading "
                      "is a surface model, not a medium the path tracer can scatter in "

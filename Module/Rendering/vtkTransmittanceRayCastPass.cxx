@@ -158,6 +158,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
     { return g.Camera && g.Textures->GetScatteringTexture(); });
   variant.Octaves = frame.Medium->GetParameters().ScatteringOctaves;
   variant.Shading = frame.Medium->GetShading().Enabled();
+  variant.ShadingAdditive = frame.Medium->GetShading().GetAdditive();
   return variant;
 }
 
@@ -288,6 +289,19 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
       coefficients[c][3] = static_cast<float>(shading.GetSpecularPower(c));
     }
     program->SetUniform4fv("shadingCoefficients", 4, coefficients);
+    // The volumetric scattering blending (vtkTyndallShading::BlendWeight()):
+    // per component 2 h / (s_max - s_min), h the smallest world spacing.
+    const double h = frame.Medium->GetMinimumWorldSpacing();
+    float gradientScale[4];
+    for (int c = 0; c < 4; ++c)
+    {
+      const double* range = frame.Medium->GetComponentRange(c);
+      gradientScale[c] =
+        range[1] > range[0] ? static_cast<float>(2.0 * h / (range[1] - range[0])) : 0.0f;
+    }
+    program->SetUniformf("scatteringBlending", static_cast<float>(shading.GetBlending()));
+    program->SetUniform4f("blendGradientScale", gradientScale);
+    program->SetUniformf("blendStep", static_cast<float>(h));
   }
   if (shading.Enabled() || frame.Medium->GetIsosurfaces().Enabled())
   {

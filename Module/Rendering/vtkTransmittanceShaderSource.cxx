@@ -74,6 +74,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("OCTAVES", variant.Octaves);
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
   define("SHADING", variant.Shading ? 1 : 0);
+  define("SHADING_ADDITIVE", variant.Shading && variant.ShadingAdditive ? 1 : 0);
   define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
   define("TRANSFER_2D", variant.Transfer2D ? 1 : 0);
   define("COMPONENTS", variant.Components);
@@ -81,7 +82,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("COMPONENT_ADDITIVE", variant.ComponentAdditive ? 1 : 0);
   // Independent components shaded each on its own (vtkTyndallShading).
   define("COMPONENT_SHADING",
-    variant.Shading && variant.Components > 1 &&
+    variant.Shading && !variant.ShadingAdditive && variant.Components > 1 &&
         variant.ComponentMode == static_cast<int>(vtkTyndallComponents::Independent)
       ? 1
       : 0);

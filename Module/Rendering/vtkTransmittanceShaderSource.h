@@ -170,6 +170,8 @@ public:
     int Projection = 0;
     /// A plain property's gradient shading (RAY_CAST; vtkTyndallShading).
     bool Shading = false;
+    /// A vtkParticipatingMediumProperty's: its surface term added to single scattering.
+    bool ShadingAdditive = false;
     /// A plain property's gradient opacity (vtkTyndallGridMedium::GetGradientOpacity()).
     bool GradientOpacity = false;
     /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()).

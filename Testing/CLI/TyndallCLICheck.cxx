@@ -662,6 +662,36 @@ int MakeData(const std::vector<std::string>& args)
     writer->Write();
   }
   {
+    // A binary mask over the blob (its samples of x below 12 kept, 255; the
+    // others hidden, 0), and the blob with NaN where the mask hides it.
+    auto blob = Blob(1);
+    vtkNew<vtkImageData> mask;
+    mask->SetDimensions(blob->GetDimensions());
+    mask->SetSpacing(blob->GetSpacing());
+    vtkNew<vtkUnsignedCharArray> kept;
+    kept->SetName("mask");
+    kept->SetNumberOfTuples(blob->GetNumberOfPoints());
+    vtkDataArray* values = blob->GetPointData()->GetScalars();
+    const int* dims = blob->GetDimensions();
+    for (vtkIdType id = 0; id < blob->GetNumberOfPoints(); ++id)
+    {
+      const bool keep = id % dims[0] < 12;
+      kept->SetValue(id, keep ? 255 : 0);
+      if (!keep)
+      {
+        values->SetComponent(id, 0, std::nan(""));
+      }
+    }
+    mask->GetPointData()->SetScalars(kept);
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetInputData(mask);
+    writer->SetFileName((dir + "/blob-mask.vti").c_str());
+    writer->Write();
+    writer->SetInputData(blob);
+    writer->SetFileName((dir + "/blob-masked.vti").c_str());
+    writer->Write();
+  }
+  {
     // Fire: the blob as the density and a "temperature" array (Kelvin),
     // 600 K at the top rising to 2200 K at the bottom.
     auto fire = Blob(1);

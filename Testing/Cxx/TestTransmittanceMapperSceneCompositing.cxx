@@ -10,10 +10,14 @@
 //    the second volume draws nothing of its own (its CPU image is empty) and
 //    builds no maps;
 // 3. overlapping volumes lit differently are drawn as layers, with a warning;
-// 4. a group whose first volume VTK culls is drawn by the next one.
+// 4. a group whose first volume VTK culls is drawn by the next one;
+// 5. a volume of several components (vtkTyndallComponents) is not drawn
+//    with the others (the guests' lookup reads one component): whatever the
+//    order, it draws itself, with a warning, on both renderers.
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -208,6 +212,54 @@ void CulledFirstVolume()
   Check(tyndall_test::MaxDifference(gpu, background) > 60 && psnr >= 45.0,
     "a group whose first volume is culled is drawn by the next");
 }
+
+// 5. Several components: the cloud's scalars twice, as two independent
+// components whose extinctions add (the same functions on both).
+void SeveralComponents()
+{
+  Scene scene(64, 48);
+  scene.SetMethod(M::ADAPTIVE_ETM);
+  scene.Left.Volume->SetPosition(0.0, 0.0, 0.0);
+  scene.Right.Volume->SetPosition(0.3, 0.0, 0.0);
+  auto* input = vtkImageData::SafeDownCast(scene.Right.Mapper->GetInputDataObject(0, 0));
+  vtkNew<vtkImageData> two;
+  two->DeepCopy(input);
+  vtkDataArray* one = input->GetPointData()->GetScalars();
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(2);
+  values->SetNumberOfTuples(one->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < one->GetNumberOfTuples(); ++i)
+  {
+    values->SetComponent(i, 0, one->GetComponent(i, 0));
+    values->SetComponent(i, 1, one->GetComponent(i, 0));
+  }
+  two->GetPointData()->SetScalars(values);
+  scene.Right.Mapper->SetInputData(two);
+  scene.Right.Property->SetColor(1, scene.Right.Property->GetRGBTransferFunction(0));
+  scene.Right.Property->SetScalarOpacity(1, scene.Right.Property->GetScalarOpacity(0));
+  for (vtkVolume* first : { scene.Right.Volume.Get(), scene.Left.Volume.Get() })
+  {
+    // Either volume first in the renderer's order.
+    scene.Renderer->RemoveAllViewProps();
+    scene.Renderer->AddVolume(first);
+    scene.Renderer->AddVolume(
+      first == scene.Left.Volume.Get() ? scene.Right.Volume.Get() : scene.Left.Volume.Get());
+    vtkNew<vtkTest::ErrorObserver> observer;
+    scene.Right.Mapper->AddObserver(vtkCommand::WarningEvent, observer);
+    scene.Gpu();
+    const std::string order = first == scene.Left.Volume.Get() ? " (drawn second)" : " (first)";
+    Check(observer->GetWarning() &&
+        observer->GetWarningMessage().find("several components") != std::string::npos,
+      "a volume of several components overlapping another: a warning" + order);
+    Check(scene.Right.Mapper->GetLastRayCastTime() > 0.0 &&
+        scene.Left.Mapper->GetLastRayCastTime() > 0.0,
+      "each volume casts its own rays" + order);
+    vtkNew<vtkSingleScatteringReference> own;
+    own->Render(scene.Renderer, scene.Right.Volume, 32, 24);
+    Check(LargestOpacity(own->GetOutput()) > 0.1,
+      "the CPU reference draws the volume of several components itself" + order);
+  }
+}
 }
 
 int TestTransmittanceMapperSceneCompositing(int, char*[])
@@ -215,5 +267,6 @@ int TestTransmittanceMapperSceneCompositing(int, char*[])
   CoincidentHalves();
   Interpenetrating();
   CulledFirstVolume();
+  SeveralComponents();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -16,7 +16,11 @@
 //    right components;
 // 4. what several components are not drawn with: an error (the maximum
 //    intensity blend mode, a 2-D transfer function), or named (gradient
-//    opacity).
+//    opacity);
+// 5. the majorant grid over several tables (what empty-space skipping
+//    reads): each block's majorant bounds the mixture at every sample it
+//    covers, for VTK's mixing and the additive one, and is 0 only where the
+//    mixture is.
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -28,17 +32,21 @@
 #include "vtkTestErrorObserver.h"
 #include "vtkTyndallComponents.h"
 #include "vtkTyndallGridMedium.h"
+#include "vtkTyndallMajorantGrid.h"
+#include "vtkTyndallTransferTable.h"
 #include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include "TyndallTestCheck.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -340,6 +348,97 @@ void TestGrid()
   Check(grid.Update(volume, reporter) && !grid.GetGradientOpacity(),
     "gradient opacity with several components: not applied");
 }
+
+void TestMajorants()
+{
+  const int dims[3] = { 20, 18, 17 };
+  const int n = dims[0] * dims[1] * dims[2];
+  std::vector<float> values(2 * static_cast<size_t>(n));
+  for (int z = 0, i = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x, ++i)
+      {
+        // Component 0 above 12 only from x = 12 on, component 1 below 6 only
+        // up to z = 2: the blocks of x < 8 from z = 8 on (3 x 2 of 3 x 3 x 3) are empty.
+        values[2 * i] = static_cast<float>(x + 0.5 * std::sin(0.3 * y));
+        values[2 * i + 1] = static_cast<float>(3.0 + z + 0.5 * std::cos(0.2 * x));
+      }
+    }
+  }
+  // Component 0 opaque at high values, component 1 at low ones (and empty
+  // above 6): the blocks' majorants depend on both ranges.
+  vtkNew<vtkVolumeProperty> property;
+  property->IndependentComponentsOn();
+  vtkNew<vtkPiecewiseFunction> rising, falling;
+  rising->AddPoint(12.0, 0.0);
+  rising->AddPoint(20.0, 0.8);
+  falling->AddPoint(0.0, 0.5);
+  falling->AddPoint(6.0, 0.0);
+  property->SetScalarOpacity(0, rising);
+  property->SetScalarOpacity(1, falling);
+  property->SetComponentWeight(1, 0.4);
+  vtkTyndallTransferTable tables[2];
+  const vtkTyndallTransferTable* pointers[N] = { &tables[0], &tables[1], nullptr, nullptr };
+  std::string error;
+  const double ranges[2][2] = { { -0.5, 19.5 }, { 2.5, 19.5 } };
+  for (int c = 0; c < 2; ++c)
+  {
+    Check(tables[c].Build(property, nullptr, ranges[c][0], ranges[c][1], error, false, c, c),
+      "a component's table");
+  }
+  const double color[N][3] = {};
+  const double unit[N] = { 0.0, 0.0, 0.0, 0.0 };
+  for (bool additive : { false, true })
+  {
+    vtkTyndallComponents components;
+    components.Read(property, 2, additive, error);
+    vtkTyndallMajorantGrid grid;
+    grid.BuildRanges(values.data(), 2, nullptr, dims);
+    grid.BuildMajorants(pointers, components);
+    const int* counts = grid.GetBlockCounts();
+    const std::vector<float>& majorants = grid.GetMajorants();
+    bool bounded = true, emptyExact = true;
+    std::vector<double> largest(majorants.size(), 0.0);
+    for (int z = 0, i = 0; z < dims[2]; ++z)
+    {
+      for (int y = 0; y < dims[1]; ++y)
+      {
+        for (int x = 0; x < dims[0]; ++x, ++i)
+        {
+          double sigma[N] = { 0.0, 0.0, 0.0, 0.0 }, rgb[3];
+          for (int c = 0; c < 2; ++c)
+          {
+            int k;
+            double f;
+            tables[c].Locate(values[2 * i + c], k, f);
+            sigma[c] = tables[c].ExtinctionAt(k, f);
+          }
+          const double mixture = components.Mix(sigma, color, unit, rgb);
+          const size_t block =
+            (static_cast<size_t>(z / vtkTyndallMajorantGrid::BlockSize) * counts[1] +
+              static_cast<size_t>(y / vtkTyndallMajorantGrid::BlockSize)) *
+              counts[0] +
+            static_cast<size_t>(x / vtkTyndallMajorantGrid::BlockSize);
+          bounded = bounded && mixture <= majorants[block] * (1.0 + 1e-6) + 1e-12;
+          largest[block] = std::max(largest[block], mixture);
+        }
+      }
+    }
+    int empty = 0;
+    for (size_t b = 0; b < majorants.size(); ++b)
+    {
+      empty += majorants[b] == 0.0f ? 1 : 0;
+      emptyExact = emptyExact && (majorants[b] > 0.0f || largest[b] == 0.0);
+    }
+    const std::string mixing = additive ? "additive" : "VTK's";
+    std::cout << mixing << " mixing: " << majorants.size() << " blocks, " << empty << " empty\n";
+    Check(bounded, mixing + " mixing: each block's majorant bounds the mixture at its samples");
+    Check(empty == 6, mixing + " mixing: the six blocks where both components are empty");
+    Check(emptyExact, mixing + " mixing: a block is empty only where the mixture is 0");
+  }
+}
 }
 
 int TestTyndallComponents(int, char*[])
@@ -347,5 +446,6 @@ int TestTyndallComponents(int, char*[])
   TestRules();
   TestMixing();
   TestGrid();
+  TestMajorants();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -11,9 +11,10 @@ tyndall_paraview_scene.py, and checks
 3. a state-file round trip: the state saved as .pvsm, the session reset,
    the state loaded, the same picture;
 4. the cosine-noise source, shown as "Tyndall Volume", draws a cloud;
-5. a vector array coloured by its magnitude and by a component: the
-   Tyndall representation (emission-absorption) draws ParaView's own Volume
-   representation's picture.
+5. a vector array coloured by its magnitude and by a component: the Tyndall
+   representation (emission-absorption) draws ParaView's own Volume
+   representation's picture; ParaView's Blend Mode and Isosurfaces reach
+   the mapper.
 
 Arguments: the plugin (Tyndall.so) and an output folder. Skips (exit 125)
 without ../shared/data/vdb/smoke.vdb.
@@ -100,7 +101,8 @@ check(value >= scene.PSNR_FLOOR,
 changes = [("TyndallTransmittanceMethod", 0), ("TyndallNumberOfCoefficients", 2),
            ("TyndallTransmittanceMapSize", 16), ("TyndallScatteringModel", 0),
            ("TyndallDensityScale", 2.0), ("TyndallAnisotropy", -0.5), ("TyndallLightScale", 20.0),
-           ("TyndallAmbient", 0.5), ("TyndallEmission", 0.5), ("TyndallOctaves", 1)]
+           ("TyndallAmbient", 0.5), ("TyndallEmission", 0.5), ("TyndallOctaves", 1),
+           ("Shade", 1)]
 for name, value in changes:
     # GetData(): a value, or an enumeration's text (GetPropertyValue would
     # give an enumeration's live property, which follows the change).
@@ -168,6 +170,18 @@ for mode in ("Magnitude", "Y"):
             view, "plugin-vector-%s-%s.png" % (mode, representation.replace(" ", "")))
     value = scene.psnr(drawn["Tyndall Volume"], drawn["Volume"])
     check(value >= 35.0, "a vector array by %s: Tyndall against ParaView's Volume %.1f dB" % (mode, value))
+# ParaView's Blend Mode (5.11 offers Composite, Isosurface and Slice) and
+# its Isosurfaces values reach Tyndall's mapper: the isosurfaces are another
+# picture than the composite one, and setting the mode back restores it.
+composite, _ = screenshot(view, "plugin-composite.png")
+display.BlendMode = "Isosurface"
+display.IsosurfaceValues = [150.0, 250.0]
+surfaces, _ = screenshot(view, "plugin-isosurface.png")
+display.BlendMode = "Composite"
+back, _ = screenshot(view, "plugin-composite-again.png")
+value = scene.psnr(surfaces, composite)
+check(value < 30.0 and scene.psnr(back, composite) == float("inf"),
+      "Blend Mode Isosurface reaches the mapper: %.1f dB from the composite picture" % value)
 
 if failures:
     print("%d checks failed" % len(failures))

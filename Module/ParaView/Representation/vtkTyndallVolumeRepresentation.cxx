@@ -64,6 +64,13 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   this->Medium->SetScalarOpacity(paraview->GetScalarOpacity(0));
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
+  // ParaView's Shade and its coefficients: the medium's surface term
+  // (vtkTyndallShading: added to its scattering, Tyndall's meaning).
+  this->Medium->SetShade(paraview->GetShade());
+  this->Medium->SetAmbient(paraview->GetAmbient());
+  this->Medium->SetDiffuse(paraview->GetDiffuse());
+  this->Medium->SetSpecular(paraview->GetSpecular());
+  this->Medium->SetSpecularPower(paraview->GetSpecularPower());
   // ParaView's Map Scalars and Multi Components Mapping (the superclass
   // sets IndependentComponents from them): a vector array drawn as its
   // colour map's magnitude or component (the vector mode ParaView gives its

@@ -193,10 +193,10 @@ vec3 tyndallScalarGradient(vec3 x)
 
 #if TYNDALL_COMPONENT_SHADING
 // Each component's unit gradient at the world point x (columns; 0 where
-// the gradient is 0 or meets missing data): tyndallScalarGradient() of
-// every channel (CPU twin: vtkTyndallGridMedium::FieldGradient() of a
-// component).
-mat4x3 tyndallComponentNormals(vec3 x)
+// the gradient is 0 or meets missing data) and its length (per world
+// unit): tyndallScalarGradient() of every channel (CPU twin:
+// vtkTyndallGridMedium::FieldGradient() of a component).
+mat4x3 tyndallComponentNormals(vec3 x, out vec4 magnitudes)
 {
   vec3 t = (worldToVolume * vec4(x, 1.0)).xyz * volumeTexScale + volumeTexShift;
   vec3 d;
@@ -208,8 +208,8 @@ mat4x3 tyndallComponentNormals(vec3 x)
   for (int c = 0; c < 4; ++c)
   {
     vec3 g = toWorld * (vec3(dx[c], dy[c], dz[c]) * perTexel);
-    float magnitude = length(g);
-    normals[c] = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+    magnitudes[c] = length(g);
+    normals[c] = magnitudes[c] > 0.0 ? g / magnitudes[c] : vec3(0.0);
   }
   return normals;
 }
@@ -275,6 +275,7 @@ uniform vec4 componentWeights;
 // shading (set by tyndallComponentMix()).
 vec4 tyndallComponentParts = vec4(0.0);
 mat4x3 tyndallComponentColors = mat4x3(0.0);
+vec4 tyndallComponentSigma = vec4(0.0); // each component's extinction, the density applied
 #endif
 #if TYNDALL_COMPONENT_MODE != TYNDALL_COMPONENTS_RGBA
 uniform sampler2D componentTexture;
@@ -328,6 +329,7 @@ float tyndallComponentMix(vec4 v, out vec3 color, out float tableCoord)
 #if TYNDALL_COMPONENT_SHADING
     tyndallComponentParts[t] = w > 0.0 ? w * tf.a : 0.0;
     tyndallComponentColors[t] = tf.rgb;
+    tyndallComponentSigma[t] = densityScale * tf.a;
 #endif
   }
 #if TYNDALL_COMPONENT_ADDITIVE

@@ -306,6 +306,8 @@ const float shadowOffset = 0.0; // a medium's sample: T_l where it is
 // light taken shadowOffset towards it.
 vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 {
+  // An isosurface's light from shadowOffset towards it; a medium's where it is.
+  float scatteringOffset = TYNDALL_ISOSURFACES != 0 ? shadowOffset : 0.0;
   vec3 sum = vec3(ambient);
   for (int l = 0; l < numberOfLights; ++l)
   {
@@ -325,7 +327,7 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
     }
     sum += E *
       tyndallOctaves(mu,
-        lightTransmittance(l, x + shadowOffset * toLight, toLight, distance - shadowOffset),
+        lightTransmittance(l, x + scatteringOffset * toLight, toLight, distance - scatteringOffset),
         albedo);
   }
   return sum;
@@ -372,36 +374,86 @@ vec3 tyndallShadingTerm(vec4 k, vec3 n, vec3 s, vec3 h, vec3 color)
   return k.y * abs(dot(n, s)) * color + k.z * pow(max(abs(dot(n, h)), 1e-30), k.w);
 }
 
-vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color)
+// VTK 9.2's volumetric scattering blending (vtkTyndallShading::BlendWeight(),
+// its CPU twin): the weight k of the volumetric term at a sample of
+// gradient magnitude `gradient` (per world unit) and extinction sigma;
+// blendGradientScale per component 2 h / (s_max - s_min), blendStep h.
+uniform float scatteringBlending; // b in [0, 2]; 0: surface shading only
+uniform vec4 blendGradientScale;
+uniform float blendStep;
+
+float tyndallBlendWeight(float gradient, float scale, float sigma)
+{
+  float b = scatteringBlending;
+  if (!(b > 0.0))
+  {
+    return 0.0;
+  }
+  float e = exp(-2.0 * b * gradient * scale * (1.0 - exp(-sigma * blendStep)));
+  return b < 1.0 ? 2.0 * b * e : 2.0 * (1.0 - b) * e + 2.0 * b - 1.0;
+}
+
+vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color, float sigma)
 {
   vec3 g = tyndallScalarGradient(normalAt);
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  vec3 sum = shadingCoefficients[0].x * color;
+  // The surface term and the volumetric one (isotropic, no normal).
+  vec3 surface = shadingCoefficients[0].x * color;
+  vec3 volume = surface;
   for (int l = 0; l < numberOfLights; ++l)
   {
     vec3 TE, s, h;
     if (tyndallShadingLight(l, x, v, TE, s, h))
     {
-      sum += TE * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
+      surface += TE * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
+      volume += TE * shadingCoefficients[0].y * color;
     }
   }
-  return clamp(sum, 0.0, 1.0);
+  float k = tyndallBlendWeight(magnitude, blendGradientScale.x, sigma);
+  return clamp((1.0 - k) * surface + k * volume, 0.0, 1.0);
 }
+
+#if TYNDALL_SHADING_ADDITIVE
+// A vtkParticipatingMediumProperty's Shade (vtkTyndallShading, its CPU twin):
+// the gradient surface term sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p), added
+// to the sample's single scattering (no ambient term, no clamp).
+vec3 tyndallSurfaceTerm(vec3 x, vec3 normalAt, vec3 w, vec3 color)
+{
+  vec3 g = tyndallScalarGradient(normalAt);
+  float magnitude = length(g);
+  vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+  vec3 v = -w;
+  vec3 surface = vec3(0.0);
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    vec3 TE, s, h;
+    if (tyndallShadingLight(l, x, v, TE, s, h))
+    {
+      surface += TE * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
+    }
+  }
+  return surface;
+}
+#endif
 
 #if TYNDALL_COMPONENT_SHADING
 // Independent components' shading (vtkTyndallShading): each component's
 // colour shaded with its own unit gradient and coefficients, clamped, and
 // the results mixed by `parts` (vtkTyndallComponents::Parts()).
-vec3 tyndallComponentShading(vec3 x, vec3 normalAt, vec3 w, vec4 parts, mat4x3 colors)
+vec3 tyndallComponentShading(
+  vec3 x, vec3 normalAt, vec3 w, vec4 parts, mat4x3 colors, vec4 sigma)
 {
-  mat4x3 n = tyndallComponentNormals(normalAt);
+  vec4 magnitudes;
+  mat4x3 n = tyndallComponentNormals(normalAt, magnitudes);
   vec3 v = -w;
-  mat4x3 sums;
+  mat4x3 surface;
+  mat4x3 volume;
   for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
   {
-    sums[c] = shadingCoefficients[c].x * colors[c];
+    surface[c] = shadingCoefficients[c].x * colors[c];
+    volume[c] = surface[c];
   }
   for (int l = 0; l < numberOfLights; ++l)
   {
@@ -410,14 +462,16 @@ vec3 tyndallComponentShading(vec3 x, vec3 normalAt, vec3 w, vec4 parts, mat4x3 c
     {
       for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
       {
-        sums[c] += TE * tyndallShadingTerm(shadingCoefficients[c], n[c], s, h, colors[c]);
+        surface[c] += TE * tyndallShadingTerm(shadingCoefficients[c], n[c], s, h, colors[c]);
+        volume[c] += TE * shadingCoefficients[c].y * colors[c];
       }
     }
   }
   vec3 mixed = vec3(0.0);
   for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
   {
-    mixed += parts[c] * clamp(sums[c], 0.0, 1.0);
+    float k = tyndallBlendWeight(magnitudes[c], blendGradientScale[c], sigma[c]);
+    mixed += parts[c] * clamp((1.0 - k) * surface[c] + k * volume[c], 0.0, 1.0);
   }
   return mixed;
 }
@@ -661,7 +715,8 @@ struct TyndallCameraSample
                     // step's end (where VTK shades it)
 #if TYNDALL_COMPONENT_SHADING
   vec4 Parts;    // independent components' parts in the colour (vtkTyndallComponents::Parts())
-  mat4x3 Colors; // and colours
+  mat4x3 Colors; // colours
+  vec4 Sigmas;   // and extinctions
 #endif
 };
 
@@ -734,6 +789,7 @@ TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
 #if TYNDALL_COMPONENT_SHADING
   s.Parts = tyndallComponentParts;
   s.Colors = tyndallComponentColors;
+  s.Sigmas = tyndallComponentSigma;
 #endif
   tyndallFootprint = 0.0; // the light rays from here see the unfiltered medium
   return s;
@@ -776,10 +832,15 @@ vec3 tyndallSource(TyndallCameraSample medium, vec3 w)
   {
     return medium.Color;
   }
-#if TYNDALL_COMPONENT_SHADING
-  return tyndallComponentShading(medium.Position, medium.Normal, w, medium.Parts, medium.Colors);
+#if TYNDALL_SHADING_ADDITIVE
+  return medium.Color * inScattering(medium.Position, w, medium.Color) +
+    tyndallSampleEmission(medium) +
+    tyndallSurfaceTerm(medium.Position, medium.Normal, w, medium.Color);
+#elif TYNDALL_COMPONENT_SHADING
+  return tyndallComponentShading(
+    medium.Position, medium.Normal, w, medium.Parts, medium.Colors, medium.Sigmas);
 #elif TYNDALL_SHADING
-  return tyndallSurfaceShading(medium.Position, medium.Normal, w, medium.Color);
+  return tyndallSurfaceShading(medium.Position, medium.Normal, w, medium.Color, medium.Sigma);
 #else
   return medium.Color * inScattering(medium.Position, w, medium.Color) +
     tyndallSampleEmission(medium);
