@@ -154,8 +154,9 @@ const Spec kOptions[] = {
   { "method", "", Kind::Choice, 0, 0, false, "none|brute-force|tfm|adaptive-tfm|etm|adaptive-etm",
     "M", "adaptive-etm", "Scattering", Both, "light transmittance", KeyMode::Choose, "123456" },
   { "shade", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
-    "add VTK's gradient surface term (Diffuse 0.7, Specular 0.2, specular power 10) to the "
-    "medium's single scattering, shadowed like it: its surfaces catch highlights",
+    "add VTK's gradient surface term (VTK's Diffuse 0.7, Specular 0.2, specular power 10; the "
+    "CT and MR presets' 0.9, 0.3, 10) to the medium's single scattering, shadowed like it: its "
+    "surfaces catch highlights",
     KeyMode::Toggle, "g" },
   { "model", "", Kind::Choice, 0, 0, false, "emission-absorption|single-scattering", "M",
     "single-scattering", "Scattering", Both,

@@ -96,11 +96,9 @@ public:
    * lights through the medium, no normal) instead of VTK's gradient
    * (surface) shading, by VTK 9.2's formula in the gradient magnitude and
    * the opacity (vtkTyndallShading): 0 surface shading only (VTK's
-   * picture), 0.5 surface-like where the gradient is strong and
-   * volumetric where it is weak, 1 volumetric only, 2 volumetric with the
-   * surfaces darkened. Default 0, VTK 9.2's: surface shading, shadowed
-   * (with VTK's formula, 0.5 leaves a CT's edges mostly volumetric: its
-   * surfaces blur; Documentation/mapper.md). The isosurface blend mode is
+   * picture), 1 VTK's "smart" blend (surface-like where the gradient is
+   * strong, volumetric where it is weak), 2 volumetric only. Default 0,
+   * VTK 9.2's: surface shading, shadowed. The isosurface blend mode is
    * surface shaded whatever the value.
    */
   vtkSetClampMacro(VolumetricScatteringBlending, float, 0.0f, 2.0f);

@@ -1,5 +1,7 @@
 #include "vtkTransferFunctionPresets.h"
 
+#include "vtkParticipatingMediumProperty.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
@@ -97,9 +99,11 @@ ValueSummary Summarise(vtkDataArray* scalars)
   return s;
 }
 
+// VTK's gradient shading for a plain property (a vtkParticipatingMediumProperty
+// keeps Shade off: its surface term is the application's choice).
 void Shade(vtkVolumeProperty* property)
 {
-  property->ShadeOn();
+  property->SetShade(vtkParticipatingMediumProperty::SafeDownCast(property) ? 0 : 1);
   property->SetAmbient(0.2);
   property->SetDiffuse(0.9);
   property->SetSpecular(0.3);

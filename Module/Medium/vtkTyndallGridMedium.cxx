@@ -1235,6 +1235,7 @@ bool vtkTyndallGridMedium::UpdateComponents(vtkVolume* volume, vtkObject* report
     what = "an emission array";
   }
   else if (medium && medium->GetEmissionColor() && medium->GetEmissionScale() > 0.0 &&
+    medium->GetScatteringModel() == vtkParticipatingMediumProperty::SINGLE_SCATTERING &&
     this->Components.GetMode() != vtkTyndallComponents::DependentLA)
   {
     // (2 dependent components emit by their colour component's function.)

@@ -58,7 +58,7 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
     !medium->GetProjection().Enabled() && !medium->GetIsosurfaces().Enabled() &&
     !property->GetDetailNoise() && !medium->HasMissingData() && !medium->GetClip() &&
     !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray() &&
-    !medium->GetComponents().Enabled();
+    !medium->GetComponents().Enabled() && !medium->GetShading().Enabled();
 }
 
 // Whether the world boxes of two media overlap (their world-axis bounds, by
@@ -507,7 +507,8 @@ void vtkTyndallSceneReader::WarnLayers(const std::vector<vtkVolume*>& volumes,
               << " (counting the renderer's visible Tyndall volumes from 0), but they cannot be "
                  "drawn as one medium (different lighting "
                  "settings, or missing data, clipping, cropping, detail, a coloured extinction, "
-                 "an emission array or several components): each is drawn as a layer, wrong "
+                 "an emission array, several components or Shade): each is drawn as a layer, "
+                 "wrong "
                  "where they "
                  "interpenetrate along a camera ray. ";
     }

@@ -17,11 +17,13 @@ void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* propert
   // without a plane (drawn as composite, with a warning).
   vtkTyndallProjection projection;
   projection.Read(mapper, property);
-  this->Additive = vtkParticipatingMediumProperty::SafeDownCast(property) != nullptr;
-  // A medium's isosurfaces are lit by its scattering alone.
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  this->Additive = medium != nullptr;
+  // A medium's isosurfaces, and a medium with procedural detail (whose
+  // surfaces are the waves', not the grid's), are lit by its scattering alone.
   const bool isosurfaces = mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
-  this->On =
-    property && property->GetShade(0) && !projection.Enabled() && !(this->Additive && isosurfaces);
+  this->On = property && property->GetShade(0) && !projection.Enabled() &&
+    !(medium && (isosurfaces || medium->GetDetailNoise()));
   // The isosurfaces are surfaces: no volumetric scattering blended in (nor
   // into a medium's scattering).
   auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
@@ -69,15 +71,20 @@ void vtkTyndallShading::AddLight(const double n[3], const double l[3], const dou
 //------------------------------------------------------------------------------
 double vtkTyndallShading::BlendWeight(double gradient, double sigma, double range, double h) const
 {
-  const double b = this->Blending;
-  if (!(b > 0.0))
+  const double G = range > 0.0 ? 2.0 * gradient / range : 0.0;
+  return Weight(this->Blending, G, 1.0 - std::exp(-sigma * h));
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallShading::Weight(double B, double G, double a)
+{
+  if (!(B > 0.0))
   {
     return 0.0;
   }
-  const double G = range > 0.0 ? 2.0 * h * gradient / range : 0.0;
-  const double a = 1.0 - std::exp(-sigma * h);
-  const double e = std::exp(-2.0 * b * G * a);
-  return b < 1.0 ? 2.0 * b * e : 2.0 * (1.0 - b) * e + 2.0 * b - 1.0;
+  // VTK 9.2 passes B / 2 to its shader and picks the branch by B.
+  const double e = std::exp(-B * G * a);
+  return B < 1.0 ? B * e : (2.0 - B) * e + B - 1.0;
 }
 
 //------------------------------------------------------------------------------

@@ -42,16 +42,19 @@
  *
  *     rgb = clamp((1 - k) S + k V, 0, 1),   S = Ka c + sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p)
  *                                           V = Ka c + sum_l T_l E_l Kd c
- *     k = 2 b exp(-2 b G a)                        for b < 1
- *     k = 2 (1 - b) exp(-2 b G a) + 2 b - 1        for b >= 1
+ *     k = b exp(-b G a)                        for b < 1
+ *     k = (2 - b) exp(-b G a) + b - 1          for b >= 1
  *
- * G = 2 h |grad s| / (s_max - s_min) (the change of the scalar on its
- * range over two voxels, VTK's central difference; h the smallest world
- * spacing) and a = 1 - exp(-sigma h) (the opacity over VTK's automatic
- * step). So b = 0 is the surface shading above, and b = 0.5 is
- * surface-like where the gradient is strong and volumetric (the light
- * scattered without a normal, isotropically: its phase function 1 here)
- * where it is weak.
+ * (VTK 9.2 passes b / 2 to its shader), G = 2 |grad s| / (s_max - s_min)
+ * (VTK's central difference of the scalar on its range, per world unit)
+ * and a = 1 - exp(-sigma h) (the opacity over VTK's automatic step, h the
+ * smallest world spacing). So b = 0 is the surface shading above, b = 1
+ * VTK's "smart" blend k = exp(-G a): surface-like where the gradient is
+ * strong and volumetric (the light scattered without a normal,
+ * isotropically: its phase function 1 here) where it is weak, and b = 2
+ * volumetric only. Where VTK differs: with gradient opacity VTK's G is
+ * that of a unit vector (1) and its a is the opacity before gradient
+ * opacity; here G is the gradient's and a the sample's.
  *
  * A vtkParticipatingMediumProperty keeps Tyndall's meaning: with Shade on
  * the surface term sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p) (component 0's
@@ -59,7 +62,7 @@
  * sample's single scattering and emission (GetAdditive()): the medium
  * glows and scatters as before, and its surfaces catch highlights. The
  * blending does not apply, and its isosurfaces (the isosurface blend mode)
- * are lit by its scattering alone.
+ * and a medium with procedural detail are lit by its scattering alone.
  *
  * Independent components (vtkTyndallComponents) are shaded each with its
  * own gradient, colour and coefficients (the property's for that
@@ -140,6 +143,9 @@ public:
    * when the blending is 0.
    */
   double BlendWeight(double gradient, double sigma, double range, double h) const;
+
+  /// VTK 9.2's weight k of the blending B, the gradient term G and the opacity a.
+  static double Weight(double B, double G, double a);
 
   /// How far towards a light its transmittance is taken, in voxels (see the class description).
   static constexpr double ShadowOffset = 1.0;

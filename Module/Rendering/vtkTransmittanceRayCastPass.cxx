@@ -159,6 +159,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   variant.Octaves = frame.Medium->GetParameters().ScatteringOctaves;
   variant.Shading = frame.Medium->GetShading().Enabled();
   variant.ShadingAdditive = frame.Medium->GetShading().GetAdditive();
+  variant.ScatteringBlend = frame.Medium->GetShading().GetBlending() > 0.0;
   return variant;
 }
 
@@ -171,11 +172,16 @@ int vtkTransmittanceRayCastPass::StepsPerPass(const vtkTransmittanceFrame& frame
   double perStep = 1.0 + static_cast<double>(frame.Lights.size());
   const double march = frame.Adapter->GetLightMarchIterations(
     *frame.OwnMedium, std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
+  // A medium's Shade runs the light loop twice (its scattering, then its
+  // surface term: vtkTyndallShading::GetAdditive()).
+  const vtkTyndallShading& shading = frame.Medium->GetShading();
+  const double loops = shading.Enabled() && shading.GetAdditive() ? 2.0 : 1.0;
+  perStep += (loops - 1.0) * static_cast<double>(frame.Lights.size());
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
   {
     if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
     {
-      perStep += march;
+      perStep += loops * march;
     }
   }
   return std::max(1, static_cast<int>(IterationBudget / perStep));
@@ -290,18 +296,22 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
     }
     program->SetUniform4fv("shadingCoefficients", 4, coefficients);
     // The volumetric scattering blending (vtkTyndallShading::BlendWeight()):
-    // per component 2 h / (s_max - s_min), h the smallest world spacing.
+    // per component 2 / (s_max - s_min); h the smallest world spacing.
     const double h = frame.Medium->GetMinimumWorldSpacing();
     float gradientScale[4];
     for (int c = 0; c < 4; ++c)
     {
       const double* range = frame.Medium->GetComponentRange(c);
       gradientScale[c] =
-        range[1] > range[0] ? static_cast<float>(2.0 * h / (range[1] - range[0])) : 0.0f;
+        range[1] > range[0] ? static_cast<float>(2.0 / (range[1] - range[0])) : 0.0f;
     }
-    program->SetUniformf("scatteringBlending", static_cast<float>(shading.GetBlending()));
-    program->SetUniform4f("blendGradientScale", gradientScale);
-    program->SetUniformf("blendStep", static_cast<float>(h));
+    if (shading.GetBlending() > 0.0)
+    {
+      // Declared only by the blending variant.
+      program->SetUniformf("scatteringBlending", static_cast<float>(shading.GetBlending()));
+      program->SetUniform4f("blendGradientScale", gradientScale);
+      program->SetUniformf("blendStep", static_cast<float>(h));
+    }
   }
   if (shading.Enabled() || frame.Medium->GetIsosurfaces().Enabled())
   {

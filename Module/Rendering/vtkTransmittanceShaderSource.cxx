@@ -75,6 +75,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("CHROMATIC", variant.Chromatic ? 1 : 0);
   define("SHADING", variant.Shading ? 1 : 0);
   define("SHADING_ADDITIVE", variant.Shading && variant.ShadingAdditive ? 1 : 0);
+  define("SCATTERING_BLEND", variant.Shading && variant.ScatteringBlend ? 1 : 0);
   define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
   define("TRANSFER_2D", variant.Transfer2D ? 1 : 0);
   define("COMPONENTS", variant.Components);

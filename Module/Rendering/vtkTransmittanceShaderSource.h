@@ -172,6 +172,8 @@ public:
     bool Shading = false;
     /// A vtkParticipatingMediumProperty's: its surface term added to single scattering.
     bool ShadingAdditive = false;
+    /// The shading's volumetric scattering blending is above 0 (vtkTyndallShading).
+    bool ScatteringBlend = false;
     /// A plain property's gradient opacity (vtkTyndallGridMedium::GetGradientOpacity()).
     bool GradientOpacity = false;
     /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()).

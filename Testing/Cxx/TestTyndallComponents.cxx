@@ -20,7 +20,8 @@
 // 5. the majorant grid over several tables (what empty-space skipping
 //    reads): each block's majorant bounds the mixture at every sample it
 //    covers, for VTK's mixing and the additive one, and is 0 only where the
-//    mixture is.
+//    mixture is;
+// 6. VTK 9.2's volumetric scattering weight (the blending's).
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -33,6 +34,7 @@
 #include "vtkTyndallComponents.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMajorantGrid.h"
+#include "vtkTyndallShading.h"
 #include "vtkTyndallTransferTable.h"
 #include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
@@ -439,6 +441,26 @@ void TestMajorants()
     Check(emptyExact, mixing + " mixing: a block is empty only where the mixture is 0");
   }
 }
+
+// VTK 9.2's volumetric scattering weight (vtkTyndallShading::Weight()): 0
+// for b = 0, b exp(-b G a) below 1, exp(-G a) at 1 (its "smart" blend), 1
+// (volumetric only) at 2, continuous at 1.
+void TestBlendWeight()
+{
+  const double G = 0.8, a = 0.4;
+  auto near = [](double x, double y) { return std::abs(x - y) < 1e-12; };
+  Check(vtkTyndallShading::Weight(0.0, G, a) == 0.0, "blending 0: surface only");
+  Check(near(vtkTyndallShading::Weight(0.5, G, a), 0.5 * std::exp(-0.5 * G * a)),
+    "blending 0.5: b exp(-b G a)");
+  Check(near(vtkTyndallShading::Weight(1.0, G, a), std::exp(-G * a)),
+    "blending 1: VTK's smart blend exp(-G a)");
+  Check(near(vtkTyndallShading::Weight(2.0, G, a), 1.0), "blending 2: volumetric only");
+  Check(near(vtkTyndallShading::Weight(1.0 - 1e-9, G, a), vtkTyndallShading::Weight(1.0, G, a)) ||
+      std::abs(vtkTyndallShading::Weight(1.0 - 1e-9, G, a) - vtkTyndallShading::Weight(1.0, G, a)) <
+        1e-8,
+    "continuous at 1");
+  Check(near(vtkTyndallShading::Weight(1.5, 0.0, a), 1.0), "no gradient: volumetric for b >= 1");
+}
 }
 
 int TestTyndallComponents(int, char*[])
@@ -447,5 +469,6 @@ int TestTyndallComponents(int, char*[])
   TestMixing();
   TestGrid();
   TestMajorants();
+  TestBlendWeight();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -18,8 +18,9 @@
  *   its colour map's magnitude or component (the mapper's vector mode), or,
  *   with Map Scalars off or Multi Components Mapping on, its components as
  *   colour and opacity (vtkTyndallComponents). ParaView's Shade and its
- *   Ambient, Diffuse, Specular and Specular Power reach the medium: its
- *   gradient surface term, added to its scattering (vtkTyndallShading).
+ *   Diffuse, Specular and Specular Power reach the medium: its gradient
+ *   surface term, added to its scattering (vtkTyndallShading; its ambient
+ *   is the Tyndall group's Ambient).
  *
  * Everything else is ParaView's: the data delivery, the outline shown while
  * interacting on ranks without data, the array selection, the volume's

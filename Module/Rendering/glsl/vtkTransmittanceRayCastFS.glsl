@@ -374,11 +374,13 @@ vec3 tyndallShadingTerm(vec4 k, vec3 n, vec3 s, vec3 h, vec3 color)
   return k.y * abs(dot(n, s)) * color + k.z * pow(max(abs(dot(n, h)), 1e-30), k.w);
 }
 
+#if TYNDALL_SCATTERING_BLEND
 // VTK 9.2's volumetric scattering blending (vtkTyndallShading::BlendWeight(),
-// its CPU twin): the weight k of the volumetric term at a sample of
-// gradient magnitude `gradient` (per world unit) and extinction sigma;
-// blendGradientScale per component 2 h / (s_max - s_min), blendStep h.
-uniform float scatteringBlending; // b in [0, 2]; 0: surface shading only
+// its CPU twin; the variant for a blending above 0): the weight k of the
+// volumetric term at a sample of gradient magnitude `gradient` (per world
+// unit) and extinction sigma; blendGradientScale per component 2 / (s_max -
+// s_min), blendStep h.
+uniform float scatteringBlending; // b in (0, 2]
 uniform vec4 blendGradientScale;
 uniform float blendStep;
 
@@ -389,9 +391,11 @@ float tyndallBlendWeight(float gradient, float scale, float sigma)
   {
     return 0.0;
   }
-  float e = exp(-2.0 * b * gradient * scale * (1.0 - exp(-sigma * blendStep)));
-  return b < 1.0 ? 2.0 * b * e : 2.0 * (1.0 - b) * e + 2.0 * b - 1.0;
+  // (VTK 9.2 passes b / 2 to its shader and picks the branch by b.)
+  float e = exp(-b * gradient * scale * (1.0 - exp(-sigma * blendStep)));
+  return b < 1.0 ? b * e : (2.0 - b) * e + b - 1.0;
 }
+#endif
 
 vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color, float sigma)
 {
@@ -399,20 +403,28 @@ vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color, float sigm
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  // The surface term and the volumetric one (isotropic, no normal).
+  // The surface term and (blending) the volumetric one (isotropic, no normal).
   vec3 surface = shadingCoefficients[0].x * color;
+#if TYNDALL_SCATTERING_BLEND
   vec3 volume = surface;
+#endif
   for (int l = 0; l < numberOfLights; ++l)
   {
     vec3 TE, s, h;
     if (tyndallShadingLight(l, x, v, TE, s, h))
     {
       surface += TE * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
+#if TYNDALL_SCATTERING_BLEND
       volume += TE * shadingCoefficients[0].y * color;
+#endif
     }
   }
+#if TYNDALL_SCATTERING_BLEND
   float k = tyndallBlendWeight(magnitude, blendGradientScale.x, sigma);
   return clamp((1.0 - k) * surface + k * volume, 0.0, 1.0);
+#else
+  return clamp(surface, 0.0, 1.0);
+#endif
 }
 
 #if TYNDALL_SHADING_ADDITIVE
@@ -463,15 +475,21 @@ vec3 tyndallComponentShading(
       for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
       {
         surface[c] += TE * tyndallShadingTerm(shadingCoefficients[c], n[c], s, h, colors[c]);
+#if TYNDALL_SCATTERING_BLEND
         volume[c] += TE * shadingCoefficients[c].y * colors[c];
+#endif
       }
     }
   }
   vec3 mixed = vec3(0.0);
   for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
   {
+#if TYNDALL_SCATTERING_BLEND
     float k = tyndallBlendWeight(magnitudes[c], blendGradientScale[c], sigma[c]);
     mixed += parts[c] * clamp((1.0 - k) * surface[c] + k * volume[c], 0.0, 1.0);
+#else
+    mixed += parts[c] * clamp(surface[c], 0.0, 1.0);
+#endif
   }
   return mixed;
 }
