@@ -294,7 +294,8 @@ int TestTyndallVolumeSettings(int, char*[])
       errors->GetErrorMessage().find("vtkMultiVolume") != std::string::npos,
     "a vtkMultiVolume: an error that names it");
 
-  // Tyndall's own property: its Shade is documented as ignored.
+  // Tyndall's own property: its Shade is documented (a surface term added to its
+  // scattering), its interpolation as ignored: neither is named.
   vtkNew<vtkParticipatingMediumProperty> medium;
   medium->ShadeOn();
   medium->SetInterpolationTypeToNearest();
