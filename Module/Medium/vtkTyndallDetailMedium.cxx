@@ -65,6 +65,30 @@ double WorldK2(const double k[3], const double* a)
 // K0 FilterLevelRatio^n, n the largest level at or below its first (coarsest)
 // wave's WorldK2, K0 the coarsest positive WorldK2; a group whose first wave
 // has k = 0 takes FilterK2 0 (level -1: no filter).
+// The share of the clamped noise's mean max(0, n) that the clamp adds,
+// E[max(0, -n)] / E[max(0, n)], for n Gaussian around `offset` with the
+// waves' variance sum a^2 / 2 (a sum of many waves of independent phases);
+// exactly 0 where the noise cannot dip below 0.
+double NoiseClampShare(double offset, const std::vector<vtkTyndallDetailMedium::Wave>& waves)
+{
+  double sum = 0.0, variance = 0.0;
+  for (const auto& w : waves)
+  {
+    sum += std::abs(w.Amplitude);
+    variance += 0.5 * w.Amplitude * w.Amplitude;
+  }
+  if (offset >= sum)
+  {
+    return 0.0;
+  }
+  const double s = std::sqrt(variance);
+  const double z = offset / s;
+  const double negative = s * std::exp(-0.5 * z * z) / std::sqrt(2.0 * vtkMath::Pi()) -
+    offset * 0.5 * std::erfc(z / std::sqrt(2.0));
+  const double positive = offset + negative;
+  return positive > 0.0 ? std::max(0.0, negative) / positive : 1.0;
+}
+
 void SetFilterLevels(std::vector<vtkTyndallDetailMedium::Wave>& waves)
 {
   double base = 0.0;
@@ -155,19 +179,24 @@ bool vtkTyndallDetailMedium::Update(
   const bool shapeStale = source != this->SourceTime ||
     grid.GetParameters().DensityScale != this->Density || this->ShapeValues.empty();
   const double width = filterWidth > 0.0 ? filterWidth : 0.0; // NaN: 0
-  const bool wavesChanged =
-    shapeStale || noise->GetMTime() != this->NoiseTime || width != this->FilterWidth;
+  const bool extinctionChanged = shapeStale || noise->GetMTime() != this->NoiseTime;
+  const bool wavesChanged = extinctionChanged || width != this->FilterWidth;
   this->FilterWidth = width;
   this->Waves = std::move(waves);
   this->Offset = noise->GetOffset();
   this->Scale = noise->GetExtinctionScale();
   this->NoiseMaximum = this->Offset + amplitudes;
   this->AmplitudeSum = amplitudes;
+  this->ClampShare = NoiseClampShare(this->Offset, this->Waves);
   this->NoiseTime = noise->GetMTime();
   if (shapeStale)
   {
     this->BuildShape(grid);
     this->SourceTime = source;
+  }
+  if (extinctionChanged)
+  {
+    this->ExtinctionTime.Modified();
   }
   if (wavesChanged)
   {
@@ -319,7 +348,51 @@ double vtkTyndallDetailMedium::FilteredNoise(const double p[3], double pixel) co
 }
 
 //------------------------------------------------------------------------------
-double vtkTyndallDetailMedium::GetCameraStep(double pixel, double maximumStep) const
+double vtkTyndallDetailMedium::StepMeanNoise(
+  const double p[3], double pixel, const double span[3]) const
+{
+  const double sigma = this->FilterWidth * pixel;
+  double sum = this->Offset;
+  const int n = static_cast<int>(this->Waves.size());
+  for (int i = 0; i < n; ++i)
+  {
+    const double f = sigma > 0.0 ? this->FilterFactor(i, sigma) : 1.0;
+    if (f == 0.0)
+    {
+      break; // coarsest first: the finer ones are below the cutoff too
+    }
+    const Wave& w = this->Waves[i];
+    const double x = 0.5 * (w.K[0] * span[0] + w.K[1] * span[1] + w.K[2] * span[2]);
+    const double sinc = std::abs(x) > 1e-8 ? std::sin(x) / x : 1.0;
+    sum +=
+      f * sinc * w.Amplitude * std::cos(w.K[0] * p[0] + w.K[1] * p[1] + w.K[2] * p[2] + w.Phase);
+  }
+  return sum;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallDetailMedium::GetCameraStep(
+  double pixel, double maximumStep, double lightingWidth) const
+{
+  if (this->UsesStepMeans(pixel, maximumStep, lightingWidth))
+  {
+    // Each wave's exact mean over the step (StepMeanNoise()): the step
+    // follows the shape and the light.
+    return std::min(maximumStep, 0.5 * lightingWidth);
+  }
+  return this->GetWaveStep(pixel, maximumStep);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallDetailMedium::UsesStepMeans(
+  double pixel, double maximumStep, double lightingWidth) const
+{
+  return this->FilterWidth > 0.0 && this->ClampShare <= ClampTolerance && lightingWidth > 0.0 &&
+    std::min(maximumStep, 0.5 * lightingWidth) > this->GetWaveStep(pixel, maximumStep);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallDetailMedium::GetWaveStep(double pixel, double maximumStep) const
 {
   const int live = this->GetLiveWaves(pixel);
   const double longest = std::min(maximumStep, 0.5 * this->GetFinestWavelength(live));

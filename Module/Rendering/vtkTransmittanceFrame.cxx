@@ -312,6 +312,38 @@ bool vtkTransmittanceFrame::NeedsMaps() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceFrame::UsesDetailStepMeans(double nearestPixel) const
+{
+  // The step and the shader's switch decide alike (GetStepLength()); the
+  // switch must never be on where a light marches the detail in the
+  // camera's program (a brute-force light: GetLightingWidth() 0) or
+  // isosurfaces sample it: its samples would take the camera step's means.
+  return !(this->Integrator.SampleDistance > 0.0) && this->Detail && this->Detail->Enabled() &&
+    !(this->Medium && this->Medium->GetIsosurfaces().Enabled()) &&
+    this->Detail->UsesStepMeans(nearestPixel, 0.5 * this->MinimumSpacing, this->GetLightingWidth());
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittanceFrame::GetLightingWidth() const
+{
+  double width = 1e300;
+  for (const Light& light : this->Lights)
+  {
+    if (light.Method == vtkTransmittanceMapMath::NONE)
+    {
+      continue; // unshadowed
+    }
+    if (!vtkTransmittanceMapMath::IsMapMethod(light.Method) || !light.HasFrustum)
+    {
+      return 0.0;
+    }
+    width =
+      std::min(width, light.Frustum->GetTexelWidth(this->MapCorners, this->Integrator.MapSize));
+  }
+  return width;
+}
+
+//------------------------------------------------------------------------------
 double vtkTransmittanceFrame::GetStepLength(double nearestPixel) const
 {
   if (this->Integrator.SampleDistance > 0.0)
@@ -325,8 +357,9 @@ double vtkTransmittanceFrame::GetStepLength(double nearestPixel) const
   }
   if (this->Detail && this->Detail->Enabled())
   {
-    // The midpoint rule's error on the waves the camera rays evaluate.
-    return this->Detail->GetCameraStep(nearestPixel, 0.5 * this->MinimumSpacing);
+    // The waves' means over the step, or the midpoint rule's error on them.
+    return this->Detail->GetCameraStep(
+      nearestPixel, 0.5 * this->MinimumSpacing, this->GetLightingWidth());
   }
   // The medium's finest feature: its spacing, or a particle's size.
   return 0.5 * std::min(this->MinimumSpacing, this->OwnMedium->GetFinestFeature());

@@ -174,16 +174,37 @@ public:
    * The camera-ray step: SampleDistance, or half the smallest spacing and
    * the medium's finest feature (vtkTyndallMedium::GetFinestFeature());
    * for isosurfaces the smallest spacing (VTK's automatic step).
-   * With procedural detail, at most half the smallest spacing, as long as
-   * the midpoint rule's error on the waves the camera rays evaluate allows
-   * (vtkTyndallDetailMedium::GetCameraStep() at `nearestPixel`, the
-   * narrowest pixel of the image drawn: NearestPixel, times a reduced
-   * image's reduction): two samples
-   * per period of the finest wave where its amplitude is small (the default
-   * scene: 70 dB against a quarter period, the old step), four where the
-   * fine waves are strong.
+   * With procedural detail vtkTyndallDetailMedium::GetCameraStep() at
+   * `nearestPixel` (the narrowest pixel of the image drawn: NearestPixel,
+   * times a reduced image's reduction), at most half the smallest spacing
+   * and half GetLightingWidth(): a camera sample stands for its step's
+   * exact mean of the waves, so the step follows what else varies along
+   * the ray, the shape and the light; where the light carries every wave
+   * (a brute-force light) or the noise often dips below 0, the step
+   * resolves the waves the camera rays evaluate (two samples per period of
+   * the finest where its amplitude is small, four where fine waves are
+   * strong).
    */
   double GetStepLength(double nearestPixel) const;
+
+  /**
+   * The finest scale across the light on which the camera samples' light
+   * varies: the narrowest texel of the lights' maps
+   * (vtkTransmittanceLightFrustum::GetTexelWidth(); along the light a map
+   * resolves its coefficients' and adaptive bounds' scale, which the step's
+   * cap at half the spacing covers as for a voxel grid); 0 where a light's
+   * transmittance is solved at each sample (BruteForce, or a light without
+   * a map), which shows every wave of procedural detail; 1e300 without
+   * shadowed lights.
+   */
+  double GetLightingWidth() const;
+
+  /**
+   * Whether the camera samples of procedural detail stand for their step's
+   * means of the waves (vtkTyndallDetailMedium::UsesStepMeans()): the step
+   * is then longer than the waves' own.
+   */
+  bool UsesDetailStepMeans(double nearestPixel) const;
 
   /**
    * The world width of a pixel along the camera rays (vtkTyndallFootprint),

@@ -160,6 +160,26 @@ void vtkTransmittanceLightFrustum::GetRay(
 }
 
 //------------------------------------------------------------------------------
+double vtkTransmittanceLightFrustum::GetTexelWidth(const double corners[24], int mapSize) const
+{
+  const double side = std::min(vtkMath::Norm(this->AxisX), vtkMath::Norm(this->AxisY));
+  const double n = std::max(mapSize, 1);
+  if (!this->Positional)
+  {
+    return side / n;
+  }
+  // The ray of a changes direction by 2 AxisX / n per texel (AxisZ unit).
+  double nearest = 1e300;
+  for (int i = 0; i < 8; ++i)
+  {
+    const double v[3] = { corners[3 * i] - this->Origin[0], corners[3 * i + 1] - this->Origin[1],
+      corners[3 * i + 2] - this->Origin[2] };
+    nearest = std::min(nearest, vtkMath::Dot(v, this->AxisZ) / vtkMath::Norm(this->AxisZ));
+  }
+  return 2.0 * side * std::max(nearest, 0.0) / n;
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceLightFrustum::GetTexel(const double x[3], double ab[2]) const
 {
   const double v[3] = { x[0] - this->Origin[0], x[1] - this->Origin[1], x[2] - this->Origin[2] };

@@ -101,6 +101,16 @@ public:
   void GetTexel(const double x[3], double ab[2]) const;
 
   /**
+   * The narrowest world width of a texel of a map `mapSize` texels on a
+   * side over the box's 8 corners (24 doubles): orthographic, the shorter
+   * side of the rectangle over mapSize; perspective, at the depth of the
+   * nearest corner along AxisZ. What a map's light can show no finer than
+   * (the camera step follows it through procedural detail). Call it after a
+   * successful fit.
+   */
+  double GetTexelWidth(const double corners[24], int mapSize) const;
+
+  /**
    * The world -> clip matrix (OpenGL convention, depth -1 .. 1) of a camera
    * that sees this frustum, for the box's 8 corners (24 doubles): x, y as
    * above; depth from GetNearDistance() to GetFarDistance() along AxisZ

@@ -439,11 +439,20 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
     if (this->DetailTexture)
     {
       this->DetailTexture->ReleaseGraphicsResources(window);
+      this->ExtinctionContentTime.Modified(); // the maps lose the detail
     }
     this->DetailTexture = nullptr;
+    this->DetailExtinctionTime = 0;
     return true;
   }
   const vtkTyndallDetailMedium& detail = *detailOrNull;
+  // The maps see the detail's extinction (its shape and waves; not the
+  // footprint filter, which only camera samples take).
+  if (detail.GetExtinctionTime() != this->DetailExtinctionTime)
+  {
+    this->DetailExtinctionTime = detail.GetExtinctionTime();
+    this->ExtinctionContentTime.Modified();
+  }
   if (this->DetailTexture && this->DetailTexture->GetContext() == window &&
     detail.GetTime() <= this->DetailTime)
   {

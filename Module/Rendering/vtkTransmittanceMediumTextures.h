@@ -149,6 +149,7 @@ private:
   vtkSmartPointer<vtkTextureObject> EmissionTexture;
   vtkSmartPointer<vtkTextureObject> ScatteringTexture;
   vtkMTimeType DetailTime = 0;
+  vtkMTimeType DetailExtinctionTime = 0; // the detail's extinction the maps last saw
   vtkTyndallMajorantGrid Majorants;
   double BlockRangeTime = 0.0;
   double MajorantTime = 0.0;

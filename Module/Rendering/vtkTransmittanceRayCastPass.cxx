@@ -60,6 +60,9 @@ bool vtkTransmittanceRayCastPass::Render(
   vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
   variant.DetailSamples = this->LastDetailSamples;
   frame.Adapter->DeclareCameraSwitches(*frame.OwnMedium, nearestPixel, variant);
+  variant.DetailStepMeans = variant.DetailFilter && frame.UsesDetailStepMeans(nearestPixel);
+  this->LastStepLength = sampled ? 0.0 : step;
+  this->LastDetailStepMeans = variant.DetailStepMeans;
   this->LastDetailCameraWaves = 0;
   if (frame.Detail && frame.Detail->Enabled())
   {
@@ -335,4 +338,6 @@ void vtkTransmittanceRayCastPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastPassCount: " << this->LastPassCount << "\n";
   os << indent << "LastDetailSamples: " << this->LastDetailSamples << "\n";
   os << indent << "LastDetailCameraWaves: " << this->LastDetailCameraWaves << "\n";
+  os << indent << "LastStepLength: " << this->LastStepLength << "\n";
+  os << indent << "LastDetailStepMeans: " << this->LastDetailStepMeans << "\n";
 }

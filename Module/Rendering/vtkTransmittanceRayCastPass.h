@@ -107,6 +107,15 @@ public:
    */
   int GetLastDetailCameraWaves() const { return this->LastDetailCameraWaves; }
 
+  /**
+   * The camera rays' step the last Render() marched with (world; 0 when it
+   * drew free flights), and whether its samples of procedural detail stood
+   * for the step's means of the waves (vtkTransmittanceFrame::
+   * UsesDetailStepMeans()).
+   */
+  double GetLastStepLength() const { return this->LastStepLength; }
+  bool GetLastDetailStepMeans() const { return this->LastDetailStepMeans; }
+
   /// Still frames averaged in the last Render()'s picture (0: no average kept).
   int GetLastHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
 
@@ -138,6 +147,8 @@ private:
   int LastPassCount = 0;
   int LastDetailSamples = 0;
   int LastDetailCameraWaves = 0;
+  double LastStepLength = 0.0;
+  bool LastDetailStepMeans = false;
 };
 
 #endif

@@ -106,6 +106,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("DETAIL_SAMPLES", variant.DetailGroups > 0 ? variant.DetailSamples : 0);
   define("DETAIL_SOLVE_ITERATIONS", DetailSolveIterations);
   define("DETAIL_FILTER", variant.DetailGroups > 0 && variant.DetailFilter ? 1 : 0);
+  define("DETAIL_STEP_MEANS",
+    variant.DetailGroups > 0 && variant.DetailFilter && variant.DetailStepMeans ? 1 : 0);
   define("DETAIL_CUTOFF", vtkTyndallDetailMedium::FilterCutoff);
   define("DETAIL_UNIFORM_ALBEDO", variant.DetailGroups > 0 && variant.DetailUniformAlbedo ? 1 : 0);
   const int cameraGroups = variant.DetailCameraGroups >= 0

@@ -111,10 +111,13 @@ public:
     /**
      * The camera samples of the detail (RAY_CAST): the groups they evaluate
      * (the waves a pixel of the frame shows; the first groups) and whether
-     * they filter them by the pixel's footprint.
+     * they filter them by the pixel's footprint, and whether a sample stands
+     * for its step's mean of the waves (vtkTransmittanceFrame::
+     * UsesDetailStepMeans()).
      */
     int DetailCameraGroups = 0;
     bool DetailFilter = false;
+    bool DetailStepMeans = false;
     /**
      * Procedural detail whose colour is one albedo (the colour table is
      * constant) and that emits nothing from the table: a sample needs the

@@ -824,6 +824,20 @@ int vtkTransmittanceVolumeMapper::GetLastDetailSamplesPerPixel()
 }
 
 //------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::GetLastCameraStep()
+{
+  const vtkInternals& in = *this->Internals;
+  return in.Complete && !in.Projected ? in.RayCast->GetLastStepLength() : 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::GetLastDetailStepMeans()
+{
+  const vtkInternals& in = *this->Internals;
+  return in.Complete && !in.Projected && in.RayCast->GetLastDetailStepMeans();
+}
+
+//------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastDetailCameraWaves()
 {
   const vtkInternals& in = *this->Internals;

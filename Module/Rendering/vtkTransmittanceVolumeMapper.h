@@ -344,6 +344,17 @@ public:
   int GetLastDetailCameraWaves();
 
   /**
+   * The camera rays' step the last Render() marched with (world units; 0
+   * when nothing was marched: free flights, a projection, nothing rendered).
+   * With procedural detail and the footprint filter, a step longer than the
+   * waves' own where the lights' maps allow it: GetLastDetailStepMeans()
+   * says whether each camera sample then stood for its step's exact mean of
+   * the waves (Documentation/rendering-model.md, "Steps that span waves").
+   */
+  double GetLastCameraStep();
+  bool GetLastDetailStepMeans();
+
+  /**
    * The still frames the last Render()'s picture averages (DetailSamplesPerPixel
    * > 0; 0 otherwise).
    */

@@ -42,6 +42,33 @@ vec4 tyndallCosCycles(vec4 y)
 // The phases of group g at field index point p, in cycles.
 #define TYNDALL_DETAIL_CYCLES(g, p) ((detailKx[g] * TYNDALL_CYCLES) * p.x + (detailKy[g] * TYNDALL_CYCLES) * p.y + (detailKz[g] * TYNDALL_CYCLES) * p.z + detailPhase[g] * TYNDALL_CYCLES)
 
+#if TYNDALL_DETAIL_STEP_MEANS
+// A camera sample stands for the mean of the noise over a step's length
+// centred on it (vtkTyndallDetailMedium::StepMeanNoise()): each wave at the
+// sample times sinc(k . span / 2), span the step (field index), exactly
+// however many periods the step spans. The samples are a step apart
+// (jittered or not), so those spans tile the ray. So the march steps by
+// the shape and the light, not the waves (only without brute-force lights,
+// whose march through guests would take the same function:
+// vtkTransmittanceFrame::UsesDetailStepMeans()). tyndallDetailRayStep()
+// sets the amplitudes times their sinc for a ray's direction w (world) and
+// step dt; the ray-cast pass calls it before the march and where the step
+// changes (the last).
+vec4 detailStepAmplitude[TYNDALL_DETAIL_GROUPS];
+
+#define TYNDALL_DETAIL_STEP_GROUP(g) { vec4 x = 0.5 * (detailKx[g] * span.x + detailKy[g] * span.y + detailKz[g] * span.z); detailStepAmplitude[g] = detailAmplitude[g] * mix(sin(x) / x, vec4(1.0), lessThan(abs(x), vec4(1e-4))); }
+
+void tyndallDetailRayStep(vec3 w, float dt)
+{
+  vec3 span = dt * (worldToVolume * vec4(w, 0.0)).xyz * detailBoxSize;
+  TYNDALL_DETAIL_FOR_CAMERA_GROUPS(TYNDALL_DETAIL_STEP_GROUP)
+}
+#else
+// The camera step resolves the waves (or brute-force lights march the
+// same function with a footprint of 0): a sample takes them at its point.
+#define detailStepAmplitude detailAmplitude
+#endif
+
 #define TYNDALL_DETAIL_NOISE_GROUP(g) sum += dot(detailAmplitude[g], tyndallCosCycles(TYNDALL_DETAIL_CYCLES(g, p)));
 
 // The noise at field index point p.
@@ -63,7 +90,7 @@ float tyndallDetailNoise(vec3 p)
 // than TYNDALL_DETAIL_MAX_LEVEL_STEPS (vtkTransmittanceDetailAdapter::
 // MaximumLevelSteps, 5: the macro climbs five) its own exponential. The conditions are constants: the compiler keeps only the
 // operations a group needs.
-#define TYNDALL_DETAIL_FILTERED_GROUP(g) if (detailLevelSteps[g] > TYNDALL_DETAIL_MAX_LEVEL_STEPS) { e = exp2(detailDecay[g] * pixel2); } else { if (detailLevelSteps[g] > 0) { e *= sqrt(e); } if (detailLevelSteps[g] > 1) { e *= sqrt(e); } if (detailLevelSteps[g] > 2) { e *= sqrt(e); } if (detailLevelSteps[g] > 3) { e *= sqrt(e); } if (detailLevelSteps[g] > 4) { e *= sqrt(e); } } if (detailLevelSteps[g] > 0) { f = e * step(TYNDALL_DETAIL_CUTOFF, e); } sum += f * dot(detailAmplitude[g], tyndallCosCycles(TYNDALL_DETAIL_CYCLES(g, p)));
+#define TYNDALL_DETAIL_FILTERED_GROUP(g) if (detailLevelSteps[g] > TYNDALL_DETAIL_MAX_LEVEL_STEPS) { e = exp2(detailDecay[g] * pixel2); } else { if (detailLevelSteps[g] > 0) { e *= sqrt(e); } if (detailLevelSteps[g] > 1) { e *= sqrt(e); } if (detailLevelSteps[g] > 2) { e *= sqrt(e); } if (detailLevelSteps[g] > 3) { e *= sqrt(e); } if (detailLevelSteps[g] > 4) { e *= sqrt(e); } } if (detailLevelSteps[g] > 0) { f = e * step(TYNDALL_DETAIL_CUTOFF, e); } sum += f * dot(detailStepAmplitude[g], tyndallCosCycles(TYNDALL_DETAIL_CYCLES(g, p)));
 
 float tyndallDetailFilteredNoise(vec3 p, float pixel)
 {
@@ -78,7 +105,8 @@ float tyndallDetailFilteredNoise(vec3 p, float pixel)
 
 // The extinction at box point q ([0,1]^3): filtered by the footprint of
 // the camera sample being taken (tyndallFootprint, the world width of its
-// pixel), unfiltered elsewhere (tyndallFootprint 0: light rays, maps).
+// pixel), and with TYNDALL_DETAIL_STEP_MEANS its mean over a step; unfiltered
+// elsewhere (tyndallFootprint 0: light rays, maps).
 float tyndallDetailExtinction(vec3 q)
 {
   vec3 p = detailBoxLow + q * detailBoxSize;

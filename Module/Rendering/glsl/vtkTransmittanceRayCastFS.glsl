@@ -768,6 +768,17 @@ float tyndallPixelFootprint(vec3 x)
 #endif
 }
 
+// Tells the medium the camera ray's direction w and its step dt
+// (procedural detail takes each wave's mean over a step centred on the
+// sample: tyndallDetailRayStep()); before the march and where the step
+// changes.
+void tyndallCameraStep(vec3 w, float dt)
+{
+#if TYNDALL_DETAIL_STEP_MEANS
+  tyndallDetailRayStep(w, dt);
+#endif
+}
+
 #if TYNDALL_ISOSURFACES
 // The isosurfaces (TYNDALL_ISOSURFACES) the camera ray's step from x0
 // along w, of length dt, crosses: their composite as the step's extinction
@@ -892,6 +903,8 @@ void main()
   TyndallSkip skip = tyndallStartSkipping(p0, w);
   // Step n spans [tNear + n stepLength, tNear + (n + 1) stepLength), the last
   // one cut at tFar; its sample lies at `offset` of it.
+  float stepTold = stepLength;
+  tyndallCameraStep(w, stepTold);
   int n = firstStep;
   for (int i = firstStep; i < endStep && n < endStep; ++i)
   {
@@ -907,6 +920,11 @@ void main()
       continue;
     }
     ++n;
+    if (dt != stepTold)
+    {
+      stepTold = dt;
+      tyndallCameraStep(w, dt);
+    }
     vec3 x = p0 + ts * w;
     TyndallCameraSample medium = tyndallCameraSample(x, p0 + t0 * w, w, dt);
     float sigma = medium.Sigma;
