@@ -12,8 +12,9 @@
  *
  * A mask, through the API of vtkGPUVolumeRayCastMapper: SetMaskInput()
  * with the binary mask type hides the samples whose mask voxel is 0 or
- * less, on both renderers (vtkTyndallGridMedium; label-map masks are not
- * drawn yet: the volume is drawn unmasked, with a warning).
+ * less; with the label-map type its labels select the property's label
+ * functions, mixed by MaskBlendFactor (vtkTyndallLabelMap); on both
+ * renderers (vtkTyndallGridMedium).
  *
  * Not instantiated: create a vtkTransmittanceVolumeMapper or a
  * vtkTransmittanceParticleMapper.
@@ -69,8 +70,12 @@ public:
   ///@{
   /**
    * The mask's type: BinaryMaskType or LabelMapMaskType (the default, as
-   * vtkGPUVolumeRayCastMapper's; not drawn yet: the volume is drawn
-   * unmasked, with a warning).
+   * vtkGPUVolumeRayCastMapper's). A label map's value at a sample (its
+   * nearest, rounded, 0 to 255) selects the property's label functions
+   * (vtkVolumeProperty::SetLabelColor(), SetLabelScalarOpacity(); label 0
+   * and labels without functions the volume's), mixed with the volume's by
+   * the blend factor as VTK 9.1 mixes them (Documentation/mapper.md,
+   * "Masks"); a mask of other dimensions or with a NaN is an error.
    */
   vtkSetClampMacro(MaskType, int, BinaryMaskType, LabelMapMaskType);
   vtkGetMacro(MaskType, int);
@@ -81,8 +86,8 @@ public:
   ///@{
   /**
    * A label map's blend between the volume's and the labels' transfer
-   * functions, in [0, 1], default 1 (vtkGPUVolumeRayCastMapper's; label
-   * maps are not drawn yet).
+   * functions, in [0, 1], default 1 (vtkGPUVolumeRayCastMapper's): 0 the
+   * volume's alone, 1 the labels' alone where the label is not 0.
    */
   vtkSetClampMacro(MaskBlendFactor, float, 0.0f, 1.0f);
   vtkGetMacro(MaskBlendFactor, float);

@@ -286,10 +286,9 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
 bool vtkTyndallGridMedium::UpdateMask(vtkVolume* volume, vtkObject* reporter)
 {
   auto* mapper = vtkParticipatingMediumMapper::SafeDownCast(volume->GetMapper());
-  vtkImageData* mask =
-    mapper && mapper->GetMaskType() == vtkParticipatingMediumMapper::BinaryMaskType
-    ? mapper->GetMaskInput()
-    : nullptr;
+  vtkImageData* mask = mapper ? mapper->GetMaskInput() : nullptr;
+  const bool labels =
+    mask && mapper->GetMaskType() == vtkParticipatingMediumMapper::LabelMapMaskType;
   vtkDataArray* values = nullptr;
   if (mask)
   {
@@ -298,7 +297,7 @@ bool vtkTyndallGridMedium::UpdateMask(vtkVolume* volume, vtkObject* reporter)
   }
   // The mask's values and what they lie on (the scalars' samples, read first).
   std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(mask)),
-    mask ? static_cast<double>(mask->GetMTime()) : -1.0,
+    mask ? static_cast<double>(mask->GetMTime()) : -1.0, double(labels),
     static_cast<double>(reinterpret_cast<uintptr_t>(values)),
     values ? static_cast<double>(values->GetMTime()) : -1.0 };
   key.insert(key.end(), this->ScalarsKey.begin(), this->ScalarsKey.end());
@@ -308,15 +307,18 @@ bool vtkTyndallGridMedium::UpdateMask(vtkVolume* volume, vtkObject* reporter)
   }
   this->MaskKey = key;
   this->Mask.clear();
+  this->LabelMap.Clear();
+  this->TableKey.clear(); // the label rows and bound follow the labels
   this->MaskedCount = 0;
   this->Field.clear();          // the sampler reads the mask
   this->ScalarsTime.Modified(); // the GPU's validity texture holds it
   this->ExtinctionTime.Modified();
   std::ostringstream error;
-  if (mask && !this->ReadMask(mask, error))
+  if (mask && !this->ReadMask(mask, labels, error))
   {
     this->MaskKey.clear(); // read again (and said again) next time
     this->Mask.clear();
+    this->LabelMap.Clear();
     this->MaskedCount = 0;
     vtkErrorWithObjectMacro(reporter, << "Cannot use the mapper's mask: " << error.str());
     return false;
@@ -325,7 +327,7 @@ bool vtkTyndallGridMedium::UpdateMask(vtkVolume* volume, vtkObject* reporter)
 }
 
 //------------------------------------------------------------------------------
-bool vtkTyndallGridMedium::ReadMask(vtkImageData* mask, std::ostream& error)
+bool vtkTyndallGridMedium::ReadMask(vtkImageData* mask, bool labels, std::ostream& error)
 {
   int dims[3];
   mask->GetDimensions(dims);
@@ -346,6 +348,10 @@ bool vtkTyndallGridMedium::ReadMask(vtkImageData* mask, std::ostream& error)
     error << "it needs " << (this->CellScalars ? "cell" : "point")
           << " scalars of one component, one per sample of the volume (" << count << ").";
     return false;
+  }
+  if (labels)
+  {
+    return this->LabelMap.ReadLabels(values, count, error);
   }
   this->Mask.resize(static_cast<size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
@@ -751,6 +757,20 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     extinction.push_back(this->GetMinimumWorldSpacing());
     extinction.insert(extinction.end(), this->GradientToVoxel, this->GradientToVoxel + 3);
   }
+  // A label map's functions, blend and step (vtkTyndallLabelMap).
+  const bool labels = this->LabelsApply(property);
+  extinction.push_back(double(labels));
+  if (labels)
+  {
+    auto* mapper = vtkParticipatingMediumMapper::SafeDownCast(volume->GetMapper());
+    extinction.push_back(mapper->GetMaskBlendFactor());
+    extinction.push_back(this->GetMinimumWorldSpacing());
+    for (int label : property->GetLabelMapLabels())
+    {
+      extinction.push_back(label);
+      identify(extinction, property->GetLabelScalarOpacity(label));
+    }
+  }
   // The isosurfaces are what the light meets instead of the medium.
   extinction.push_back(double(this->Isosurfaces.Enabled()));
   const std::vector<double>& isoValues = this->Isosurfaces.GetValues();
@@ -767,6 +787,14 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
                    : static_cast<vtkObject*>(property->GetRGBTransferFunction(function)));
   }
   identify(key, emission);
+  if (labels)
+  {
+    // The labels' colours (the volume's are above).
+    for (int label : property->GetLabelMapLabels())
+    {
+      identify(key, property->GetLabelColor(label));
+    }
+  }
   const bool blackbody = fromArray && medium->GetBlackbody();
   const double temperatureScale = medium ? medium->GetTemperatureScale() : 1.0;
   if (fromArray)
@@ -796,6 +824,15 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     }
   }
   this->Table.TabulateGradientOpacity(gradientOpacity);
+  this->LabelMap.ClearRows();
+  if (labels)
+  {
+    auto* mapper = vtkParticipatingMediumMapper::SafeDownCast(volume->GetMapper());
+    this->LabelMap.Tabulate(property, this->Table.Minimum, this->Table.Maximum,
+      mapper->GetMaskBlendFactor(), this->GetMinimumWorldSpacing());
+    this->LabelBoundTable = this->Table;
+    this->LabelBoundTable.Extinction = this->LabelMap.Bound(this->Table.Extinction);
+  }
   if (transfer2D &&
     !this->Table.Tabulate2D(transfer2D, this->GetMinimumWorldSpacing(), this->Nearest, error))
   {
@@ -1007,9 +1044,57 @@ double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
   }
   int k;
   double f;
-  return this->TablePosition(p, k, f)
-    ? this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p)
-    : 0.0;
+  if (!this->TablePosition(p, k, f))
+  {
+    return 0.0;
+  }
+  const double sigma =
+    this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
+  int label, entry;
+  if (!this->LabelAt(p, label, entry))
+  {
+    return sigma;
+  }
+  double color[3] = { 0.0, 0.0, 0.0 };
+  return this->LabelMap.Mix(label, entry, sigma, this->Parameters.DensityScale, color);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::LabelAt(const double p[3], int& label, int& entry) const
+{
+  if (!this->LabelMap.Enabled())
+  {
+    return false;
+  }
+  vtkIdType index = 0, stride = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double i = std::min(std::max(std::floor(p[a] + 0.5), 0.0), this->Dimensions[a] - 1.0);
+    index += static_cast<vtkIdType>(i) * stride;
+    stride *= this->Dimensions[a];
+  }
+  label = this->LabelMap.LabelAt(index);
+  if (label <= 0)
+  {
+    return false;
+  }
+  const double s = this->FieldScalar(p);
+  if (std::isnan(s))
+  {
+    return false;
+  }
+  entry = vtkTyndallLabelMap::Entry(this->Table.Unit(s));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::LabelsApply(vtkVolumeProperty* property) const
+{
+  auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  return !this->LabelMap.GetLabels().empty() && !this->Projection.Enabled() &&
+    !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() && !this->Components.Enabled() &&
+    property->GetTransferFunctionMode() != vtkVolumeProperty::TF_2D &&
+    !(medium && medium->GetDetailNoise());
 }
 
 //------------------------------------------------------------------------------
@@ -1039,12 +1124,19 @@ bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) 
   }
   point.Extinction =
     this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
-  if (!(point.Extinction > 0.0))
+  int label, entry;
+  const bool labelled = this->LabelAt(p, label, entry);
+  if (!labelled && !(point.Extinction > 0.0))
   {
     return false;
   }
   this->TableColors(p, k, f, point);
-  return true;
+  if (labelled)
+  {
+    point.Extinction = this->LabelMap.Mix(
+      label, entry, point.Extinction, this->Parameters.DensityScale, point.Albedo);
+  }
+  return point.Extinction > 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -1072,6 +1164,13 @@ bool vtkTyndallGridMedium::FieldMaterial(const double p[3], Point& point) const
     return false;
   }
   this->TableColors(p, k, f, point);
+  int label, entry;
+  if (this->LabelAt(p, label, entry))
+  {
+    const double sigma =
+      this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
+    this->LabelMap.Mix(label, entry, sigma, this->Parameters.DensityScale, point.Albedo);
+  }
   return true;
 }
 
@@ -1116,7 +1215,7 @@ double vtkTyndallGridMedium::GetMajorant() const
   double largest[vtkTyndallComponents::MaximumCount] = { 0.0, 0.0, 0.0, 0.0 };
   for (int t = 0; t < this->Components.GetTableCount(); ++t)
   {
-    const std::vector<double>& extinction = this->GetComponentTable(t).Extinction;
+    const std::vector<double>& extinction = this->GetMajorantTable(t).Extinction;
     largest[t] = extinction.empty() ? 0.0 : *std::max_element(extinction.begin(), extinction.end());
   }
   return this->Parameters.DensityScale * this->Components.Majorant(largest);

@@ -59,6 +59,7 @@
 #include "vtkTyndallClipRegion.h"    // For the clip region
 #include "vtkTyndallComponents.h"    // For the components
 #include "vtkTyndallIsosurfaces.h"   // For the isosurfaces
+#include "vtkTyndallLabelMap.h"      // For the label map
 #include "vtkTyndallMedium.h"        // For the interface
 #include "vtkTyndallProjection.h"    // For the projection
 #include "vtkTyndallShading.h"       // For the shading
@@ -76,6 +77,7 @@ class vtkDataSet;
 class vtkImageData;
 class vtkObject;
 class vtkVolume;
+class vtkVolumeProperty;
 
 class TYNDALLMEDIUM_EXPORT vtkTyndallGridMedium : public vtkTyndallMedium
 {
@@ -145,6 +147,22 @@ public:
   vtkIdType GetNumberOfMaskedSamples() const { return this->MaskedCount; }
   /// Whether some samples are missing: NaN scalars or masked ones.
   bool HasMissingData() const { return this->NaNCount > 0 || this->MaskedCount > 0; }
+  ///@}
+
+  ///@{
+  /**
+   * The mapper's label map (vtkParticipatingMediumMapper::SetMaskInput()
+   * with LabelMapMaskType; vtkTyndallLabelMap): drawn for a plain
+   * single-component table (not with several components, a 2-D transfer
+   * function, procedural detail, isosurfaces or a projection, which
+   * vtkTyndallVolumeSettings names). GetMajorantTable() is the table whose
+   * extinction bounds the labels' too (table 0's for the majorants).
+   */
+  const vtkTyndallLabelMap& GetLabelMap() const { return this->LabelMap; }
+  const vtkTyndallTransferTable& GetMajorantTable(int t) const
+  {
+    return t == 0 && this->LabelMap.Enabled() ? this->LabelBoundTable : this->GetComponentTable(t);
+  }
   ///@}
 
   ///@{
@@ -425,16 +443,23 @@ private:
   bool ReadScalars(vtkImageData* image, vtkDataArray* scalars, int cellFlag, std::ostream& error,
     vtkObject* reporter);
   bool UpdateEmissionArray(vtkVolume* volume, vtkObject* reporter);
-  // Reads the mapper's binary mask into Mask (see GetMask()); false (with an
-  // error) for a mask that does not lie on the scalars' samples.
+  // Reads the mapper's binary mask into Mask (see GetMask()), or its label
+  // map into LabelMap's labels; false (with an error) for a mask that does
+  // not lie on the scalars' samples.
   bool UpdateMask(vtkVolume* volume, vtkObject* reporter);
-  bool ReadMask(vtkImageData* mask, std::ostream& error);
+  bool ReadMask(vtkImageData* mask, bool labels, std::ostream& error);
   bool UpdateGeometry(vtkVolume* volume, vtkObject* reporter);
   bool UpdateTable(vtkVolume* volume, vtkObject* reporter);
   // A plain property's 2-D transfer function (TF_2D; the table's Has2D()) at
   // the field index point p: its RGBA at the scalar and the change per
   // average voxel (GradientOpacityAt()'s); false at missing data.
   bool Transfer2DSample(const double p[3], double rgba[4]) const;
+  // The label map at the field index point p: the label of its nearest
+  // sample and the label table's entry of its scalar; false where no label
+  // applies (label 0, missing data, no label map).
+  bool LabelAt(const double p[3], int& label, int& entry) const;
+  // Whether the property's label functions apply (see GetLabelMap()).
+  bool LabelsApply(vtkVolumeProperty* property) const;
   // The extinction of a 2-D function's opacity: per VTK's automatic step
   // (the smallest world spacing), density scale applied.
   double Transfer2DExtinction(double opacity) const;
@@ -480,6 +505,8 @@ private:
   std::vector<vtkTyndallTransferTable> ComponentTables; // tables 1 .. GetTableCount() - 1
   vtkIdType NaNCount = 0;
   std::vector<unsigned char> Mask;
+  vtkTyndallLabelMap LabelMap;
+  vtkTyndallTransferTable LabelBoundTable;
   std::vector<double> MaskKey;
   vtkIdType MaskedCount = 0;
   vtkIdType InfCount = 0;

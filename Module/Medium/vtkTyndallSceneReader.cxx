@@ -57,6 +57,7 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
     !medium->GetProjection().Enabled() && !medium->GetIsosurfaces().Enabled() &&
     !property->GetDetailNoise() && !medium->HasMissingData() && !medium->GetClip() &&
+    !medium->GetLabelMap().Enabled() &&
     !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray() &&
     !medium->GetComponents().Enabled() && !medium->GetShading().Enabled();
 }
@@ -348,6 +349,10 @@ void vtkTyndallSceneReader::UpdateGuests(
     else if (g.Medium->HasMissingData())
     {
       reason = "has missing data (NaN or a mask)";
+    }
+    else if (g.Medium->GetLabelMap().Enabled())
+    {
+      reason = "has a label map";
     }
     else if (g.Medium->GetClip())
     {

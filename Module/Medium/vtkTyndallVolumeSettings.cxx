@@ -147,9 +147,25 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
   }
   auto* tyndallMapper = vtkParticipatingMediumMapper::SafeDownCast(mapper);
   if (tyndallMapper && tyndallMapper->GetMaskInput() &&
-    tyndallMapper->GetMaskType() == vtkParticipatingMediumMapper::LabelMapMaskType)
+    tyndallMapper->GetMaskType() == vtkParticipatingMediumMapper::LabelMapMaskType &&
+    tyndallMapper->GetMaskBlendFactor() > 0.0f && !property->GetLabelMapLabels().empty())
   {
-    notDrawn.push_back("a label-map mask (the volume is drawn unmasked; binary masks are drawn)");
+    // Drawn (vtkTyndallLabelMap) for one component's 1-D functions in the
+    // composite blend mode; VTK's projections ignore labels too.
+    const bool projected = mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND &&
+      mapper->GetBlendMode() != vtkVolumeMapper::ISOSURFACE_BLEND;
+    if (!projected &&
+      (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D ||
+        mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND ||
+        (medium && medium->GetDetailNoise()) || ScalarComponents(mapper, property) > 1))
+    {
+      notDrawn.push_back("a label map with a 2-D transfer function, isosurfaces, procedural "
+                         "detail or several components (the volume is drawn without its labels)");
+    }
+    if (property->HasLabelGradientOpacity())
+    {
+      notDrawn.push_back("the labels' gradient opacity (their scalar opacity is drawn)");
+    }
   }
   if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes() &&
     HasTranslucentGeometry(renderer))

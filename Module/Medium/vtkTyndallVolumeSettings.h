@@ -14,7 +14,10 @@
  * - procedural detail in a projection blend mode (the grid's scalars are
  *   projected) or the isosurface blend mode (the grid's surfaces are drawn);
  * - a label-map mask (vtkParticipatingMediumMapper::SetMaskInput() with
- *   LabelMapMaskType: the volume is drawn unmasked; binary masks are drawn);
+ *   LabelMapMaskType, drawn by vtkTyndallLabelMap) with a 2-D transfer
+ *   function, isosurfaces, procedural detail or several components (the
+ *   volume is drawn without its labels), and the labels' gradient opacity
+ *   (their scalar opacity is drawn);
  * - the renderer's depth peeling for volumes, with translucent geometry in
  *   the renderer (not supported);
  * and, for a plain vtkVolumeProperty (VTK's meaning; a

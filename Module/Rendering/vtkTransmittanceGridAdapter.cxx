@@ -31,6 +31,8 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
   variant.Chromatic = grid.GetParameters().GetChromatic();
   variant.GradientOpacity = grid.GetGradientOpacity();
   variant.Transfer2D = textures.GetTransfer2DTexture() != nullptr;
+  variant.LabelMap = textures.GetLabelTexture() != nullptr &&
+    textures.GetLabelRowsTexture() != nullptr && grid.GetLabelMap().Enabled();
   variant.Isosurfaces = grid.GetIsosurfaces().Enabled();
   variant.IsoCount = static_cast<int>(grid.GetIsosurfaces().GetValues().size());
   const vtkTyndallComponents& components = grid.GetComponents();
@@ -110,6 +112,19 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
   if (grid.GetComponents().Enabled())
   {
     this->SetComponentUniforms(program, grid, textures);
+  }
+  if (textures.GetLabelTexture() && textures.GetLabelRowsTexture())
+  {
+    // Declared only by the label map's variant.
+    const vtkTyndallLabelMap& labels = grid.GetLabelMap();
+    program->SetUniformi("labelTexture", textures.GetLabelTexture()->GetTextureUnit());
+    program->SetUniformi("labelRowsTexture", textures.GetLabelRowsTexture()->GetTextureUnit());
+    program->SetUniformi("labelRows", labels.GetRowCount());
+    program->SetUniformf("labelBlend", static_cast<float>(labels.GetBlend()));
+    program->SetUniformf("labelStep", static_cast<float>(labels.GetStep()));
+    const float toUnit[2] = { static_cast<float>(table.UnitScale()),
+      static_cast<float>(table.UnitShift()) };
+    program->SetUniform2f("labelScalar", toUnit);
   }
   const std::vector<double>& isoValues = grid.GetIsosurfaces().GetValues();
   if (grid.GetIsosurfaces().Enabled() && !isoValues.empty())

@@ -58,6 +58,40 @@ void Gather(const vtkTyndallGridMedium& medium, const T* data, int components, i
   }
 }
 
+// Releases `texture`'s graphics resources and drops it.
+void Release(vtkSmartPointer<vtkTextureObject>& texture, vtkOpenGLRenderWindow* window)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(window);
+  }
+  texture = nullptr;
+}
+
+// Every `factor`-th sample of `values` (`components` per sample, `full`
+// samples per axis) into `out` (`dims` samples per axis).
+template <typename T>
+void EveryFactorth(
+  const T* values, int components, int factor, const int full[3], const int dims[3], T* out)
+{
+  size_t i = 0;
+  for (int z = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x)
+      {
+        const size_t from =
+          (static_cast<size_t>(z) * factor * full[1] + static_cast<size_t>(y) * factor) * full[0] +
+          static_cast<size_t>(x) * factor;
+        for (int c = 0; c < components; ++c)
+        {
+          out[i++] = values[components * from + c];
+        }
+      }
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -90,6 +124,11 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
       texture->SetMinificationFilter(filter);
       texture->SetMagnificationFilter(filter);
     }
+  }
+  if (newScalars && !this->UploadLabels(window, medium, reporter))
+  {
+    this->ScalarsTime = 0;
+    return false;
   }
   // A coloured particle cloud's scattering grid changes with its scalars.
   if (newScalars || (extras.Scattering != nullptr) != (this->ScatteringTexture != nullptr))
@@ -210,11 +249,7 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   }
   if (!missing)
   {
-    if (this->ValidityTexture)
-    {
-      this->ValidityTexture->ReleaseGraphicsResources(window);
-    }
-    this->ValidityTexture = nullptr;
+    Release(this->ValidityTexture, window);
     return true;
   }
   if (!this->ValidityTexture)
@@ -238,11 +273,7 @@ bool vtkTransmittanceMediumTextures::UploadEmission(
   const std::vector<float>& emission = medium.GetEmissionValues();
   if (emission.empty())
   {
-    if (this->EmissionTexture)
-    {
-      this->EmissionTexture->ReleaseGraphicsResources(window);
-    }
-    this->EmissionTexture = nullptr;
+    Release(this->EmissionTexture, window);
     return true;
   }
   return this->UploadSampled(
@@ -255,11 +286,7 @@ bool vtkTransmittanceMediumTextures::UploadScattering(vtkOpenGLRenderWindow* win
 {
   if (!scattering)
   {
-    if (this->ScatteringTexture)
-    {
-      this->ScatteringTexture->ReleaseGraphicsResources(window);
-    }
-    this->ScatteringTexture = nullptr;
+    Release(this->ScatteringTexture, window);
     return true;
   }
   return this->UploadSampled(
@@ -285,23 +312,9 @@ bool vtkTransmittanceMediumTextures::UploadSampled(vtkOpenGLRenderWindow* window
     vtkErrorWithObjectMacro(reporter, << "Cannot allocate the " << what << "'s texture.");
     return false;
   }
-  size_t i = 0;
-  for (int z = 0; z < dims[2] && this->Factor > 1; ++z)
+  if (this->Factor > 1)
   {
-    for (int y = 0; y < dims[1]; ++y)
-    {
-      for (int x = 0; x < dims[0]; ++x)
-      {
-        const size_t from = (static_cast<size_t>(z) * this->Factor * full[1] +
-                              static_cast<size_t>(y) * this->Factor) *
-            full[0] +
-          static_cast<size_t>(x) * this->Factor;
-        for (int c = 0; c < components; ++c)
-        {
-          sampled[i++] = values[components * from + c];
-        }
-      }
-    }
+    EveryFactorth(values, components, this->Factor, full, dims, sampled.data());
   }
   if (!texture)
   {
@@ -334,18 +347,15 @@ bool vtkTransmittanceMediumTextures::UploadTable(
     vtkErrorWithObjectMacro(reporter, << "Could not create the transfer-function texture.");
     return false;
   }
-  if (!this->UploadComponentTables(window, medium, reporter))
+  if (!this->UploadComponentTables(window, medium, reporter) ||
+    !this->UploadLabelRows(window, medium, reporter))
   {
     return false;
   }
   const vtkTyndallTransferTable& table = medium.GetTable();
   if (!table.Has2D())
   {
-    if (this->Transfer2DTexture)
-    {
-      this->Transfer2DTexture->ReleaseGraphicsResources(window);
-    }
-    this->Transfer2DTexture = nullptr;
+    Release(this->Transfer2DTexture, window);
     return true;
   }
   if (!this->Transfer2DTexture)
@@ -366,6 +376,73 @@ bool vtkTransmittanceMediumTextures::UploadTable(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadLabels(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  // With the scalars (a new mask re-reads them): the labels of every
+  // Factor-th sample, one byte each (label / 255 in the shader), read nearest.
+  const std::vector<unsigned char>& labels = medium.GetLabelMap().GetLabels();
+  if (labels.empty())
+  {
+    Release(this->LabelTexture, window);
+    return true;
+  }
+  const int* full = medium.GetDimensions();
+  const int* dims = this->Dimensions;
+  std::vector<unsigned char> sampled;
+  try
+  {
+    sampled.resize(this->Factor > 1 ? static_cast<size_t>(dims[0]) * dims[1] * dims[2] : 0);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot allocate the label map's texture.");
+    return false;
+  }
+  if (this->Factor > 1)
+  {
+    EveryFactorth(labels.data(), 1, this->Factor, full, dims, sampled.data());
+  }
+  if (!this->LabelTexture)
+  {
+    this->LabelTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTransmittanceOffscreenDraw::SetClamped(this->LabelTexture, window, false);
+  if (!this->LabelTexture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_UNSIGNED_CHAR,
+        this->Factor > 1 ? static_cast<void*>(sampled.data())
+                         : const_cast<unsigned char*>(labels.data())))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the label map's 3-D texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadLabelRows(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  const vtkTyndallLabelMap& labels = medium.GetLabelMap();
+  if (!labels.Enabled())
+  {
+    Release(this->LabelRowsTexture, window);
+    return true;
+  }
+  if (!this->LabelRowsTexture)
+  {
+    this->LabelRowsTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTransmittanceOffscreenDraw::SetClamped(this->LabelRowsTexture, window, false);
+  if (!this->LabelRowsTexture->Create2DFromRaw(vtkTyndallLabelMap::Width, labels.GetRowCount() + 1,
+        4, VTK_FLOAT, const_cast<float*>(labels.GetRows().data())))
+  {
+    vtkErrorWithObjectMacro(reporter, << "Could not create the label map's transfer texture.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceMediumTextures::UploadComponentTables(
   vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
 {
@@ -374,11 +451,7 @@ bool vtkTransmittanceMediumTextures::UploadComponentTables(
   const int tables = medium.GetComponents().GetTableCount();
   if (tables < 2)
   {
-    if (this->ComponentTexture)
-    {
-      this->ComponentTexture->ReleaseGraphicsResources(window);
-    }
-    this->ComponentTexture = nullptr;
+    Release(this->ComponentTexture, window);
     return true;
   }
   std::vector<float> rows, table;
@@ -411,7 +484,7 @@ bool vtkTransmittanceMediumTextures::UploadMajorants(
   const vtkTyndallTransferTable* tables[vtkTyndallComponents::MaximumCount] = {};
   for (int t = 0; t < components.GetTableCount(); ++t)
   {
-    tables[t] = &medium.GetComponentTable(t);
+    tables[t] = &medium.GetMajorantTable(t);
   }
   this->MajorantTime = this->Majorants.BuildMajorants(tables, components);
   if (!this->BlockTexture)
@@ -480,10 +553,10 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
 //------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture :
-    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get(),
-      this->Transfer2DTexture.Get(), this->BlockTexture.Get(), this->ComponentTexture.Get(),
-      this->DetailTexture.Get(), this->EmissionTexture.Get(), this->ScatteringTexture.Get() })
+  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
+         this->TransferTexture.Get(), this->Transfer2DTexture.Get(), this->BlockTexture.Get(),
+         this->ComponentTexture.Get(), this->DetailTexture.Get(), this->EmissionTexture.Get(),
+         this->ScatteringTexture.Get(), this->LabelTexture.Get(), this->LabelRowsTexture.Get() })
   {
     if (texture)
     {
@@ -495,6 +568,8 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   this->TransferTexture = nullptr;
   this->Transfer2DTexture = nullptr;
   this->ComponentTexture = nullptr;
+  this->LabelTexture = nullptr;
+  this->LabelRowsTexture = nullptr;
   this->BlockTexture = nullptr;
   this->DetailTexture = nullptr;
   this->EmissionTexture = nullptr;

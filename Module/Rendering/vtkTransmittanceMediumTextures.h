@@ -89,6 +89,15 @@ public:
    * null for fewer than 2 tables.
    */
   vtkTextureObject* GetComponentTexture() const { return this->ComponentTexture; }
+
+  /**
+   * A label map (vtkTyndallLabelMap): the labels at the scalars' samples
+   * (a one-byte 3-D texture read nearest, label / 255; uploaded with the
+   * scalars) and, while the labels draw, their rows (RGBA, Width x
+   * (RowCount + 1), read nearest; with the table); null without.
+   */
+  vtkTextureObject* GetLabelTexture() const { return this->LabelTexture; }
+  vtkTextureObject* GetLabelRowsTexture() const { return this->LabelRowsTexture; }
   /**
    * When what a map build sees of the uploaded medium last changed: its
    * scalars, its extinction (not its colours) or its clipping.
@@ -136,6 +145,10 @@ private:
     const char* what, vtkObject* reporter);
   bool UploadMajorants(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadLabels(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  bool UploadLabelRows(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadComponentTables(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
 
@@ -144,6 +157,8 @@ private:
   vtkSmartPointer<vtkTextureObject> TransferTexture;
   vtkSmartPointer<vtkTextureObject> Transfer2DTexture;
   vtkSmartPointer<vtkTextureObject> ComponentTexture;
+  vtkSmartPointer<vtkTextureObject> LabelTexture;
+  vtkSmartPointer<vtkTextureObject> LabelRowsTexture;
   vtkSmartPointer<vtkTextureObject> BlockTexture;
   vtkSmartPointer<vtkTextureObject> DetailTexture;
   vtkSmartPointer<vtkTextureObject> EmissionTexture;

@@ -78,6 +78,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("SCATTERING_BLEND", variant.Shading && variant.ScatteringBlend ? 1 : 0);
   define("GRADIENT_OPACITY", variant.GradientOpacity ? 1 : 0);
   define("TRANSFER_2D", variant.Transfer2D ? 1 : 0);
+  define("LABEL_MAP", variant.LabelMap ? 1 : 0);
   define("COMPONENTS", variant.Components);
   define("COMPONENT_MODE", variant.ComponentMode);
   define("COMPONENT_ADDITIVE", variant.ComponentAdditive ? 1 : 0);

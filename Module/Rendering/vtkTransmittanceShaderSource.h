@@ -61,6 +61,8 @@
  * - TYNDALL_TRANSFER_2D: a plain property's 2-D transfer function classifies
  *   the medium (colour and opacity at the scalar and its gradient
  *   magnitude, transfer2DTexture);
+ * - TYNDALL_LABEL_MAP: a label-map mask (vtkTyndallLabelMap) mixes the
+ *   labels' functions into the medium's colour and extinction;
  * - TYNDALL_ISOSURFACES: VTK's isosurface blend mode (vtkTyndallIsosurfaces):
  *   the camera samples (RAY_CAST) and the light (every pass) meet the
  *   TYNDALL_ISO_COUNT surfaces a step crosses instead of the medium;
@@ -181,6 +183,8 @@ public:
     bool GradientOpacity = false;
     /// A plain property's 2-D transfer function (vtkTyndallTransferTable::Has2D()).
     bool Transfer2D = false;
+    /// A label map (vtkTyndallLabelMap::Enabled()).
+    bool LabelMap = false;
     /**
      * Several components (vtkTyndallComponents): their number (1: one),
      * how they are classified (vtkTyndallComponents::Mode) and whether

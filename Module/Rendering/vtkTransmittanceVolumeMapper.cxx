@@ -324,7 +324,8 @@ public:
       this->Textures->GetValidityTexture(), this->Textures->GetTransferTexture(),
       this->Textures->GetTransfer2DTexture(), this->Textures->GetBlockTexture(),
       this->Textures->GetDetailTexture(), this->Textures->GetEmissionTexture(),
-      this->Textures->GetScatteringTexture(), this->Textures->GetComponentTexture() };
+      this->Textures->GetScatteringTexture(), this->Textures->GetComponentTexture(),
+      this->Textures->GetLabelTexture(), this->Textures->GetLabelRowsTexture() };
     for (const vtkTransmittanceMediumTextures* guest : this->GuestTextures)
     {
       textures.push_back(guest->GetVolumeTexture());

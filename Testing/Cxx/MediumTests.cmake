@@ -7,6 +7,7 @@ vtk_add_test_cxx(TyndallMediumCxxTests tests
   TestTyndallComponents.cxx
   TestTyndallDetailMedium.cxx
   TestTyndallFootprintFilter.cxx
+  TestTyndallLabelMap.cxx
   TestTyndallVolumeSettings.cxx)
 vtk_test_cxx_executable(TyndallMediumCxxTests tests
   RENDERING_FACTORY

@@ -116,18 +116,28 @@ struct Scene
   // Tyndall's VolumetricScatteringBlending (VTK 9.2's; 9.1 draws none):
   // against the CPU reference only.
   double Blending = 0.0;
+  // The mask is a label map (SetMaskTypeToLabelMap) with this blend factor
+  // (0: a binary mask).
+  double LabelBlend = 0.0;
 };
 
-// TestGPURayCastCompositeBinaryMask's mask: the half of the samples with x
-// below the middle kept (255), the rest hidden (0), and a ball of hidden
-// samples in the kept half.
-vtkSmartPointer<vtkImageData> HalfMask(vtkImageData* data)
+// An unsigned char image on `data`'s samples (a mask's).
+vtkSmartPointer<vtkImageData> MaskOver(vtkImageData* data)
 {
   auto mask = vtkSmartPointer<vtkImageData>::New();
   mask->SetExtent(data->GetExtent());
   mask->SetSpacing(data->GetSpacing());
   mask->SetOrigin(data->GetOrigin());
   mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  return mask;
+}
+
+// TestGPURayCastCompositeBinaryMask's mask: the half of the samples with x
+// below the middle kept (255), the rest hidden (0), and a ball of hidden
+// samples in the kept half.
+vtkSmartPointer<vtkImageData> HalfMask(vtkImageData* data)
+{
+  vtkSmartPointer<vtkImageData> mask = MaskOver(data);
   int dims[3];
   data->GetDimensions(dims);
   auto* values = static_cast<unsigned char*>(mask->GetScalarPointer());
@@ -140,6 +150,35 @@ vtkSmartPointer<vtkImageData> HalfMask(vtkImageData* data)
         const double dx = x - 0.25 * dims[0], dy = y - 0.5 * dims[1], dz = z - 0.5 * dims[2];
         const bool ball = dx * dx + dy * dy + dz * dz < 0.04 * dims[0] * dims[0];
         values[i] = x < dims[0] / 2 && !ball ? 255 : 0;
+      }
+    }
+  }
+  return mask;
+}
+
+// TestGPURayCastLabelMap's kind of label map: label 1 in a ball around the
+// centre, label 2 in the lower half (z) where the scalar is below the
+// middle of its range, 0 elsewhere.
+vtkSmartPointer<vtkImageData> LabelMask(vtkImageData* data)
+{
+  vtkSmartPointer<vtkImageData> mask = MaskOver(data);
+  int dims[3];
+  data->GetDimensions(dims);
+  vtkDataArray* scalars = data->GetPointData()->GetScalars();
+  double range[2];
+  scalars->GetRange(range);
+  const double middle = 0.5 * (range[0] + range[1]);
+  auto* values = static_cast<unsigned char*>(mask->GetScalarPointer());
+  for (int z = 0, i = 0; z < dims[2]; ++z)
+  {
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x, ++i)
+      {
+        const double dx = x - 0.5 * dims[0], dy = y - 0.5 * dims[1], dz = z - 0.5 * dims[2];
+        const bool ball = dx * dx + dy * dy + dz * dz < 0.06 * dims[0] * dims[0];
+        const bool low = z < dims[2] / 2 && scalars->GetComponent(i, 0) < middle;
+        values[i] = ball ? 1 : (low ? 2 : 0);
       }
     }
   }
@@ -380,6 +419,41 @@ void ColorProperty(vtkVolumeProperty* property, const double range[2])
   property->SetColor(color);
   property->SetScalarOpacity(opacity);
   property->SetScalarOpacityUnitDistance(2.0);
+}
+
+// ColorProperty with TestGPURayCastLabelMap's kind of label functions: label
+// 1 white and denser above a quarter of the range, label 2 blue over the
+// lower half, no function for label 3 (it reads the volume's).
+void LabelProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ColorProperty(property, range);
+  const double lo = range[0], span = range[1] - range[0];
+  vtkNew<vtkColorTransferFunction> white;
+  white->AddRGBPoint(lo, 0.97, 1.0, 0.98);
+  white->AddRGBPoint(lo + span, 0.9, 0.9, 0.8);
+  vtkNew<vtkPiecewiseFunction> whiteOpacity;
+  whiteOpacity->AddPoint(lo, 0.0);
+  whiteOpacity->AddPoint(lo + 0.25 * span, 0.0);
+  whiteOpacity->AddPoint(lo + 0.6 * span, 0.4);
+  vtkNew<vtkColorTransferFunction> blue;
+  blue->AddRGBPoint(lo, 0.01, 0.62, 1.0);
+  blue->AddRGBPoint(lo + span, 0.1, 0.3, 0.9);
+  vtkNew<vtkPiecewiseFunction> blueOpacity;
+  blueOpacity->AddPoint(lo, 0.05);
+  blueOpacity->AddPoint(lo + 0.5 * span, 0.15);
+  blueOpacity->AddPoint(range[1], 0.0);
+  property->SetLabelColor(1, white);
+  property->SetLabelScalarOpacity(1, whiteOpacity);
+  property->SetLabelColor(2, blue);
+  property->SetLabelScalarOpacity(2, blueOpacity);
+}
+
+// LabelProperty, denser and shaded (the labels lit and shadowed).
+void ShadedLabelProperty(vtkVolumeProperty* property, const double range[2])
+{
+  LabelProperty(property, range);
+  property->SetScalarOpacityUnitDistance(0.5);
+  property->ShadeOn();
 }
 
 void Tilted(vtkRenderer* renderer, vtkVolume*)
@@ -832,6 +906,12 @@ std::vector<Scene> Scenes()
       Tilted, true, 35.0, false, false, HalfMask },
     { "Mask-ShadedHead", MakeHead, ShadedProperty, none, Tilted, true, 35.0, false, true,
       HalfMask },
+    { "LabelMap-WaveletComposite", MakeWaveletFromZero, LabelProperty, none, Tilted, true, 35.0,
+      false, false, LabelMask, false, false, 0.0, 1.0 },
+    { "LabelMap-WaveletBlend", MakeWaveletFromZero, LabelProperty, none, Tilted, true, 35.0, false,
+      false, LabelMask, false, false, 0.0, 0.5 },
+    { "LabelMap-ShadedHead", MakeHead, ShadedLabelProperty, none, Tilted, true, 35.0, false, true,
+      LabelMask, false, false, 0.0, 1.0 },
     { "Isosurface-WaveletMedium", MakeWavelet, UnlitAmbientIsoProperty, Blend(M::ISOSURFACE_BLEND),
       SceneLight, true, 35.0, false, true, nullptr, true },
     { "Slice-Wavelet", MakeWavelet, SliceProperty, Blend(M::SLICE_BLEND), Tilted, true },
@@ -950,9 +1030,19 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
     vtkSmartPointer<vtkImageData> mask = scene.Mask(data);
     auto* gpu = vtkGPUVolumeRayCastMapper::SafeDownCast(vtkMapper);
     gpu->SetMaskInput(mask);
-    gpu->SetMaskTypeToBinary();
     tyndall->SetMaskInput(mask);
-    tyndall->SetMaskTypeToBinary();
+    if (scene.LabelBlend > 0.0)
+    {
+      gpu->SetMaskTypeToLabelMap();
+      gpu->SetMaskBlendFactor(static_cast<float>(scene.LabelBlend));
+      tyndall->SetMaskTypeToLabelMap();
+      tyndall->SetMaskBlendFactor(static_cast<float>(scene.LabelBlend));
+    }
+    else
+    {
+      gpu->SetMaskTypeToBinary();
+      tyndall->SetMaskTypeToBinary();
+    }
   }
   vtkNew<vtkVolume> volume;
   volume->SetMapper(vtkMapper);

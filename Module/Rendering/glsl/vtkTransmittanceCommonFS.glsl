@@ -262,6 +262,36 @@ float tyndallTransfer2D(float value, vec3 t, out vec3 color)
 }
 #endif
 
+#if TYNDALL_LABEL_MAP
+// A label map (vtkTyndallLabelMap, whose Mix() is the CPU twin): the label
+// of the sample's nearest sample (labelTexture, label / 255); label L > 0
+// reads its row (at most labelRows) at the entry the scalar falls in
+// (labelRowsTexture, nearest), and the colour and opacity mix with the
+// volume's by the blend factor, the volume's opacity and the mix's at
+// VTK's step labelStep.
+uniform sampler3D labelTexture;
+uniform sampler2D labelRowsTexture;
+uniform int labelRows;
+uniform float labelBlend;
+uniform float labelStep;
+uniform vec2 labelScalar; // u = value * x + y
+
+float tyndallLabelMix(vec3 texel, float value, float sigma, inout vec3 color)
+{
+  int label = int(texture(labelTexture, texel).r * 255.0 + 0.5);
+  if (label == 0)
+  {
+    return sigma;
+  }
+  float row = (float(min(label, labelRows)) + 0.5) / float(labelRows + 1);
+  vec4 rgba = texture(labelRowsTexture, vec2(value * labelScalar.x + labelScalar.y, row));
+  float own = densityScale > 0.0 ? 1.0 - exp(-sigma / densityScale * labelStep) : 0.0;
+  float alpha = min(mix(own, rgba.a, labelBlend), 0.999999);
+  color = mix(own > 0.0 ? color : vec3(0.0), rgba.rgb, labelBlend); // VTK's 0 where own is
+  return densityScale * -log(1.0 - alpha) / labelStep;
+}
+#endif
+
 #if TYNDALL_COMPONENTS > 1
 // Several components (vtkTyndallComponents, whose Mix() is the CPU twin):
 // each interpolated on its own (the volume texture's channels), table t
@@ -396,10 +426,15 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   return tyndallDetailExtinction(q);
 #elif TYNDALL_TRANSFER_2D
   return tyndallTransfer2D(value, texel, color);
-#elif TYNDALL_GRADIENT_OPACITY
-  return densityScale * tf.a * tyndallGradientOpacity(texel);
 #else
-  return densityScale * tf.a;
+  float sigma = densityScale * tf.a;
+#if TYNDALL_GRADIENT_OPACITY
+  sigma *= tyndallGradientOpacity(texel);
+#endif
+#if TYNDALL_LABEL_MAP
+  sigma = tyndallLabelMix(texel, value, sigma, color);
+#endif
+  return sigma;
 #endif
 }
 
