@@ -99,6 +99,12 @@ const Spec kOptions[] = {
     "a binary mask: a volume file of the input's dimensions whose samples of 0 or less hide the "
     "input's there (missing data, for the camera and the light; vtkGPUVolumeRayCastMapper's "
     "binary mask)" },
+  { "labels", "", Kind::Text, 0, 0, false, "", "FILE", "", "Input", Both,
+    "a label map: a volume file of the input's dimensions whose samples' values (rounded, 1 to "
+    "255) are labels, each coloured by a categorical palette with the volume's opacity; 0 keeps "
+    "the volume's colour (vtkGPUVolumeRayCastMapper's label-map mask)" },
+  { "label-blend", "", Kind::Number, 0, 1, false, "", "F", "1", "Input", Both,
+    "how much of the labels' colour a labelled sample takes, in [0, 1] (the mask blend factor)" },
   { "frame", "", Kind::Integer, 0, 1000000, false, "", "N", "0", "Input", Both,
     "time frame of a 4-D file (NIfTI with a time dimension)" },
   { "no-rescale", "", Kind::Flag, 0, 0, false, "", "", "", "Input", Both,
@@ -730,8 +736,16 @@ public:
     {
       return "--component-weights needs --components independent";
     }
-    for (const char* name : { "component", "components", "component-weights", "mask", "frame",
-           "no-rescale", "level-set-to-fog" })
+    if (set("mask") && set("labels"))
+    {
+      return "--mask and --labels are both the mapper's mask: give one";
+    }
+    if (set("label-blend") && !set("labels"))
+    {
+      return "--label-blend needs --labels";
+    }
+    for (const char* name : { "component", "components", "component-weights", "mask", "labels",
+           "frame", "no-rescale", "level-set-to-fog" })
     {
       if (input.empty() && set(name))
       {

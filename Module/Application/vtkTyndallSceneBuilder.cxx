@@ -44,6 +44,7 @@
 #include "vtkTyndallOptions.h"
 #include "vtkVolume.h"
 #include "vtkVolumeFileReader.h"
+#include "vtkVolumeProperty.h"
 #include "vtkVolumeShadowReceiverPass.h"
 #include "vtkXMLPolyDataReader.h"
 
@@ -52,6 +53,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -180,6 +182,7 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   {
     return false;
   }
+  this->ApplyLabels();
   this->Property->SetInterpolationTypeToLinear();
   this->Mapper->SetInputConnection(this->Source->GetOutputPort());
   this->Volume->SetMapper(this->Mapper);
@@ -600,12 +603,14 @@ bool vtkTyndallSceneBuilder::LoadMask()
 {
   vtkTyndallOptions* o = this->Options;
   this->Mapper->SetMaskInput(nullptr);
-  if (!o->IsSet("mask"))
+  const bool labels = o->IsSet("labels");
+  if (!o->IsSet("mask") && !labels)
   {
     return true;
   }
-  vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(o->GetText("mask"));
-  this->ProgressLabel = std::string("loading the mask ") + o->GetText("mask");
+  const char* file = o->GetText(labels ? "labels" : "mask");
+  vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(file);
+  this->ProgressLabel = std::string(labels ? "loading the label map " : "loading the mask ") + file;
   if (!this->Update(reader))
   {
     return false;
@@ -614,8 +619,77 @@ bool vtkTyndallSceneBuilder::LoadMask()
   auto mask = vtkSmartPointer<vtkImageData>::New();
   mask->ShallowCopy(reader->GetOutput());
   this->Mapper->SetMaskInput(mask);
-  this->Mapper->SetMaskTypeToBinary();
+  if (labels)
+  {
+    this->Mapper->SetMaskTypeToLabelMap();
+    this->Mapper->SetMaskBlendFactor(static_cast<float>(o->GetNumber("label-blend")));
+  }
+  else
+  {
+    this->Mapper->SetMaskTypeToBinary();
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyLabels()
+{
+  vtkImageData* mask = this->Mapper->GetMaskInput();
+  if (!mask || this->Mapper->GetMaskType() != vtkParticipatingMediumMapper::LabelMapMaskType)
+  {
+    return;
+  }
+  vtkDataArray* values = mask->GetPointData()->GetScalars();
+  values = values ? values : mask->GetCellData()->GetScalars();
+  if (!values || values->GetNumberOfComponents() != 1)
+  {
+    return; // the mapper says what is wrong with it
+  }
+  // The labels present, each its palette colour (Tableau's ten, then again).
+  std::set<int> present;
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+  {
+    const double v = std::round(values->GetComponent(i, 0));
+    if (v >= 1.0 && v <= 255.0)
+    {
+      present.insert(static_cast<int>(v));
+    }
+  }
+  static const double palette[10][3] = { { 0.12, 0.47, 0.71 }, { 1.0, 0.5, 0.05 },
+    { 0.17, 0.63, 0.17 }, { 0.84, 0.15, 0.16 }, { 0.58, 0.4, 0.74 }, { 0.55, 0.34, 0.29 },
+    { 0.89, 0.47, 0.76 }, { 0.5, 0.5, 0.5 }, { 0.74, 0.74, 0.13 }, { 0.09, 0.75, 0.81 } };
+  // The volume's opacity as a per-step opacity at the mapper's label step
+  // (the smallest world spacing): a label's row then keeps the volume's
+  // extinction, and only its colour changes (vtkTyndallLabelMap).
+  vtkImageData* image = vtkImageData::SafeDownCast(this->Source->GetOutputDataObject(0));
+  double step = 1.0;
+  if (image)
+  {
+    const double* spacing = image->GetSpacing();
+    step = std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }) *
+      this->Options->GetNumber("scale");
+  }
+  vtkPiecewiseFunction* opacity = this->Property->GetScalarOpacity(0);
+  const double unit = this->Property->GetScalarOpacityUnitDistance(0);
+  double range[2];
+  opacity->GetRange(range);
+  vtkNew<vtkPiecewiseFunction> perStep;
+  const int points = 256;
+  for (int i = 0; i < points; ++i)
+  {
+    const double s = range[0] + (range[1] - range[0]) * i / (points - 1.0);
+    const double a = std::min(std::max(opacity->GetValue(s), 0.0), 0.999999);
+    perStep->AddPoint(s, 1.0 - std::pow(1.0 - a, step / unit));
+  }
+  for (int label : present)
+  {
+    const double* rgb = palette[(label - 1) % 10];
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(range[0], rgb[0], rgb[1], rgb[2]);
+    color->AddRGBPoint(range[1], rgb[0], rgb[1], rgb[2]);
+    this->Property->SetLabelColor(label, color);
+    this->Property->SetLabelScalarOpacity(label, perStep);
+  }
 }
 
 //------------------------------------------------------------------------------

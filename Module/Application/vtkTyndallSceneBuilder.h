@@ -168,6 +168,8 @@ private:
   // --mask FILE: the mapper's binary mask; false (with the reader's error)
   // when the file cannot be read.
   bool LoadMask();
+  // --labels: each label present its palette colour and the volume's opacity.
+  void ApplyLabels();
   // Parses --iso-values into IsoValues; false (with an error) for a value
   // that is not a finite number or more than vtkTyndallIsosurfaces allows.
   bool ReadIsoValues();

@@ -692,6 +692,31 @@ int MakeData(const std::vector<std::string>& args)
     writer->Write();
   }
   {
+    // A label map over the blob (label 1 for x below 8, 2 from 16 on, 0
+    // between) and one of label 0 everywhere.
+    auto blob = Blob(1);
+    const int* dims = blob->GetDimensions();
+    for (const bool zero : { false, true })
+    {
+      vtkNew<vtkImageData> labels;
+      labels->SetDimensions(blob->GetDimensions());
+      labels->SetSpacing(blob->GetSpacing());
+      vtkNew<vtkUnsignedCharArray> values;
+      values->SetName("labels");
+      values->SetNumberOfTuples(blob->GetNumberOfPoints());
+      for (vtkIdType id = 0; id < blob->GetNumberOfPoints(); ++id)
+      {
+        const int x = static_cast<int>(id % dims[0]);
+        values->SetValue(id, zero ? 0 : (x < 8 ? 1 : (x >= 16 ? 2 : 0)));
+      }
+      labels->GetPointData()->SetScalars(values);
+      vtkNew<vtkXMLImageDataWriter> writer;
+      writer->SetInputData(labels);
+      writer->SetFileName((dir + (zero ? "/blob-labels-zero.vti" : "/blob-labels.vti")).c_str());
+      writer->Write();
+    }
+  }
+  {
     // Fire: the blob as the density and a "temperature" array (Kelvin),
     // 600 K at the top rising to 2200 K at the bottom.
     auto fire = Blob(1);
