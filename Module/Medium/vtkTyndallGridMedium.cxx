@@ -1048,8 +1048,7 @@ double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
   {
     return 0.0;
   }
-  const double sigma =
-    this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
+  const double sigma = this->TableExtinction(p, k, f);
   int label, entry;
   if (!this->LabelAt(p, label, entry))
   {
@@ -1057,6 +1056,13 @@ double vtkTyndallGridMedium::FieldExtinction(const double p[3], Work*) const
   }
   double color[3] = { 0.0, 0.0, 0.0 };
   return this->LabelMap.Mix(label, entry, sigma, this->Parameters.DensityScale, color);
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallGridMedium::TableExtinction(const double p[3], int k, double f) const
+{
+  return this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) *
+    this->GradientOpacityAt(p);
 }
 
 //------------------------------------------------------------------------------
@@ -1122,8 +1128,7 @@ bool vtkTyndallGridMedium::FieldSample(const double p[3], Point& point, double) 
   {
     return false;
   }
-  point.Extinction =
-    this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
+  point.Extinction = this->TableExtinction(p, k, f);
   int label, entry;
   const bool labelled = this->LabelAt(p, label, entry);
   if (!labelled && !(point.Extinction > 0.0))
@@ -1167,8 +1172,7 @@ bool vtkTyndallGridMedium::FieldMaterial(const double p[3], Point& point) const
   int label, entry;
   if (this->LabelAt(p, label, entry))
   {
-    const double sigma =
-      this->Parameters.DensityScale * this->Table.ExtinctionAt(k, f) * this->GradientOpacityAt(p);
+    const double sigma = this->TableExtinction(p, k, f);
     this->LabelMap.Mix(label, entry, sigma, this->Parameters.DensityScale, point.Albedo);
   }
   return true;

@@ -458,6 +458,9 @@ private:
   // sample and the label table's entry of its scalar; false where no label
   // applies (label 0, missing data, no label map).
   bool LabelAt(const double p[3], int& label, int& entry) const;
+  // The table's extinction at p (entry k, fraction f): density scale and
+  // gradient opacity applied.
+  double TableExtinction(const double p[3], int k, double f) const;
   // Whether the property's label functions apply (see GetLabelMap()).
   bool LabelsApply(vtkVolumeProperty* property) const;
   // The extinction of a 2-D function's opacity: per VTK's automatic step

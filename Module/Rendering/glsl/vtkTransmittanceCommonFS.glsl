@@ -290,6 +290,12 @@ float tyndallLabelMix(vec3 texel, float value, float sigma, inout vec3 color)
   color = mix(own > 0.0 ? color : vec3(0.0), rgba.rgb, labelBlend); // VTK's 0 where own is
   return densityScale * -log(1.0 - alpha) / labelStep;
 }
+#else
+// No label map: the medium as it is.
+float tyndallLabelMix(vec3 texel, float value, float sigma, inout vec3 color)
+{
+  return sigma;
+}
 #endif
 
 #if TYNDALL_COMPONENTS > 1
@@ -431,10 +437,7 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
 #if TYNDALL_GRADIENT_OPACITY
   sigma *= tyndallGradientOpacity(texel);
 #endif
-#if TYNDALL_LABEL_MAP
-  sigma = tyndallLabelMix(texel, value, sigma, color);
-#endif
-  return sigma;
+  return tyndallLabelMix(texel, value, sigma, color);
 #endif
 }
 
