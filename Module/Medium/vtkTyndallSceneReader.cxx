@@ -57,9 +57,9 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
   return medium && property && property->GetSceneShadows() && property->GetSceneCompositing() &&
     !medium->GetProjection().Enabled() && !medium->GetIsosurfaces().Enabled() &&
     !property->GetDetailNoise() && !medium->HasMissingData() && !medium->GetClip() &&
-    !medium->GetLabelMap().Enabled() &&
-    !medium->GetParameters().GetChromatic() && !medium->GetEmissionFromArray() &&
-    !medium->GetComponents().Enabled() && !medium->GetShading().Enabled();
+    !medium->GetLabelMap().Enabled() && !medium->GetParameters().GetChromatic() &&
+    !medium->GetEmissionFromArray() && !medium->GetComponents().Enabled() &&
+    !medium->GetShading().Enabled();
 }
 
 // Whether the world boxes of two media overlap (their world-axis bounds, by
@@ -146,7 +146,7 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   {
     return false;
   }
-  this->WarnNotDrawn(renderer, volume, reporter);
+  this->WarnNotDrawn(volume, reporter);
   this->UpdateLights(renderer, reporter);
   // A projection (vtkTyndallProjection) is lit by nothing and lit through nothing.
   const bool projection = this->Medium->GetProjection().Enabled();
@@ -250,11 +250,10 @@ void vtkTyndallSceneReader::UpdateLights(vtkRenderer* renderer, vtkObject* repor
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallSceneReader::WarnNotDrawn(
-  vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter)
+void vtkTyndallSceneReader::WarnNotDrawn(vtkVolume* volume, vtkObject* reporter)
 {
   const std::string warning =
-    vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(renderer, volume));
+    vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(volume));
   std::string& last = this->LastNotDrawnWarning[volume];
   if (!warning.empty() && warning != last)
   {

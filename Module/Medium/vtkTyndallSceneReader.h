@@ -184,7 +184,7 @@ private:
   std::string LastLightWarning;
   /// Warns once per change of the settings VTK draws and Tyndall does not
   /// (vtkTyndallVolumeSettings), per volume (a mapper may draw several).
-  void WarnNotDrawn(vtkRenderer* renderer, vtkVolume* volume, vtkObject* reporter);
+  void WarnNotDrawn(vtkVolume* volume, vtkObject* reporter);
   std::map<vtkVolume*, std::string> LastNotDrawnWarning; // keys only compared
 };
 

@@ -7,8 +7,6 @@
 #include "vtkParticipatingMediumMapper.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPropCollection.h"
-#include "vtkRenderer.h"
 #include "vtkTyndallProjection.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
@@ -32,24 +30,6 @@ const char* NotDrawnBlendMode(int mode)
     default:
       return "unknown";
   }
-}
-
-// Whether a visible prop of `renderer` other than a volume has translucent
-// polygonal geometry (what VTK's depth peeling peels).
-bool HasTranslucentGeometry(vtkRenderer* renderer)
-{
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
-      prop->HasTranslucentPolygonalGeometry())
-    {
-      return true;
-    }
-  }
-  return false;
 }
 
 // The number of components of the scalars `mapper` draws with `property`
@@ -110,8 +90,7 @@ bool vtkTyndallVolumeSettings::HasGradientOpacity(vtkVolumeProperty* property, i
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
-  vtkRenderer* renderer, vtkVolume* volume)
+std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
 {
   std::vector<std::string> notDrawn;
   vtkVolumeProperty* property = volume ? volume->GetProperty() : nullptr;
@@ -166,12 +145,6 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(
     {
       notDrawn.push_back("the labels' gradient opacity (their scalar opacity is drawn)");
     }
-  }
-  if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes() &&
-    HasTranslucentGeometry(renderer))
-  {
-    notDrawn.push_back("depth peeling for volumes with translucent geometry (not supported: the "
-                       "volume and the geometry can be drawn wrong)");
   }
   if (medium)
   {

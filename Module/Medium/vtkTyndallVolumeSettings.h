@@ -4,7 +4,7 @@
  *
  * An application that swaps vtkGPUVolumeRayCastMapper for a Tyndall mapper
  * must not get a different picture without a word. NotDrawn() names each
- * setting of the volume's mapper, its property and the renderer that VTK
+ * setting of the volume's mapper and its property that VTK
  * draws and Tyndall does not yet (Documentation/mapper.md, "Compatibility
  * with VTK's mapper"), with what Tyndall draws instead:
  * - the slice blend mode without a vtkPlane as the property's slice
@@ -18,8 +18,6 @@
  *   function, isosurfaces, procedural detail or several components (the
  *   volume is drawn without its labels), and the labels' gradient opacity
  *   (their scalar opacity is drawn);
- * - the renderer's depth peeling for volumes, with translucent geometry in
- *   the renderer (not supported);
  * and, for a plain vtkVolumeProperty (VTK's meaning; a
  * vtkParticipatingMediumProperty documents these as ignored, Tyndall's
  * meaning):
@@ -48,7 +46,6 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
-class vtkRenderer;
 class vtkVolume;
 class vtkVolumeProperty;
 
@@ -56,11 +53,11 @@ class TYNDALLMEDIUM_EXPORT vtkTyndallVolumeSettings
 {
 public:
   /**
-   * The settings of `volume` (its mapper and property) and `renderer` (may
-   * be null) that Tyndall does not draw, one text each; empty when there
-   * are none or the volume has no property.
+   * The settings of `volume` (its mapper and property) that Tyndall does
+   * not draw, one text each; empty when there are none or the volume has no
+   * property.
    */
-  static std::vector<std::string> NotDrawn(vtkRenderer* renderer, vtkVolume* volume);
+  static std::vector<std::string> NotDrawn(vtkVolume* volume);
 
   /**
    * Whether a component's gradient opacity (the first's by default)

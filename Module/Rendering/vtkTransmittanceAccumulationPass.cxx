@@ -145,8 +145,9 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame,
   const int viewport[4], int width, int height, int passes, const DrawFunction& draw,
-  vtkObject* reporter, int historyFrames, bool chromatic)
+  vtkObject* reporter, int historyFrames, bool chromatic, bool composite)
 {
+  this->Result = nullptr;
   if (chromatic && historyFrames >= 0)
   {
     vtkErrorWithObjectMacro(
@@ -161,11 +162,17 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   {
     vtkTransmittanceOffscreenDraw offscreen(state, this->Framebuffer, width, height);
     vtkOpenGLState::ScopedglClearColor savedClear(state);
-    // The state before the first pass: no radiance, transmittance 1.
-    int targets = this->Attach(1, chromatic);
+    // The state before the first pass, in both images: no radiance,
+    // transmittance 1 (what the pixels of a one-pass draw whose rays miss
+    // keep: they discard).
     state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    this->Framebuffer->RemoveColorAttachments(targets);
+    int targets = 0;
+    for (int k = 0; k < 2; ++k)
+    {
+      targets = this->Attach(k, chromatic);
+      state->vtkglClear(GL_COLOR_BUFFER_BIT);
+      this->Framebuffer->RemoveColorAttachments(targets);
+    }
     for (int pass = 0; pass < passes; ++pass)
     {
       targets = this->Attach(pass % 2, chromatic);
@@ -196,11 +203,13 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   }
   const bool upscaled = width != viewport[2] || height != viewport[3];
   vtkTextureObject* result = this->Images[(passes - 1) % 2];
+  this->Result = result;
   if (historyFrames < 0)
   {
     this->HistoryFrames = 0;
-    return this->Composite(frame, result,
-      chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr, upscaled, reporter);
+    return !composite ||
+      this->Composite(frame, result,
+        chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr, upscaled, reporter);
   }
   return this->AddToHistory(frame, result, width, height, historyFrames, reporter) &&
     this->Composite(frame, this->History, nullptr, upscaled, reporter);
@@ -261,6 +270,7 @@ void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* windo
     *image = nullptr;
   }
   this->HistoryFrames = 0;
+  this->Result = nullptr;
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(window);

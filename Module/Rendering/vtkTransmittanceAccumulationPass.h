@@ -71,13 +71,20 @@ public:
    * `historyFrames` >= 0, composites the mean of the result and the
    * `historyFrames` results before it instead (a history of another size
    * restarts at this frame). `chromatic`: the passes draw a second image of
-   * per-channel opacity (then `historyFrames` must be negative). False (with
-   * an error through `reporter`) when the images or their framebuffer
-   * cannot be made.
+   * per-channel opacity (then `historyFrames` must be negative). With
+   * `composite` false (and `historyFrames` negative) the result is kept in
+   * GetResult() and not composited. False (with an error through
+   * `reporter`) when the images or their framebuffer cannot be made.
    */
   bool Render(const vtkTransmittanceFrame& frame, const int viewport[4], int width, int height,
     int passes, const DrawFunction& draw, vtkObject* reporter, int historyFrames = -1,
-    bool chromatic = false);
+    bool chromatic = false, bool composite = true);
+
+  /**
+   * The last Render()'s image (premultiplied radiance, alpha the opacity);
+   * valid until the next Render().
+   */
+  vtkTextureObject* GetResult() const { return this->Result; }
 
   /// Frames in the running average after the last Render() (0: no history kept).
   int GetHistoryFrames() const { return this->HistoryFrames; }
@@ -111,6 +118,7 @@ private:
   vtkSmartPointer<vtkTextureObject> Opacities[2]; // beside Images, with a coloured extinction
   vtkSmartPointer<vtkTextureObject> History;
   int HistoryFrames = 0;
+  vtkTextureObject* Result = nullptr; // one of Images
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTransmittanceShaderQuad Quad;
 };

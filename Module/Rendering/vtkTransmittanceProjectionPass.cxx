@@ -2,6 +2,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -10,6 +11,7 @@
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallProjection.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +24,16 @@ vtkTransmittanceProjectionPass::~vtkTransmittanceProjectionPass() = default;
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceProjectionPass::Render(
-  const vtkTransmittanceFrame& frame, vtkTextureObject* depth, vtkObject* reporter)
+  const vtkTransmittanceFrame& frame, vtkTextureObject* depth, vtkObject* reporter, int segment)
 {
+  const bool direct = segment < 0;
   // The medium's switches alone: no empty-space skipping (an empty block
   // still holds samples a maximum, minimum or average counts), no guests.
   vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
   variant.SkipEmpty = false;
   variant.Chromatic = false;
   variant.Projection = frame.Medium->GetProjection().GetMode();
+  variant.DepthRanges = !direct;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
       vtkTransmittanceShaderSource::PROJECTION, variant));
@@ -42,7 +46,11 @@ bool vtkTransmittanceProjectionPass::Render(
   frame.SetMediumUniforms(program);
   int viewport[4];
   frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
-  frame.SetCameraUniforms(program, depth, true, viewport, viewport[2], viewport[3]);
+  frame.SetCameraUniforms(program, depth, direct, viewport, viewport[2], viewport[3]);
+  if (!direct)
+  {
+    program->SetUniformi("depthRangeHalf", segment);
+  }
   // The mapper's SampleDistance, else VTK's automatic step (the smallest
   // world spacing: a projection needs no finer one); longer where a ray
   // across the box would take more than MaximumSteps.
@@ -66,8 +74,21 @@ bool vtkTransmittanceProjectionPass::Render(
   program->SetUniformf("stepLength", static_cast<float>(step));
   program->SetUniformi("endStep", static_cast<int>(std::ceil(frame.Diagonal / step)) + 2);
   this->SetUniforms(frame, program);
-  this->Quad.RenderOver(frame.State);
-  return true;
+  if (direct)
+  {
+    this->Quad.RenderOver(frame.State);
+    return true;
+  }
+  // One pass into an image of the viewport's size, kept for the peeling
+  // stage; cleared first: the projection discards the pixels it leaves.
+  auto draw = [this, &frame](int, vtkTextureObject*, vtkTextureObject*)
+  {
+    frame.State->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    frame.State->vtkglClear(GL_COLOR_BUFFER_BIT);
+    this->Quad.Render();
+  };
+  return this->Offscreen[segment == 1 ? 1 : 0]->Render(
+    frame, viewport, viewport[2], viewport[3], 1, draw, reporter, -1, false, false);
 }
 
 //------------------------------------------------------------------------------
@@ -97,6 +118,10 @@ void vtkTransmittanceProjectionPass::SetUniforms(
 void vtkTransmittanceProjectionPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Quad.Release(window);
+  for (vtkTransmittanceAccumulationPass* offscreen : this->Offscreen)
+  {
+    offscreen->ReleaseGraphicsResources(window);
+  }
 }
 
 //------------------------------------------------------------------------------

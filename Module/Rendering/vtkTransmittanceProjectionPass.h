@@ -22,8 +22,10 @@
 #define vtkTransmittanceProjectionPass_h
 
 #include "TyndallRenderingModule.h" // For export macro
+#include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
-#include "vtkTransmittanceShaderQuad.h" // For vtkTransmittanceShaderQuad
+#include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
+#include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
 
 class vtkTextureObject;
 class vtkTransmittanceFrame;
@@ -43,8 +45,18 @@ public:
    * Draws the frame's volume (its grid medium's projection must be
    * Enabled()) in front of the opaque geometry whose depth `depth` holds;
    * false (with an error through `reporter`) when the shader does not compile.
+   * With `segment` 0 or 1, `depth` holds a depth-peeling stage's ranges
+   * (vtkTransmittancePeelingPass) and the part `segment` names is projected
+   * into GetImage(segment) instead of over the picture.
    */
-  bool Render(const vtkTransmittanceFrame& frame, vtkTextureObject* depth, vtkObject* reporter);
+  bool Render(const vtkTransmittanceFrame& frame, vtkTextureObject* depth, vtkObject* reporter,
+    int segment = -1);
+
+  /// The image of the part `segment` the last Render() of it drew.
+  vtkTextureObject* GetImage(int segment) const
+  {
+    return this->Offscreen[segment == 1 ? 1 : 0]->GetResult();
+  }
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
@@ -62,6 +74,7 @@ private:
   void SetUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const;
 
   vtkTransmittanceShaderQuad Quad;
+  vtkNew<vtkTransmittanceAccumulationPass> Offscreen[2]; // depth peeling's parts
   double LastStepLength = 0.0;
   bool WarnedLongSteps = false;
 };

@@ -56,8 +56,14 @@ bool vtkTransmittanceRayCastPass::Render(
   const int passes = (steps + perPass - 1) / perPass;
   // A coloured extinction needs a second render target: never drawn direct.
   const bool chromatic = frame.Medium->GetParameters().GetChromatic();
-  const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic;
-  vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, !direct);
+  const bool direct =
+    !sampled && passes == 1 && reduction == 1 && !chromatic && !inputs.DepthRanges;
+  // A ray drawn in one pass into an image (a reduced one, a depth-peeling
+  // part) needs no earlier state: the shader of the direct draw, which
+  // discards the rays that miss (the image is cleared). llvmpipe draws it 3
+  // times faster than the accumulating one, which writes every pixel.
+  const bool accumulate = passes > 1 || sampled || chromatic;
+  vtkTransmittanceShaderSource::Variant variant = GetVariant(frame, inputs, accumulate);
   variant.DetailSamples = this->LastDetailSamples;
   frame.Adapter->DeclareCameraSwitches(*frame.OwnMedium, nearestPixel, variant);
   variant.DetailStepMeans = variant.DetailFilter && frame.UsesDetailStepMeans(nearestPixel);
@@ -92,6 +98,10 @@ bool vtkTransmittanceRayCastPass::Render(
   {
     program->SetUniformi("detailFrame", inputs.HistoryFrames);
   }
+  if (inputs.DepthRanges)
+  {
+    program->SetUniformi("depthRangeHalf", inputs.Segment);
+  }
   this->LastPassCount = passes;
   if (direct)
   {
@@ -100,7 +110,10 @@ bool vtkTransmittanceRayCastPass::Render(
   }
   auto draw = [&](int pass, vtkTextureObject* previous, vtkTextureObject* previousOpacity)
   {
-    program->SetUniformi("previousTexture", previous->GetTextureUnit());
+    if (accumulate)
+    {
+      program->SetUniformi("previousTexture", previous->GetTextureUnit());
+    }
     if (previousOpacity)
     {
       program->SetUniformi("previousOpacityTexture", previousOpacity->GetTextureUnit());
@@ -109,8 +122,9 @@ bool vtkTransmittanceRayCastPass::Render(
     program->SetUniformi("endStep", std::min(steps, (pass + 1) * perPass));
     this->Quad.Render();
   };
-  return this->Accumulation->Render(frame, viewport, width, height, passes, draw, reporter,
-    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic);
+  vtkTransmittanceAccumulationPass* accumulation = this->Accumulation[inputs.Segment == 1 ? 1 : 0];
+  return accumulation->Render(frame, viewport, width, height, passes, draw, reporter,
+    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic, !inputs.DepthRanges);
 }
 
 //------------------------------------------------------------------------------
@@ -148,6 +162,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
   vtkTransmittanceShaderSource::Variant variant =
     readsMaps ? frame.GetMapVariant() : frame.GetShaderVariant();
   variant.Accumulate = accumulate;
+  variant.DepthRanges = inputs.DepthRanges;
   variant.LightCache = inputs.Cache != nullptr;
   variant.Occlusion = inputs.Occlusion != nullptr;
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
@@ -328,7 +343,10 @@ void vtkTransmittanceRayCastPass::SetLightUniforms(
 void vtkTransmittanceRayCastPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Quad.Release(window);
-  this->Accumulation->ReleaseGraphicsResources(window);
+  for (vtkTransmittanceAccumulationPass* accumulation : this->Accumulation)
+  {
+    accumulation->ReleaseGraphicsResources(window);
+  }
 }
 
 //------------------------------------------------------------------------------

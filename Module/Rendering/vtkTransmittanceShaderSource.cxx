@@ -19,6 +19,8 @@
 #include "vtkTransmittanceLightMapFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
+#include "vtkTransmittancePeelCompositeFS.h"
+#include "vtkTransmittancePeelRangesFS.h"
 #include "vtkTransmittanceProjectionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
 #include "vtkTransmittanceSplatFS.h"
@@ -69,6 +71,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("EMISSION_ARRAY", variant.EmissionArray ? 1 : 0);
   define("PARTICLE_COLORS", variant.ParticleColors ? 1 : 0);
   define("ACCUMULATE", variant.Accumulate ? 1 : 0);
+  define("DEPTH_RANGES", variant.DepthRanges ? 1 : 0);
   define("BRUTE_FORCE_LIGHTS", variant.BruteForceLights ? 1 : 0);
   define("LIGHT_CACHE", variant.LightCache ? 1 : 0);
   define("OCTAVES", variant.Octaves);
@@ -145,6 +148,16 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetPeelingConstants()
+{
+  std::ostringstream os;
+  os << "#define TYNDALL_PEEL_INITIALIZING " << PeelInitializing << "\n"
+     << "#define TYNDALL_PEEL_PEELING " << PeelPeeling << "\n"
+     << "#define TYNDALL_PEEL_BLENDING " << PeelBlending << "\n";
+  return os.str();
+}
+
+//------------------------------------------------------------------------------
 std::string vtkTransmittanceShaderSource::GetLightMapLookup(const Variant& variant)
 {
   return GetConstants(variant) + vtkTransmittanceLightMapFS;
@@ -173,6 +186,13 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
   if (pass == COMPOSITE)
   {
     return vtkTransmittanceCompositeFS;
+  }
+  if (pass == PEEL_RANGES || pass == PEEL_COMPOSITE)
+  {
+    std::string source =
+      pass == PEEL_RANGES ? vtkTransmittancePeelRangesFS : vtkTransmittancePeelCompositeFS;
+    vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetPeelingConstants());
+    return source;
   }
   std::string source = vtkTransmittanceCommonFS;
   switch (pass)

@@ -91,9 +91,11 @@ public:
     MAP_BUILD,
     OCCLUSION,
     RAY_CAST,
-    LIGHT_CACHE, // with the map variant of the camera rays' (MapCoefficients ...)
-    COMPOSITE,   // alone: it shares nothing with the others
-    PROJECTION   // VTK's projection blend modes (Variant::Projection)
+    LIGHT_CACHE,   // with the map variant of the camera rays' (MapCoefficients ...)
+    COMPOSITE,     // alone: it shares nothing with the others
+    PROJECTION,    // VTK's projection blend modes (Variant::Projection)
+    PEEL_RANGES,   // the depth ranges of a depth-peeling stage (vtkTransmittancePeelingPass)
+    PEEL_COMPOSITE // the ray-cast images into a depth-peeling stage's targets
   };
 
   /// The compile-time variants of the shaders.
@@ -143,6 +145,7 @@ public:
     bool EmissionArray = false;    // emission per unit length from a separate array
     bool ParticleColors = false;   // the albedo from a coloured particle cloud's grid
     bool Accumulate = false;       // continues the rays of an earlier pass
+    bool DepthRanges = false;      // camera rays between given depths (depth peeling)
     bool BruteForceLights = false; // some light marches to the light
     bool LightCache = false;       // map lights read the transmittance cache
     int Octaves = 1;               // multiple-scattering octaves (1: single scattering)
@@ -228,6 +231,19 @@ public:
 
   /// The #define lines that replace `//TYNDALL::Constants`.
   static std::string GetConstants(const Variant& variant);
+
+  /**
+   * The stages of VTK's dual depth peeling the mapper draws in
+   * (vtkTransmittancePeelingPass::FindStage()), and their #define lines for the
+   * PEEL_RANGES and PEEL_COMPOSITE shaders.
+   */
+  enum PeelStages
+  {
+    PeelInitializing = 0, // the volume outside the translucent geometry's range
+    PeelPeeling = 1,      // one peel: a front part and a back part per pixel
+    PeelBlending = 2      // what the peels left, alpha-blended
+  };
+  static std::string GetPeelingConstants();
 
   /// What an occlusion texel holds where the light's ray meets no opaque surface.
   static constexpr float NoOccluder = 1.0e30f;

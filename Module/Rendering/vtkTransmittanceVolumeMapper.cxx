@@ -27,8 +27,10 @@
 #include "vtkTransmittanceMediumAdapters.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOcclusionPass.h"
+#include "vtkTransmittancePeelingPass.h"
 #include "vtkTransmittanceProjectionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
+#include "vtkTransmittanceScopedPeelingState.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallSceneReader.h"
@@ -182,6 +184,21 @@ public:
     }
     this->WarnedDistributedProjection = warn;
   }
+  // A coloured extinction in depth peeling: VTK's peels keep one opacity
+  // per pixel, the mean of the three channels'; said once.
+  bool WarnedChromaticPeeling = false;
+  void WarnChromaticPeeling(vtkTransmittanceVolumeMapper* self, bool peeling)
+  {
+    const bool warn = peeling && this->Frame.Medium->GetParameters().GetChromatic();
+    if (warn && !this->WarnedChromaticPeeling)
+    {
+      vtkWarningWithObjectMacro(self,
+        << "A coloured extinction (ExtinctionColor) in depth peeling for volumes: VTK's peels "
+           "keep one opacity per pixel, so the translucent geometry behind the medium is dimmed "
+           "by the mean of its three channels' transmittance, not by each channel's.");
+    }
+    this->WarnedChromaticPeeling = warn;
+  }
   // A light that falls back to marching (a positional light inside the
   // box) sees this process's piece alone: said once.
   bool WarnedDistributedLight = false;
@@ -277,9 +294,44 @@ public:
   void ChooseDetail(vtkRenderer* renderer, vtkVolume* volume, bool adjust, int maximum,
     vtkTransmittanceRayCastPass::Inputs& inputs) const;
   bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter);
+  // The camera rays' cost per full-size pixel of `seconds` for a frame at
+  // the last Reduction and StepScale.
+  double CostPerPixel(double seconds) const;
+
+  /// A stage of VTK's depth peeling the volume is drawn in (vtkTransmittancePeelingPass).
+  struct Peel
+  {
+    vtkOpenGLRenderPass* Pass = nullptr;
+    int Stage = vtkTransmittancePeelingPass::NoStage;
+    vtkTextureObject* Images[2] = { nullptr, nullptr }; // the front and back parts' ray casts
+  };
+  vtkNew<vtkTransmittancePeelingPass> Peeling;
+  // A frame's stages share what its first stage (PeelInitializing) made:
+  // the opaque occluders' depth from the lights (whether there were any),
+  // and the camera rays' time, summed over the stages (the frame's cost, from
+  // which the next frame's first stage chooses the interactive reduction all
+  // its stages draw at).
+  bool PeelOccluders = false;
+  double PeelRayTime = 0.0;
+  void StartPeelFrame(const Peel* peel);
+
+  /**
+   * Render()'s work: the frame, the maps and the camera rays; in a
+   * depth-peeling stage (`peel` not null) the rays of its parts, into
+   * peel->Images. Sets Complete.
+   */
+  void RenderVolume(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume,
+    vtkOpenGLRenderWindow* window, Peel* peel);
+  /// Where the camera rays end: the opaque depth, or a peeling stage's ranges.
+  bool CaptureDepth(vtkTransmittanceVolumeMapper* self, vtkVolume* volume, const Peel* peel,
+    vtkTransmittanceRayCastPass::Inputs& inputs);
+  /// The camera rays of a peeling stage's parts, each into its own image.
+  bool CastPeelRays(
+    vtkTransmittanceRayCastPass::Inputs inputs, Peel& peel, bool timed, vtkObject* reporter);
   // The camera rays of VTK's projection blend modes (vtkTyndallProjection):
-  // no light, map or occluder; timed as CastRays() times its rays.
-  bool Project(vtkTransmittanceVolumeMapper* self, bool timed);
+  // no light, map or occluder; timed as CastRays() times its rays (not in
+  // a depth-peeling stage: `peel`).
+  bool Project(vtkTransmittanceVolumeMapper* self, vtkVolume* volume, bool timed, Peel* peel);
 
   /**
    * Reads the scene, uploads what changed and fills Frame for (renderer,
@@ -448,31 +500,56 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::CastRays(
     glFinish();
     timer->StopTimer();
     this->RayCastTime = timer->GetElapsedTime();
-    // The cost per full-size pixel: the reduced image has 1 / r^2 of them.
-    int size[2], origin[2];
-    this->Frame.Renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-    const double pixels = std::max(1.0, double(size[0]) * size[1]);
-    this->SecondsPerPixel = this->RayCastTime * inputs.StepScale /
-      (pixels / (double(inputs.Reduction) * inputs.Reduction));
+    this->SecondsPerPixel = this->CostPerPixel(this->RayCastTime);
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
+double vtkTransmittanceVolumeMapper::vtkInternals::CostPerPixel(double seconds) const
+{
+  // The cost per full-size pixel: the reduced image has 1 / r^2 of them.
+  int size[2], origin[2];
+  this->Frame.Renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  const double pixels = std::max(1.0, double(size[0]) * size[1]);
+  return seconds * this->StepScale / (pixels / (double(this->Reduction) * this->Reduction));
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceVolumeMapper::vtkInternals::Project(
-  vtkTransmittanceVolumeMapper* self, bool timed)
+  vtkTransmittanceVolumeMapper* self, vtkVolume* volume, bool timed, Peel* peel)
 {
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  if (!this->Depth->Render(this->Frame, self) ||
-    !this->Projection->Render(this->Frame, this->Depth->GetTexture(), self))
+  vtkTransmittanceRayCastPass::Inputs inputs;
+  if (!this->CaptureDepth(self, volume, peel, inputs))
   {
     return false;
+  }
+  if (!peel)
+  {
+    if (!this->Projection->Render(this->Frame, inputs.Depth, self))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    // A stage projects each of its parts, as VTK's ray caster does.
+    const int parts = peel->Stage == vtkTransmittanceShaderSource::PeelBlending ? 1 : 2;
+    for (int part = 0; part < parts; ++part)
+    {
+      if (!this->Projection->Render(this->Frame, inputs.Depth, self, part))
+      {
+        return false;
+      }
+      peel->Images[part] = this->Projection->GetImage(part);
+    }
   }
   this->Reduction = 1;
   this->StepScale = 1.0;
   this->RayCastTime = 0.0;
-  if (timed)
+  if (timed && !peel)
   {
     glFinish();
     timer->StopTimer();
@@ -552,6 +629,7 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.Depth->ReleaseGraphicsResources(window);
   in.RayCast->ReleaseGraphicsResources(window);
   in.Projection->ReleaseGraphicsResources(window);
+  in.Peeling->ReleaseGraphicsResources(window);
   in.Window = nullptr;
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -702,60 +780,172 @@ void vtkTransmittanceVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volu
     vtkErrorMacro(<< "vtkTransmittanceVolumeMapper needs an OpenGL render window.");
     return;
   }
-  in.Complete = false;
-  in.Lit = false;
-  in.Projected = false;
-  if (!in.PrepareFrame(this, renderer, volume, window))
+  // Translucent geometry with depth peeling for volumes: VTK draws the
+  // volume in its peeling pass, a stage at a time (vtkTransmittancePeelingPass).
+  vtkInternals::Peel peel;
+  peel.Stage = vtkTransmittancePeelingPass::FindStage(volume, this, peel.Pass);
+  if (!peel.Pass)
+  {
+    in.RenderVolume(this, renderer, volume, window, nullptr);
+    return;
+  }
+  if (peel.Stage == vtkTransmittancePeelingPass::UnknownStage)
+  {
+    in.Complete = false;
+    vtkErrorMacro(<< "VTK's depth peeling for volumes is in a stage Tyndall does not know (not "
+                     "VTK 9.1's): the volume is not drawn. Turn the renderer's "
+                     "UseDepthPeelingForVolumes off.");
+    return;
+  }
+  {
+    vtkTransmittanceScopedPeelingState defaults(window->GetState());
+    in.RenderVolume(this, renderer, volume, window, &peel);
+  }
+  if (in.Complete && peel.Images[0])
+  {
+    in.Complete = in.Peeling->Composite(in.Frame, peel.Pass, peel.Stage, peel.Images[0],
+      peel.Images[1], this, volume, in.Frame.Integrator.OpacityCoversRadiance, this);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::vtkInternals::RenderVolume(vtkTransmittanceVolumeMapper* self,
+  vtkRenderer* renderer, vtkVolume* volume, vtkOpenGLRenderWindow* window, Peel* peel)
+{
+  this->Complete = false;
+  this->Lit = false;
+  this->Projected = false;
+  if (!this->PrepareFrame(self, renderer, volume, window))
   {
     return;
   }
-  vtkTransmittanceScopedTextures medium = in.BindMedium();
-  if (in.Frame.Medium->GetProjection().Enabled())
+  vtkTransmittanceScopedTextures medium = this->BindMedium();
+  if (this->Frame.Medium->GetProjection().Enabled())
   {
-    in.Lit = true; // no light: a projection is not lit
-    in.Projected = true;
-    in.StillKey.clear();
-    in.WarnDistributedProjection(this);
-    in.Complete = in.Project(this, this->InteractiveAdjustment);
+    this->Lit = true; // no light: a projection is not lit
+    this->Projected = true;
+    this->StillKey.clear();
+    this->WarnDistributedProjection(self);
+    this->Complete = this->Project(self, volume, self->InteractiveAdjustment, peel);
     return;
   }
+  this->StartPeelFrame(peel);
   vtkTransmittanceRayCastPass::Inputs inputs;
-  if (in.Occlusion->Render(in.Frame, this))
+  const bool laterStage = peel && peel->Stage != vtkTransmittanceShaderSource::PeelInitializing;
+  const bool occluders =
+    laterStage ? this->PeelOccluders : this->Occlusion->Render(this->Frame, self);
+  this->PeelOccluders = peel && occluders;
+  if (occluders)
   {
-    inputs.Occlusion = in.Occlusion->GetTexture();
-    inputs.OcclusionSlices = in.Occlusion->GetSlices();
+    inputs.Occlusion = this->Occlusion->GetTexture();
+    inputs.OcclusionSlices = this->Occlusion->GetSlices();
   }
-  vtkTransmittanceMapPass* maps = in.UpdateMaps(this);
-  in.Lit = maps != nullptr;
-  if (maps && in.Scene.GetDrawnBy())
+  vtkTransmittanceMapPass* maps = this->UpdateMaps(self);
+  this->Lit = maps != nullptr;
+  if (maps && this->Scene.GetDrawnBy())
   {
     return; // drawn by the first volume of its camera group, maps shared
   }
-  if (!maps || !in.Depth->Render(in.Frame, this))
+  if (!maps || !this->CaptureDepth(self, volume, peel, inputs))
   {
     return;
   }
-  inputs.Depth = in.Depth->GetTexture();
-  if (in.Frame.NeedsMaps())
+  if (this->Frame.NeedsMaps())
   {
     inputs.Maps = maps->GetTexture();
     inputs.MapSlices = maps->GetSlices();
-    if (in.Cache->Render(in.Frame, inputs.Maps, inputs.MapSlices, maps->GetBuildSerial(), this))
+    if (this->Cache->Render(
+          this->Frame, inputs.Maps, inputs.MapSlices, maps->GetBuildSerial(), self))
     {
-      inputs.Cache = in.Cache->GetTexture();
-      std::copy(in.Cache->GetSize(), in.Cache->GetSize() + 3, inputs.CacheSize);
-      inputs.CacheLights = in.Cache->GetLights();
+      inputs.Cache = this->Cache->GetTexture();
+      std::copy(this->Cache->GetSize(), this->Cache->GetSize() + 3, inputs.CacheSize);
+      inputs.CacheLights = this->Cache->GetLights();
     }
   }
-  in.ChooseDetail(
-    renderer, volume, this->InteractiveAdjustment, this->MaximumImageReduction, inputs);
-  in.UpdateStillFrame(this, renderer, volume, inputs);
-  in.Complete = in.CastRays(inputs, this->InteractiveAdjustment, this);
-  in.StillKey.clear();
-  if (in.Complete && in.RayCast->GetLastDetailSamples() > 0)
+  this->ChooseDetail(
+    renderer, volume, self->InteractiveAdjustment, self->MaximumImageReduction, inputs);
+  this->WarnChromaticPeeling(self, peel != nullptr);
+  if (peel)
   {
-    in.StillKey = in.StillFrameKey(this, renderer, volume, inputs);
+    this->StillKey.clear();
+    this->Complete = this->CastPeelRays(inputs, *peel, self->InteractiveAdjustment, self);
+    return;
   }
+  this->UpdateStillFrame(self, renderer, volume, inputs);
+  this->Complete = this->CastRays(inputs, self->InteractiveAdjustment, self);
+  this->StillKey.clear();
+  if (this->Complete && this->RayCast->GetLastDetailSamples() > 0)
+  {
+    this->StillKey = this->StillFrameKey(self, renderer, volume, inputs);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::CaptureDepth(vtkTransmittanceVolumeMapper* self,
+  vtkVolume* volume, const Peel* peel, vtkTransmittanceRayCastPass::Inputs& inputs)
+{
+  if (peel)
+  {
+    // The stage's depth ranges stand for the opaque depth.
+    if (!this->Peeling->RenderRanges(this->Frame, peel->Pass, peel->Stage, self, volume, self))
+    {
+      return false;
+    }
+    inputs.Depth = this->Peeling->GetRanges();
+    inputs.DepthRanges = true;
+    return true;
+  }
+  if (!this->Depth->Render(this->Frame, self))
+  {
+    return false;
+  }
+  inputs.Depth = this->Depth->GetTexture();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::CastPeelRays(
+  vtkTransmittanceRayCastPass::Inputs inputs, Peel& peel, bool timed, vtkObject* reporter)
+{
+  // A stage draws its parts once: no still-frame history (the parts differ;
+  // detail is marched, not sampled); timed into the frame's sum.
+  inputs.DetailSamples = 0;
+  inputs.HistoryFrames = 0;
+  const double perPixel = this->SecondsPerPixel; // the frame's, from its first stage
+  const int parts = peel.Stage == vtkTransmittanceShaderSource::PeelBlending ? 1 : 2;
+  for (int part = 0; part < parts; ++part)
+  {
+    inputs.Segment = part;
+    if (!this->CastRays(inputs, timed, reporter))
+    {
+      return false;
+    }
+    this->PeelRayTime += this->RayCastTime;
+    peel.Images[part] = this->RayCast->GetImage(part);
+  }
+  this->SecondsPerPixel = perPixel;
+  this->RayCastTime = this->PeelRayTime; // the frame's so far
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::vtkInternals::StartPeelFrame(const Peel* peel)
+{
+  if (!peel)
+  {
+    this->PeelRayTime = 0.0;
+    return;
+  }
+  if (peel->Stage != vtkTransmittanceShaderSource::PeelInitializing)
+  {
+    return;
+  }
+  // A new frame: the last one's stages, summed, are its cost.
+  if (this->PeelRayTime > 0.0)
+  {
+    this->SecondsPerPixel = this->CostPerPixel(this->PeelRayTime);
+  }
+  this->PeelRayTime = 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -322,7 +322,9 @@ public:
    * ray-cast pass's budget (GetLastDetailSamplesPerPixel()). No effect
    * without detail, and none with a coloured extinction
    * (vtkParticipatingMediumProperty::ExtinctionColor: the free flights
-   * follow one transmittance), which marches.
+   * follow one transmittance), nor in VTK's depth peeling for volumes (a
+   * frame draws the rays in parts, which one history cannot average), which
+   * march.
    */
   vtkSetClampMacro(DetailSamplesPerPixel, int, 0, 64);
   vtkGetMacro(DetailSamplesPerPixel, int);

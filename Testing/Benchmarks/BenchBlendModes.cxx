@@ -10,13 +10,19 @@
 // window so that both see the same load), their ratio, and the PSNR between
 // their pictures. Prints figures; it is not a test.
 //
-//   BenchBlendModes [--voxels N] [--size N] [--frames N] [--quick]
+//   BenchBlendModes [--voxels N] [--size N] [--frames N] [--quick] [--peeling]
+//
+// --peeling: two translucent spheres (one through the volume, one in front
+// of it) with the renderer's depth peeling for volumes, so that both mappers
+// draw the volume inside VTK's dual depth peeling (vtkTransmittancePeelingPass);
+// run it beside a run without to compare a peeled frame with an unpeeled one.
 //
 // The volume is VTK's wavelet (vtkRTAnalyticSource, floats) over N^3 points
 // (default 256), seen at an angle in an N x N window (--size, default 512),
 // each mapper at its defaults (VTK's automatic sample distance; Tyndall's
 // half voxel, jitter on). --quick: 32^3, 64^2, 1 frame (ctest runs it: every
 // mode renders, never a timing).
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
@@ -24,9 +30,12 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkTimerLog.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkVolume.h"
@@ -59,11 +68,34 @@ double FrameTime(vtkRenderWindow* window)
   timer->StopTimer();
   return timer->GetElapsedTime();
 }
+
+// A translucent sphere at `center` (a fraction of the half-width `h` of
+// the volume's box on each axis), drawn with depth peeling for volumes.
+void AddTranslucentSphere(vtkRenderer* renderer, double h, double x, double y, double z, double r)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(x * h, y * h, z * h);
+  sphere->SetRadius(r * h);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(48);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.3, 0.8, 0.4);
+  actor->GetProperty()->SetOpacity(0.4);
+  renderer->AddActor(actor);
+  renderer->SetUseDepthPeeling(1);
+  renderer->SetUseDepthPeelingForVolumes(true);
+  renderer->SetMaximumNumberOfPeels(4);
+  renderer->SetOcclusionRatio(0.0);
+}
 }
 
 int main(int argc, char* argv[])
 {
   int voxels = 256, size = 512, frames = 5;
+  bool peeling = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -72,6 +104,10 @@ int main(int argc, char* argv[])
       voxels = 32;
       size = 64;
       frames = 1;
+    }
+    else if (a == "--peeling")
+    {
+      peeling = true;
     }
     else if (a == "--voxels" && i + 1 < argc)
     {
@@ -87,7 +123,8 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::printf("Usage: BenchBlendModes [--voxels N] [--size N] [--frames N] [--quick]\n");
+      std::printf(
+        "Usage: BenchBlendModes [--voxels N] [--size N] [--frames N] [--quick] [--peeling]\n");
       return EXIT_FAILURE;
     }
   }
@@ -131,10 +168,16 @@ int main(int argc, char* argv[])
   renderer->GetActiveCamera()->Azimuth(30.0);
   renderer->GetActiveCamera()->Elevation(20.0);
   renderer->ResetCamera();
+  if (peeling) // after the camera: the same view as without
+  {
+    AddTranslucentSphere(renderer, h, 0.1, 0.0, 0.0, 0.5);
+    AddTranslucentSphere(renderer, h, -0.3, -0.2, 1.6, 0.35);
+  }
 
   std::printf("BenchBlendModes: wavelet %d^3 (floats), %d x %d, %d frame(s) each, mappers "
-              "alternating\n",
-    voxels, size, size, frames);
+              "alternating%s\n",
+    voxels, size, size, frames,
+    peeling ? ", translucent spheres with depth peeling for volumes" : "");
   std::printf(
     "%-22s %12s %12s %14s %8s\n", "blend mode", "VTK ms", "Tyndall ms", "Tyndall / VTK", "PSNR dB");
   const Mode modes[] = { { "composite (unshaded)", vtkVolumeMapper::COMPOSITE_BLEND, 0.2 },

@@ -27,6 +27,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperManyLights.cxx
   TestTransmittanceMapperMaps.cxx
   TestTransmittanceMapperSceneRules.cxx
+  TestTransmittanceMapperDepthPeeling.cxx
   TestTransmittanceMapReducer.cxx)
 # VTK's scenes against VTK's mapper (no baseline; -T: where their pictures go).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests

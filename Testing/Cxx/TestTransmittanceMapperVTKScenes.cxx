@@ -30,10 +30,13 @@
 // with weights, unshaded and shaded with each component's coefficients, the
 // dependent ones shaded, and vtkSmartVolumeMapper's vector modes, magnitude
 // and a component, against that mapper's GPU mode), the camera inside the
-// volume (TestGPURayCastCameraInside), and an
+// volume (TestGPURayCastCameraInside), an
 // unshaded volume under a light kit (VTK's unshaded composite ignores the
-// lights). Two scenes are Tyndall's own: isosurfaces of a
-// vtkParticipatingMediumProperty lit by single scattering under a scene
+// lights), and translucent spheres with depth peeling for volumes
+// (TestGPURayCastDepthPeeling: composite, maximum intensity, shaded,
+// clipped, and two nested spheres with one peel, whose leftover layers VTK
+// alpha-blends). Two scenes are Tyndall's
+// own: isosurfaces of a vtkParticipatingMediumProperty lit by single scattering under a scene
 // light, and three independent components of one, whose extinctions add
 // (against the CPU reference only: VTK draws them unlit). The data are made here (a box of
 // unsigned chars, VTK's wavelet); with ../shared/data present, the CT head (headsq) too, else those
@@ -270,21 +273,69 @@ std::function<vtkSmartPointer<vtkImageData>()> WaveletAs(int type, double shift,
   };
 }
 
-// An opaque sphere inside the volume (TestGPURayCastVolumePolyData): the
-// rays stop at its depth.
-void SphereInside(vtkRenderer* renderer, vtkVolume* volume)
+// A sphere of `renderer` (24 x 24 facets).
+void AddSphere(vtkRenderer* renderer, double x, double y, double z, double radius,
+  const double color[3], double opacity = 1.0)
 {
   vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(12.0);
-  sphere->SetCenter(4.0, -3.0, 2.0);
+  sphere->SetRadius(radius);
+  sphere->SetCenter(x, y, z);
   sphere->SetThetaResolution(24);
   sphere->SetPhiResolution(24);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.8, 0.3, 0.2);
+  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  actor->GetProperty()->SetOpacity(opacity);
   renderer->AddActor(actor);
+}
+
+// Depth peeling for volumes, at most `peels` peels (an occlusion ratio of 0:
+// all of them while any layer is left).
+void PeelVolumes(vtkRenderer* renderer, int peels)
+{
+  renderer->SetUseDepthPeeling(1);
+  renderer->SetUseDepthPeelingForVolumes(true);
+  renderer->SetMaximumNumberOfPeels(peels);
+  renderer->SetOcclusionRatio(0.0);
+}
+
+// An opaque sphere inside the volume (TestGPURayCastVolumePolyData): the
+// rays stop at its depth.
+void SphereInside(vtkRenderer* renderer, vtkVolume* volume)
+{
+  const double color[3] = { 0.8, 0.3, 0.2 };
+  AddSphere(renderer, 4.0, -3.0, 2.0, 12.0, color);
+  Tilted(renderer, volume);
+}
+
+// Translucent spheres around and through the volume (the wavelet's box,
+// -31..32), drawn with depth peeling for volumes
+// (TestGPURayCastDepthPeeling): one in front of the box, one in its middle,
+// one behind it, and an opaque one in the volume; the volume's rays are cut
+// at each peel.
+void TranslucentSpheres(vtkRenderer* renderer, vtkVolume* volume)
+{
+  const double yellow[3] = { 0.9, 0.8, 0.2 }, green[3] = { 0.2, 0.9, 0.3 },
+               magenta[3] = { 0.9, 0.3, 0.8 }, orange[3] = { 0.9, 0.4, 0.2 };
+  AddSphere(renderer, -10.0, -8.0, 40.0, 9.0, yellow, 0.4);
+  AddSphere(renderer, 0.0, 0.0, 0.0, 14.0, green, 0.5);
+  AddSphere(renderer, 12.0, 10.0, -42.0, 12.0, magenta, 0.6);
+  AddSphere(renderer, 10.0, -12.0, 6.0, 6.0, orange);
+  PeelVolumes(renderer, 8);
+  Tilted(renderer, volume);
+}
+
+// Two nested translucent spheres about the wavelet's middle, with one peel:
+// the peel takes the outer one, and VTK's last stage alpha-blends the inner
+// one's layers with the volume between them (most of the volume).
+void NestedSpheresOnePeel(vtkRenderer* renderer, vtkVolume* volume)
+{
+  const double blue[3] = { 0.3, 0.6, 0.9 }, amber[3] = { 0.9, 0.6, 0.3 };
+  AddSphere(renderer, 0.0, 0.0, 0.0, 30.0, blue, 0.3);
+  AddSphere(renderer, 0.0, 0.0, 0.0, 22.0, amber, 0.3);
+  PeelVolumes(renderer, 1);
   Tilted(renderer, volume);
 }
 
@@ -854,6 +905,35 @@ std::vector<Scene> Scenes()
       Blend(M::MINIMUM_INTENSITY_BLEND), Tilted, true },
     { "DataTypes-CharMaximumIntensity", WaveletAs(VTK_SIGNED_CHAR, -157.0, 1.0), Ramp,
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
+    { "Geometry-DepthPeelingComposite", MakeWavelet,
+      [](vtkVolumeProperty* p, const double r[2])
+      {
+        ColorProperty(p, r);
+        p->SetScalarOpacityUnitDistance(6.0); // the spheres inside show through
+      },
+      none, TranslucentSpheres, false },
+    { "Geometry-DepthPeelingMaximumIntensity", MakeWavelet, Ramp, Blend(M::MAXIMUM_INTENSITY_BLEND),
+      TranslucentSpheres, false },
+    { "Geometry-DepthPeelingOnePeel", MakeWavelet, ColorProperty, none, NestedSpheresOnePeel,
+      false },
+    { "Geometry-DepthPeelingOnePeelMaximumIntensity", MakeWavelet, Ramp,
+      Blend(M::MAXIMUM_INTENSITY_BLEND), NestedSpheresOnePeel, false },
+    { "Geometry-DepthPeelingShaded", MakeWavelet, ShadedProperty, none, TranslucentSpheres, false,
+      35.0, false, true },
+    { "Geometry-DepthPeelingClipped", MakeWavelet,
+      [](vtkVolumeProperty* p, const double r[2])
+      {
+        ColorProperty(p, r);
+        p->SetScalarOpacityUnitDistance(6.0);
+      },
+      [](vtkVolumeMapper* m)
+      {
+        vtkNew<vtkPlane> plane;
+        plane->SetOrigin(0.0, 0.0, 0.0);
+        plane->SetNormal(1.0, 0.3, 0.2);
+        m->AddClippingPlane(plane);
+      },
+      TranslucentSpheres, false },
     { "Geometry-SphereInsideComposite", MakeWavelet, ColorProperty, none, SphereInside, false },
     { "Geometry-SphereInsideMaximumIntensity", MakeWavelet, Ramp, Blend(M::MAXIMUM_INTENSITY_BLEND),
       SphereInside, false },

@@ -344,7 +344,7 @@ void TestGrid()
   gradient->AddPoint(5.0, 1.0);
   property->SetGradientOpacity(gradient);
   const std::string named =
-    vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(nullptr, volume));
+    vtkTyndallVolumeSettings::Describe(vtkTyndallVolumeSettings::NotDrawn(volume));
   Check(named.find("gradient opacity with several components") != std::string::npos,
     "gradient opacity with several components: named (" + named + ")");
   Check(grid.Update(volume, reporter) && !grid.GetGradientOpacity(),

@@ -17,11 +17,8 @@
 //    a function of 1 everywhere, or disabled: not read, no warning;
 // 4. two settings at once: one warning naming both; a change of the set
 //    warns again;
-// 5. depth peeling for volumes (ParaView's default) only with translucent
-//    geometry in the renderer;
-// 6. one mapper drawing two volumes of different settings: each said once,
+// 5. one mapper drawing two volumes of different settings: each said once,
 //    not every frame; a vtkMultiVolume: an error.
-#include "vtkActor.h"
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
@@ -32,9 +29,6 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
-#include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartVolumeMapper.h"
 #include "vtkTestErrorObserver.h"
@@ -224,22 +218,9 @@ int TestTyndallVolumeSettings(int, char*[])
     [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); },
     [&] { plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D); });
   mapper->SetBlendModeToComposite();
-  // Depth peeling for volumes (ParaView's default): said only with
-  // translucent geometry in the renderer.
-  scene.Renderer->UseDepthPeelingOn();
-  scene.Renderer->UseDepthPeelingForVolumesOn();
-  Check(scene.Read() == 0, "depth peeling for volumes without translucent geometry: no warning");
-  vtkNew<vtkPolyData> surface; // what it holds does not matter: the actor's opacity does
-  vtkNew<vtkPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputData(surface);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(surfaceMapper);
-  scene.Renderer->AddActor(actor);
-  Check(scene.Read() == 0, "depth peeling for volumes with opaque geometry: no warning");
-  CheckSetting(
-    scene, "depth peeling for volumes with translucent geometry",
-    [&] { actor->GetProperty()->SetOpacity(0.5); },
-    [&] { scene.Renderer->UseDepthPeelingForVolumesOff(); });
+  // Depth peeling for volumes is drawn (vtkTransmittancePeelingPass;
+  // TestTransmittanceMapperDepthPeeling): NotDrawn() does not read the
+  // renderer.
 
   // Two at once: one warning naming both; a change of the set warns again.
   mapper->SetBlendModeToMaximumIntensity();

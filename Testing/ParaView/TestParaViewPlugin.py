@@ -14,7 +14,9 @@ tyndall_paraview_scene.py, and checks
 5. a vector array coloured by its magnitude and by a component: the Tyndall
    representation (emission-absorption) draws ParaView's own Volume
    representation's picture; ParaView's Blend Mode and Isosurfaces reach
-   the mapper.
+   the mapper;
+6. a translucent sphere in that scene, with ParaView's depth peeling for
+   volumes: the Tyndall representation against ParaView's own Volume.
 
 Arguments: the plugin (Tyndall.so) and an output folder. Skips (exit 125)
 without ../shared/data/vdb/smoke.vdb.
@@ -182,6 +184,31 @@ back, _ = screenshot(view, "plugin-composite-again.png")
 value = scene.psnr(surfaces, composite)
 check(value < 30.0 and scene.psnr(back, composite) == float("inf"),
       "Blend Mode Isosurface reaches the mapper: %.1f dB from the composite picture" % value)
+
+# 6. Translucent geometry with depth peeling for volumes (ParaView's
+# DepthPeelingForVolumes, on by default): the Tyndall representation is
+# drawn between the peels as ParaView's own Volume is (vtkTransmittancePeelingPass).
+view.DepthPeeling = 1
+view.DepthPeelingForVolumes = 1
+sphere = simple.Sphere(Center=[4.0, 2.0, 10.0], Radius=9.0, ThetaResolution=32, PhiResolution=32)
+sphere_display = simple.Show(sphere, view)
+sphere_display.Opacity = 0.5
+sphere_display.DiffuseColor = [0.3, 0.9, 0.4]
+simple.ColorBy(display, ("POINTS", "vec", "Magnitude"))
+display.RescaleTransferFunctionToDataRange(False, True)
+del messages[:]
+peeled = {}
+for representation in ("Volume", "Tyndall Volume"):
+    display.Representation = representation
+    peeled[representation], _ = screenshot(
+        view, "plugin-peeling-%s.png" % representation.replace(" ", ""))
+value = scene.psnr(peeled["Tyndall Volume"], peeled["Volume"])
+check(value >= 35.0, "translucent geometry, depth peeling for volumes: Tyndall against "
+      "ParaView's Volume %.1f dB" % value)
+check(scene.psnr(peeled["Tyndall Volume"], drawn["Tyndall Volume"]) < 30.0,
+      "the translucent sphere is in the picture")
+tyndall_messages = [m for m in messages if "Tyndall" in m]
+check(not tyndall_messages, "no warning from Tyndall with depth peeling %s" % tyndall_messages[:1])
 
 if failures:
     print("%d checks failed" % len(failures))
