@@ -26,8 +26,13 @@
  * medium's scattering, shadowed like it (vtkTyndallShading: its surfaces
  * catch highlights; Ambient is not read, the medium's AmbientIntensity
  * is). Several components are read as vtkTyndallComponents reads them
- * (independent ones' extinctions add). Gradient opacity and the
- * interpolation type are ignored: Tyndall interpolates the scalars
+ * (independent ones' extinctions add). The classification is VTK's:
+ * gradient opacity and a 2-D transfer function (TF_2D, over the scalar and
+ * its gradient magnitude: ParaView's Use Transfer 2D) give the extinction
+ * and the albedo as they give a plain property's opacity and colour
+ * (vtkTyndallGridMedium; not with procedural detail, which multiplies the
+ * 1-D extinction, nor where vtkTyndallVolumeSettings names them). The
+ * interpolation type is ignored: Tyndall interpolates the scalars
  * trilinearly and lights the medium by scattering. A plain
  * vtkVolumeProperty can be used too, with VTK's meaning: the settings below
  * have their defaults, except that with Shade off (VTK's default) it is

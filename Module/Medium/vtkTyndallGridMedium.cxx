@@ -718,10 +718,12 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
         property->GetScalarOpacityUnitDistance(c) });
     identify(extinction, property->GetScalarOpacity(components.TableFunction(t)));
   }
-  // A plain property's gradient opacity multiplies the extinction (not in a
-  // projection, which reads the opacity alone, nor for isosurfaces, nor for
-  // several components: vtkTyndallVolumeSettings names it).
-  vtkPiecewiseFunction* gradientOpacity = !medium && !this->Projection.Enabled() &&
+  // Gradient opacity multiplies the extinction (not in a projection, which
+  // reads the opacity alone, nor for isosurfaces, nor for several
+  // components, nor with procedural detail, which multiplies the 1-D
+  // extinction: vtkTyndallVolumeSettings names them).
+  const bool detail = medium && medium->GetDetailNoise();
+  vtkPiecewiseFunction* gradientOpacity = !detail && !this->Projection.Enabled() &&
       !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() && !components.Enabled() &&
       vtkTyndallVolumeSettings::HasGradientOpacity(property)
     ? property->GetGradientOpacity(0)
@@ -732,16 +734,16 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     // The change per average voxel depends on the spacings' ratios.
     extinction.insert(extinction.end(), this->GradientToVoxel, this->GradientToVoxel + 3);
   }
-  // A plain property's 2-D transfer function (TF_2D) replaces the 1-D ones
-  // for the medium (not in a projection nor for isosurfaces, which read the
-  // 1-D functions, as named by vtkTyndallVolumeSettings); its opacity is per
-  // VTK's automatic step, the smallest spacing.
-  vtkImageData* transfer2D = !medium && !this->Projection.Enabled() &&
+  // A 2-D transfer function (TF_2D) replaces the 1-D ones for the medium
+  // (not in a projection, for isosurfaces or with procedural detail, which
+  // read the 1-D functions, as named by vtkTyndallVolumeSettings); its
+  // opacity is per VTK's automatic step, the smallest spacing.
+  vtkImageData* transfer2D = !detail && !this->Projection.Enabled() &&
       !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() &&
       property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D
     ? property->GetTransferFunction2D(0)
     : nullptr;
-  if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D && !medium &&
+  if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D && !detail &&
     !this->Projection.Enabled() && !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() &&
     !transfer2D)
   {
@@ -1325,7 +1327,7 @@ bool vtkTyndallGridMedium::UpdateComponents(vtkVolume* volume, vtkObject* report
   {
     what = "the isosurface blend mode";
   }
-  else if (!medium && property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
+  else if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {
     what = "a 2-D transfer function (TF_2D)";
   }

@@ -146,16 +146,17 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
       notDrawn.push_back("the labels' gradient opacity (their scalar opacity is drawn)");
     }
   }
-  if (medium)
-  {
-    return notDrawn; // Tyndall's meaning: VTK's classification settings are documented as ignored
-  }
-  // Shading is drawn but in a projection (vtkTyndallShading).
-  if (property->GetShade(0) && projection.Enabled())
+  // Shading is drawn but in a projection (vtkTyndallShading); a medium's
+  // Shade is its own surface term, documented with its meaning.
+  if (!medium && property->GetShade(0) && projection.Enabled())
   {
     notDrawn.push_back(std::string("gradient shading in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)");
   }
+  // The classification (gradient opacity, 2-D transfer functions) is VTK's
+  // for both kinds of property (vtkTyndallGridMedium), but where named here.
+  const bool detail = medium && medium->GetDetailNoise();
+  const bool isosurfaces = mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
   // Gradient opacity is drawn but in a projection (vtkTyndallGridMedium).
   if (projection.Enabled() && HasGradientOpacity(property))
   {
@@ -169,20 +170,26 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
     notDrawn.push_back("gradient opacity with several components (ignored)");
   }
   // Gradient opacity is not read in the isosurface blend mode (vtkTyndallIsosurfaces).
-  if (mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND &&
-    HasGradientOpacity(property))
+  if (isosurfaces && HasGradientOpacity(property))
   {
     notDrawn.push_back("gradient opacity in the isosurface blend mode (ignored)");
   }
   // 2-D transfer functions are drawn but in a projection or for isosurfaces.
   if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D &&
-    (projection.Enabled() ||
-      (mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND)))
+    (projection.Enabled() || isosurfaces))
   {
     notDrawn.push_back(std::string("2-D transfer functions in the ") +
       (projection.Enabled() ? vtkTyndallProjection::GetModeName(projection.GetMode())
                             : "isosurface") +
       " blend mode (TF_2D: the 1-D functions are used)");
+  }
+  // Procedural detail multiplies the 1-D extinction (vtkTyndallDetailMedium).
+  if (detail && !projection.Enabled() && !isosurfaces &&
+    (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D ||
+      HasGradientOpacity(property)))
+  {
+    notDrawn.push_back("a 2-D transfer function or gradient opacity with procedural detail (the "
+                       "1-D functions are used)");
   }
   return notDrawn;
 }

@@ -276,7 +276,8 @@ int TestTyndallVolumeSettings(int, char*[])
     "a vtkMultiVolume: an error that names it");
 
   // Tyndall's own property: its Shade is documented (a surface term added to its
-  // scattering), its interpolation as ignored: neither is named.
+  // scattering), its interpolation as ignored: neither is named. Its
+  // classification (2-D functions, gradient opacity) is VTK's.
   vtkNew<vtkParticipatingMediumProperty> medium;
   medium->ShadeOn();
   medium->SetInterpolationTypeToNearest();
@@ -298,5 +299,32 @@ int TestTyndallVolumeSettings(int, char*[])
     "procedural detail with isosurfaces: named, not read");
   tyndall.Mapper->SetBlendModeToComposite();
   Check(tyndall.Read() == 0, "procedural detail in composite: no warning");
+  // Its classification is VTK's (ParaView's 2-D transfer functions): a 2-D
+  // function and gradient opacity are read, but with procedural detail,
+  // which multiplies the 1-D extinction: named there, not read.
+  medium->SetTransferFunction2D(transfer2D);
+  CheckSetting(
+    tyndall, "a 2-D transfer function or gradient opacity with procedural detail",
+    [&] { medium->SetTransferFunctionMode(vtkVolumeProperty::TF_2D); },
+    [&] { medium->SetTransferFunctionMode(vtkVolumeProperty::TF_1D); });
+  medium->SetDetailNoise(nullptr);
+  medium->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+  Check(tyndall.Read() == 0 && tyndall.Reader.GetMedium().GetTable().Has2D(),
+    "a vtkParticipatingMediumProperty's 2-D transfer function: read, no warning");
+  tyndall.Mapper->SetBlendModeToMaximumIntensity();
+  Check(tyndall.Read("2-D transfer functions in the maximum intensity") == 1,
+    "a vtkParticipatingMediumProperty's 2-D transfer function in a projection: named");
+  tyndall.Mapper->SetBlendModeToComposite();
+  medium->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
+  gradient->RemoveAllPoints();
+  gradient->AddPoint(0.0, 0.0);
+  gradient->AddPoint(10.0, 1.0);
+  medium->SetGradientOpacity(gradient);
+  Check(tyndall.Read() == 0 && tyndall.Reader.GetMedium().GetGradientOpacity(),
+    "a vtkParticipatingMediumProperty's gradient opacity: read, no warning");
+  medium->SetDetailNoise(detail);
+  Check(
+    tyndall.Read("with procedural detail") == 1 && !tyndall.Reader.GetMedium().GetGradientOpacity(),
+    "gradient opacity with procedural detail: named, not read");
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

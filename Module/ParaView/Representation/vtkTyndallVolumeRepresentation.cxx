@@ -64,6 +64,20 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   this->Medium->SetScalarOpacity(paraview->GetScalarOpacity(0));
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
+  // ParaView's 2-D transfer function (Use Transfer 2D) over the gradient
+  // magnitude: the medium's classification, as VTK's. Over a second array
+  // (Use Gradient For Transfer 2D off) it cannot be: the 1-D functions, said.
+  const bool secondArray = this->UseTransfer2D && !this->UseGradientForTransfer2D;
+  if (secondArray && !this->WarnedSecondArray)
+  {
+    vtkWarningMacro(<< "The Tyndall Volume draws a 2-D transfer function over the gradient "
+                       "magnitude only (Use Gradient For Transfer 2D), not over a second array: "
+                       "the 1-D functions are used.");
+  }
+  this->WarnedSecondArray = secondArray;
+  this->Medium->SetTransferFunctionMode(
+    secondArray ? vtkVolumeProperty::TF_1D : paraview->GetTransferFunctionMode());
+  this->Medium->SetTransferFunction2D(paraview->GetTransferFunction2D(0));
   // ParaView's Shade and its coefficients: the medium's surface term
   // (vtkTyndallShading: added to its scattering, Tyndall's meaning).
   this->Medium->SetShade(paraview->GetShade());

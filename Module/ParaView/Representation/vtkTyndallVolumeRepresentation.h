@@ -20,7 +20,10 @@
  *   colour and opacity (vtkTyndallComponents). ParaView's Shade and its
  *   Diffuse, Specular and Specular Power reach the medium: its gradient
  *   surface term, added to its scattering (vtkTyndallShading; its ambient
- *   is the Tyndall group's Ambient).
+ *   is the Tyndall group's Ambient). ParaView's Use Transfer 2D, over the
+ *   gradient magnitude, classifies the medium as VTK's mapper does
+ *   (vtkTyndallGridMedium); over a second array it is not drawn (the 1-D
+ *   functions, with a warning).
  *
  * Everything else is ParaView's: the data delivery, the outline shown while
  * interacting on ranks without data, the array selection, the volume's
@@ -130,6 +133,7 @@ private:
 
   vtkNew<vtkTransmittanceVolumeMapper> TyndallMapper;
   vtkNew<vtkParticipatingMediumProperty> Medium;
+  bool WarnedSecondArray = false; // a 2-D transfer function over a second array, said once
 };
 
 #endif
