@@ -31,7 +31,10 @@
  * its gradient magnitude: ParaView's Use Transfer 2D) give the extinction
  * and the albedo as they give a plain property's opacity and colour
  * (vtkTyndallGridMedium; not with procedural detail, which multiplies the
- * 1-D extinction, nor where vtkTyndallVolumeSettings names them). The
+ * 1-D extinction, nor where vtkTyndallVolumeSettings names them, nor for
+ * a particle cloud; the emission colour, of the 1-D scalar, emits nothing
+ * with a 2-D function). Such a volume is drawn apart from the volumes it
+ * overlaps (not in a SceneCompositing group). The
  * interpolation type is ignored: Tyndall interpolates the scalars
  * trilinearly and lights the medium by scattering. A plain
  * vtkVolumeProperty can be used too, with VTK's meaning: the settings below
@@ -284,8 +287,9 @@ public:
    * (Documentation/rendering-model.md, "Several volumes"). Only volumes
    * with this switch on, the same lighting settings (scattering model,
    * anisotropy, light scale, ambient, octaves, emission) and no missing data,
-   * clipping, cropping, detail, coloured extinction or emission array are
-   * drawn together; the others are drawn as layers. Off: this volume is
+   * clipping, cropping, detail, coloured extinction, emission array,
+   * gradient opacity or 2-D transfer function are drawn together; the
+   * others are drawn as layers. Off: this volume is
    * always drawn by its own mapper. Read by the GPU mapper and the CPU
    * reference.
    */

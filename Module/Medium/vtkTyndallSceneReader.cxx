@@ -59,7 +59,7 @@ bool Groupable(vtkVolume* volume, const vtkTyndallGridMedium* medium)
     !property->GetDetailNoise() && !medium->HasMissingData() && !medium->GetClip() &&
     !medium->GetLabelMap().Enabled() && !medium->GetParameters().GetChromatic() &&
     !medium->GetEmissionFromArray() && !medium->GetComponents().Enabled() &&
-    !medium->GetShading().Enabled();
+    !medium->GetShading().Enabled() && !medium->GetGradientOpacity() && !medium->GetTable().Has2D();
 }
 
 // Whether the world boxes of two media overlap (their world-axis bounds, by

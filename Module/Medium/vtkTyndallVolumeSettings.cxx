@@ -183,6 +183,13 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
                             : "isosurface") +
       " blend mode (TF_2D: the 1-D functions are used)");
   }
+  // A medium's emission colour is of the 1-D scalar: none with a 2-D function.
+  if (medium && !detail && !projection.Enabled() && !isosurfaces &&
+    property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D && medium->GetEmissionColor() &&
+    medium->GetEmissionScale() > 0.0 && !medium->GetEmissionArrayName())
+  {
+    notDrawn.push_back("emission with a 2-D transfer function (not drawn)");
+  }
   // Procedural detail multiplies the 1-D extinction (vtkTyndallDetailMedium).
   if (detail && !projection.Enabled() && !isosurfaces &&
     (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D ||

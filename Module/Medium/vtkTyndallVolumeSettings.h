@@ -18,16 +18,19 @@
  *   function, isosurfaces, procedural detail or several components (the
  *   volume is drawn without its labels), and the labels' gradient opacity
  *   (their scalar opacity is drawn);
- * and, for a plain vtkVolumeProperty (VTK's meaning; a
- * vtkParticipatingMediumProperty documents these as ignored, Tyndall's
- * meaning):
+ * for a plain vtkVolumeProperty (VTK's meaning):
  * - gradient shading in a projection blend mode (unshaded; drawn in the
  *   others: vtkTyndallShading);
+ * for both kinds of property (the classification is VTK's):
  * - gradient opacity in a projection or the isosurface blend mode, or
  *   with several components (ignored; drawn in the others:
  *   vtkTyndallGridMedium::GetGradientOpacity());
  * - 2-D transfer functions in a projection or the isosurface blend mode
- *   (TF_2D: the 1-D functions are used; drawn in the others).
+ *   (TF_2D: the 1-D functions are used; drawn in the others);
+ * and for a vtkParticipatingMediumProperty:
+ * - a 2-D transfer function or gradient opacity with procedural detail
+ *   (the 1-D functions: the detail multiplies the 1-D extinction);
+ * - emission (EmissionColor) with a 2-D transfer function (not drawn).
  * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
  * vtkTyndallGridMedium::GetNearest().)
  * The first component's settings are read (several components are

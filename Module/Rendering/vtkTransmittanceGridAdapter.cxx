@@ -52,8 +52,11 @@ void vtkTransmittanceGridAdapter::DeclareColorSwitches(
   const vtkTyndallMediumParameters& parameters = grid.GetParameters();
   const bool emits = parameters.HasEmission && parameters.EmissionScale > 0.0;
   variant.EmissionArray = emits && grid.GetArrayEmission();
-  // Isosurfaces emit nothing (vtkTyndallGridMedium::IsoSample()).
-  variant.Emission = emits && !variant.EmissionArray && !grid.GetIsosurfaces().Enabled();
+  // Isosurfaces emit nothing (vtkTyndallGridMedium::IsoSample()), nor does
+  // a 2-D transfer function (the emission colour is of the 1-D scalar:
+  // vtkTyndallGridMedium::FieldSample()).
+  variant.Emission =
+    emits && !variant.EmissionArray && !grid.GetIsosurfaces().Enabled() && !grid.GetTable().Has2D();
 }
 
 //------------------------------------------------------------------------------

@@ -13,13 +13,16 @@
 // 4. a group whose first volume VTK culls is drawn by the next one;
 // 5. a volume of several components (vtkTyndallComponents) is not drawn
 //    with the others (the guests' lookup reads one component): whatever the
-//    order, it draws itself, with a warning, on both renderers.
+//    order, it draws itself, with a warning, on both renderers;
+// 6. nor is a volume with gradient opacity (a medium's classification is
+//    VTK's): whatever the order, each volume draws itself.
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -260,6 +263,37 @@ void SeveralComponents()
       "the CPU reference draws the volume of several components itself" + order);
   }
 }
+
+// 6. Gradient opacity (a medium's classification is VTK's): such a volume
+// is no guest, so it is not drawn with the others either: whatever the
+// order, each volume casts its own rays and neither is lost.
+void GradientOpacity()
+{
+  Scene scene(64, 48);
+  scene.SetMethod(M::ADAPTIVE_ETM);
+  scene.Left.Volume->SetPosition(0.0, 0.0, 0.0);
+  scene.Right.Volume->SetPosition(0.3, 0.0, 0.0);
+  vtkNew<vtkPiecewiseFunction> gradient;
+  gradient->AddPoint(0.0, 0.2);
+  gradient->AddPoint(4.0, 1.0);
+  scene.Right.Property->SetGradientOpacity(gradient);
+  for (vtkVolume* first : { scene.Right.Volume.Get(), scene.Left.Volume.Get() })
+  {
+    scene.Renderer->RemoveAllViewProps();
+    scene.Renderer->AddVolume(first);
+    scene.Renderer->AddVolume(
+      first == scene.Left.Volume.Get() ? scene.Right.Volume.Get() : scene.Left.Volume.Get());
+    scene.Gpu();
+    const std::string order = first == scene.Left.Volume.Get() ? " (drawn second)" : " (first)";
+    Check(scene.Right.Mapper->GetLastRayCastTime() > 0.0 &&
+        scene.Left.Mapper->GetLastRayCastTime() > 0.0,
+      "gradient opacity overlapping another: each volume casts its own rays" + order);
+    vtkNew<vtkSingleScatteringReference> own;
+    own->Render(scene.Renderer, scene.Right.Volume, 32, 24);
+    Check(LargestOpacity(own->GetOutput()) > 0.1,
+      "the CPU reference draws the volume with gradient opacity itself" + order);
+  }
+}
 }
 
 int TestTransmittanceMapperSceneCompositing(int, char*[])
@@ -268,5 +302,6 @@ int TestTransmittanceMapperSceneCompositing(int, char*[])
   Interpenetrating();
   CulledFirstVolume();
   SeveralComponents();
+  GradientOpacity();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

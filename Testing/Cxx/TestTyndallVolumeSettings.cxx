@@ -19,6 +19,7 @@
 //    warns again;
 // 5. one mapper drawing two volumes of different settings: each said once,
 //    not every frame; a vtkMultiVolume: an error.
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
@@ -311,6 +312,13 @@ int TestTyndallVolumeSettings(int, char*[])
   medium->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
   Check(tyndall.Read() == 0 && tyndall.Reader.GetMedium().GetTable().Has2D(),
     "a vtkParticipatingMediumProperty's 2-D transfer function: read, no warning");
+  vtkNew<vtkColorTransferFunction> glow;
+  glow->AddRGBPoint(0.0, 1.0, 0.5, 0.2);
+  medium->SetEmissionColor(glow);
+  CheckSetting(
+    tyndall, "emission with a 2-D transfer function", [&] { medium->SetEmissionScale(2.0); },
+    [&] { medium->SetEmissionScale(0.0); });
+  medium->SetEmissionColor(nullptr);
   tyndall.Mapper->SetBlendModeToMaximumIntensity();
   Check(tyndall.Read("2-D transfer functions in the maximum intensity") == 1,
     "a vtkParticipatingMediumProperty's 2-D transfer function in a projection: named");

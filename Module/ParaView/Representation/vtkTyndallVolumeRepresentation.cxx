@@ -2,12 +2,16 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVProcessWindow.h"
 #include "vtkPVRenderView.h"
 #include "vtkParticipatingMediumProperty.h"
+#include "vtkPointData.h"
 #include "vtkTransmittanceMapReducer.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallMPIMapReducer.h"
@@ -64,20 +68,6 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   this->Medium->SetScalarOpacity(paraview->GetScalarOpacity(0));
   this->Medium->SetScalarOpacityUnitDistance(paraview->GetScalarOpacityUnitDistance(0));
   this->Medium->SetInterpolationType(paraview->GetInterpolationType());
-  // ParaView's 2-D transfer function (Use Transfer 2D) over the gradient
-  // magnitude: the medium's classification, as VTK's. Over a second array
-  // (Use Gradient For Transfer 2D off) it cannot be: the 1-D functions, said.
-  const bool secondArray = this->UseTransfer2D && !this->UseGradientForTransfer2D;
-  if (secondArray && !this->WarnedSecondArray)
-  {
-    vtkWarningMacro(<< "The Tyndall Volume draws a 2-D transfer function over the gradient "
-                       "magnitude only (Use Gradient For Transfer 2D), not over a second array: "
-                       "the 1-D functions are used.");
-  }
-  this->WarnedSecondArray = secondArray;
-  this->Medium->SetTransferFunctionMode(
-    secondArray ? vtkVolumeProperty::TF_1D : paraview->GetTransferFunctionMode());
-  this->Medium->SetTransferFunction2D(paraview->GetTransferFunction2D(0));
   // ParaView's Shade and its coefficients: the medium's surface term
   // (vtkTyndallShading: added to its scattering, Tyndall's meaning).
   this->Medium->SetShade(paraview->GetShade());
@@ -112,6 +102,65 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
     medium->DeepCopy(values);
     this->Medium->Modified();
   }
+  this->UpdateTransfer2D();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::UpdateTransfer2D()
+{
+  // ParaView's 2-D transfer function (Use Transfer 2D) over the gradient
+  // magnitude: the medium's classification, as VTK's. Over a second array,
+  // or with several components drawn as such, it cannot be: the 1-D
+  // functions, said once.
+  vtkVolumeProperty* paraview = this->Property;
+  const bool secondArray =
+    this->UseTransfer2D && !this->UseGradientForTransfer2D && !this->ColorArray2Name.empty();
+  int cellFlag = 0;
+  vtkDataSet* input = this->TyndallMapper->GetInput();
+  vtkDataArray* scalars = input
+    ? vtkAbstractMapper::GetScalars(input, this->TyndallMapper->GetScalarMode(),
+        this->TyndallMapper->GetArrayAccessMode(), this->TyndallMapper->GetArrayId(),
+        this->TyndallMapper->GetArrayName(), cellFlag)
+    : nullptr;
+  const bool components = this->UseTransfer2D && scalars && scalars->GetNumberOfComponents() > 1 &&
+    this->TyndallMapper->GetVectorMode() == vtkParticipatingMediumMapper::DISABLED;
+  const bool oneD = secondArray || components;
+  if (oneD && !this->WarnedTransfer2D)
+  {
+    vtkWarningMacro(<< "The Tyndall Volume draws a 2-D transfer function over the gradient "
+                       "magnitude of one component only, not over "
+                    << (secondArray ? "a second array" : "several components")
+                    << ": the 1-D functions are used.");
+  }
+  this->WarnedTransfer2D = oneD;
+  this->Medium->SetTransferFunctionMode(
+    oneD ? vtkVolumeProperty::TF_1D : paraview->GetTransferFunctionMode());
+  // ParaView composites its boxes without premultiplying: overlapping ones
+  // can exceed 1, which VTK's mapper clamps and Tyndall refuses; a clamped
+  // copy, made again when ParaView's changes.
+  vtkImageData* source = paraview->GetTransferFunction2D(0);
+  if (!source)
+  {
+    this->Medium->SetTransferFunction2D(nullptr);
+    return;
+  }
+  if (source != this->Transfer2DSource || source->GetMTime() > this->Transfer2DCopyTime)
+  {
+    this->Transfer2DSource = source;
+    this->Transfer2D->DeepCopy(source);
+    vtkDataArray* values = this->Transfer2D->GetPointData()->GetScalars();
+    for (vtkIdType i = 0; values && i < values->GetNumberOfValues(); ++i)
+    {
+      const double v = values->GetVariantValue(i).ToDouble();
+      if (v > 1.0)
+      {
+        values->SetVariantValue(i, 1.0);
+      }
+    }
+    this->Transfer2D->Modified();
+    this->Transfer2DCopyTime = this->Transfer2D->GetMTime();
+  }
+  this->Medium->SetTransferFunction2D(this->Transfer2D);
 }
 
 //------------------------------------------------------------------------------

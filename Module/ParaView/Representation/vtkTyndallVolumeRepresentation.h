@@ -22,8 +22,9 @@
  *   surface term, added to its scattering (vtkTyndallShading; its ambient
  *   is the Tyndall group's Ambient). ParaView's Use Transfer 2D, over the
  *   gradient magnitude, classifies the medium as VTK's mapper does
- *   (vtkTyndallGridMedium); over a second array it is not drawn (the 1-D
- *   functions, with a warning).
+ *   (vtkTyndallGridMedium; its colours clamped to [0, 1], as VTK's mapper
+ *   reads them); over a second array, or with several components drawn as
+ *   such, it is not drawn (the 1-D functions, with a warning).
  *
  * Everything else is ParaView's: the data delivery, the outline shown while
  * interacting on ranks without data, the array selection, the volume's
@@ -45,6 +46,7 @@
 #include "vtkImageVolumeRepresentation.h"
 #include "vtkNew.h" // For vtkNew
 
+class vtkImageData;
 class vtkParticipatingMediumProperty;
 class vtkTransmittanceVolumeMapper;
 
@@ -133,7 +135,12 @@ private:
 
   vtkNew<vtkTransmittanceVolumeMapper> TyndallMapper;
   vtkNew<vtkParticipatingMediumProperty> Medium;
-  bool WarnedSecondArray = false; // a 2-D transfer function over a second array, said once
+  // ParaView's 2-D transfer function, clamped to [0, 1] (UpdateTransfer2D()).
+  void UpdateTransfer2D();
+  vtkNew<vtkImageData> Transfer2D;
+  vtkImageData* Transfer2DSource = nullptr; // compared only
+  vtkMTimeType Transfer2DCopyTime = 0;
+  bool WarnedTransfer2D = false; // the 1-D functions used instead, said once
 };
 
 #endif
