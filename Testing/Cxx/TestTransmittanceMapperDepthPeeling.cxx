@@ -58,6 +58,28 @@ using tyndall_test::Check;
 
 namespace
 {
+// The window's picture with the renderer's depth peeling for volumes, and
+// without it; PSNR() between them. Peeling is left on.
+struct PeeledAndUnpeeled
+{
+  vtkSmartPointer<vtkImageData> Peeled;
+  vtkSmartPointer<vtkImageData> Unpeeled;
+  double PSNR() const { return tyndall_test::PSNR(this->Peeled, this->Unpeeled); }
+};
+
+PeeledAndUnpeeled DrawBothWays(vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  PeeledAndUnpeeled pictures;
+  renderer->SetUseDepthPeelingForVolumes(true);
+  window->Render();
+  pictures.Peeled = tyndall_test::Grab(window);
+  renderer->SetUseDepthPeelingForVolumes(false);
+  window->Render();
+  pictures.Unpeeled = tyndall_test::Grab(window);
+  renderer->SetUseDepthPeelingForVolumes(true);
+  return pictures;
+}
+
 // The renderer's picture with only the sphere drawn, over `background`.
 vtkSmartPointer<vtkImageData> SphereOver(
   vtkRenderWindow* window, vtkRenderer* renderer, vtkVolume* volume, vtkImageData* background)
@@ -171,15 +193,10 @@ int TestTransmittanceMapperDepthPeeling(int, char*[])
   mapper->SetBlendModeToMaximumIntensity();
   vtkNew<vtkTest::ErrorObserver> messages;
   mapper->AddObserver(vtkCommand::WarningEvent, messages);
-  window->Render();
-  peeled = tyndall_test::Grab(window);
-  renderer->SetUseDepthPeelingForVolumes(false);
-  window->Render();
-  const double projected = tyndall_test::PSNR(peeled, tyndall_test::Grab(window));
+  const double projected = DrawBothWays(window, renderer).PSNR();
   std::cout << "maximum intensity, sphere behind: peeled against unpeeled " << projected << " dB\n";
   Check(projected >= 45.0, "a projection in peeling draws the picture drawn without it");
   Check(!messages->GetWarning(), "a projection in peeling: no warning");
-  renderer->SetUseDepthPeelingForVolumes(true);
   mapper->SetBlendModeToComposite();
 
   // 5. A coloured extinction in peeling: one warning, and the picture close
@@ -189,19 +206,15 @@ int TestTransmittanceMapperDepthPeeling(int, char*[])
   messages->Clear();
   window->Render();
   window->Render(); // said once
-  peeled = tyndall_test::Grab(window);
   const std::string said = messages->GetWarningMessage();
   const size_t first = said.find("coloured extinction");
   Check(
     first != std::string::npos && said.find("coloured extinction", first + 1) == std::string::npos,
     "a coloured extinction in peeling: one warning");
-  renderer->SetUseDepthPeelingForVolumes(false);
-  window->Render();
-  const double chromatic = tyndall_test::PSNR(peeled, tyndall_test::Grab(window));
+  const double chromatic = DrawBothWays(window, renderer).PSNR();
   std::cout << "coloured extinction, sphere behind: peeled against unpeeled " << chromatic
             << " dB\n";
   Check(chromatic >= 30.0, "a coloured extinction in peeling: close to the unpeeled picture");
-  renderer->SetUseDepthPeelingForVolumes(true);
   property->SetExtinctionColor(1.0, 1.0, 1.0);
 
   // 6. Emission with next to no extinction inside two nested, nearly clear
@@ -225,21 +238,16 @@ int TestTransmittanceMapperDepthPeeling(int, char*[])
     shell->GetProperty()->SetOpacity(0.01);
   }
   renderer->AddActor(inner);
-  window->Render();
-  peeled = tyndall_test::Grab(window);
-  renderer->SetUseDepthPeelingForVolumes(false);
-  window->Render();
-  vtkSmartPointer<vtkImageData> glow = tyndall_test::Grab(window);
-  const double emitted = tyndall_test::PSNR(peeled, glow);
+  const PeeledAndUnpeeled glow = DrawBothWays(window, renderer);
+  const double emitted = glow.PSNR();
   volume->VisibilityOff();
   window->Render();
-  const double glowing = tyndall_test::PSNR(glow, tyndall_test::Grab(window));
+  const double glowing = tyndall_test::PSNR(glow.Unpeeled, tyndall_test::Grab(window));
   volume->VisibilityOn();
   std::cout << "emission, next to no extinction, in nested spheres: peeled against unpeeled "
             << emitted << " dB (the picture without the volume: " << glowing << " dB)\n";
   Check(glowing < 30.0, "the emission shows");
   Check(emitted >= 40.0, "emission without extinction in peeling");
-  renderer->SetUseDepthPeelingForVolumes(true);
   property->SetEmissionColor(nullptr);
   property->SetEmissionScale(0.0);
   property->SetScalarOpacityUnitDistance(0.05);
@@ -255,15 +263,12 @@ int TestTransmittanceMapperDepthPeeling(int, char*[])
   vtkNew<vtkActor> blocker;
   blocker->SetMapper(ballMapper);
   renderer->AddActor(blocker);
-  window->Render();
-  peeled = tyndall_test::Grab(window);
+  const PeeledAndUnpeeled shadowed = DrawBothWays(window, renderer);
+  const double occluded = shadowed.PSNR();
+  blocker->VisibilityOff();
   renderer->SetUseDepthPeelingForVolumes(false);
   window->Render();
-  vtkSmartPointer<vtkImageData> shadowed = tyndall_test::Grab(window);
-  const double occluded = tyndall_test::PSNR(peeled, shadowed);
-  blocker->VisibilityOff();
-  window->Render();
-  const double shadow = tyndall_test::PSNR(shadowed, tyndall_test::Grab(window));
+  const double shadow = tyndall_test::PSNR(shadowed.Unpeeled, tyndall_test::Grab(window));
   std::cout << "an opaque occluder, nested spheres: peeled against unpeeled " << occluded
             << " dB (the picture without the occluder: " << shadow << " dB)\n";
   Check(shadow < 30.0, "the occluder's shadow shows");
@@ -277,14 +282,9 @@ int TestTransmittanceMapperDepthPeeling(int, char*[])
 
   // 8. A viewport away from the window's origin, the sphere behind.
   renderer->SetViewport(0.35, 0.2, 1.0, 0.9);
-  window->Render();
-  peeled = tyndall_test::Grab(window);
-  renderer->SetUseDepthPeelingForVolumes(false);
-  window->Render();
-  const double offset = tyndall_test::PSNR(peeled, tyndall_test::Grab(window));
+  const double offset = DrawBothWays(window, renderer).PSNR();
   std::cout << "viewport away from the origin: peeled against unpeeled " << offset << " dB\n";
   Check(offset >= 45.0, "a viewport away from the window's origin in peeling");
-  renderer->SetUseDepthPeelingForVolumes(true);
   renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
 
   // 9. Particles' maps rebuilt in a peeling stage.
@@ -299,10 +299,7 @@ int TestTransmittanceMapperDepthPeeling(int, char*[])
   sun->SetPosition(-1.0, 0.8, 0.5); // the maps are rebuilt in the first stage
   window->Render();
   Check(particles->GetMapBuildCount() == splatted + 1, "the light's move rebuilds the maps once");
-  peeled = tyndall_test::Grab(window);
-  renderer->SetUseDepthPeelingForVolumes(false);
-  window->Render();
-  const double rebuilt = tyndall_test::PSNR(peeled, tyndall_test::Grab(window));
+  const double rebuilt = DrawBothWays(window, renderer).PSNR(); // the maps built in peeling
   std::cout << "particles, maps rebuilt in peeling: against unpeeled " << rebuilt << " dB\n";
   Check(rebuilt >= 45.0, "particles' maps splatted in a peeling stage are right");
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -216,6 +216,30 @@ void CulledFirstVolume()
     "a group whose first volume is culled is drawn by the next");
 }
 
+// The scene's two volumes in the renderer, `first` first; " (first)" or
+// " (drawn second)" for the right volume's place, for the messages.
+std::string PutFirst(Scene& scene, vtkVolume* first)
+{
+  vtkVolume* second =
+    first == scene.Left.Volume.Get() ? scene.Right.Volume.Get() : scene.Left.Volume.Get();
+  scene.Renderer->RemoveAllViewProps();
+  scene.Renderer->AddVolume(first);
+  scene.Renderer->AddVolume(second);
+  return first == scene.Left.Volume.Get() ? " (drawn second)" : " (first)";
+}
+
+// Whether each of the scene's volumes cast its own rays in the last render,
+// and the CPU reference draws the right one itself.
+void CheckDrawnApart(Scene& scene, const std::string& what)
+{
+  Check(
+    scene.Right.Mapper->GetLastRayCastTime() > 0.0 && scene.Left.Mapper->GetLastRayCastTime() > 0.0,
+    what + ": each volume casts its own rays");
+  vtkNew<vtkSingleScatteringReference> own;
+  own->Render(scene.Renderer, scene.Right.Volume, 32, 24);
+  Check(LargestOpacity(own->GetOutput()) > 0.1, what + ": the CPU reference draws it itself");
+}
+
 // 5. Several components: the cloud's scalars twice, as two independent
 // components whose extinctions add (the same functions on both).
 void SeveralComponents()
@@ -242,25 +266,14 @@ void SeveralComponents()
   scene.Right.Property->SetScalarOpacity(1, scene.Right.Property->GetScalarOpacity(0));
   for (vtkVolume* first : { scene.Right.Volume.Get(), scene.Left.Volume.Get() })
   {
-    // Either volume first in the renderer's order.
-    scene.Renderer->RemoveAllViewProps();
-    scene.Renderer->AddVolume(first);
-    scene.Renderer->AddVolume(
-      first == scene.Left.Volume.Get() ? scene.Right.Volume.Get() : scene.Left.Volume.Get());
+    const std::string order = PutFirst(scene, first); // either volume first
     vtkNew<vtkTest::ErrorObserver> observer;
     scene.Right.Mapper->AddObserver(vtkCommand::WarningEvent, observer);
     scene.Gpu();
-    const std::string order = first == scene.Left.Volume.Get() ? " (drawn second)" : " (first)";
     Check(observer->GetWarning() &&
         observer->GetWarningMessage().find("several components") != std::string::npos,
       "a volume of several components overlapping another: a warning" + order);
-    Check(scene.Right.Mapper->GetLastRayCastTime() > 0.0 &&
-        scene.Left.Mapper->GetLastRayCastTime() > 0.0,
-      "each volume casts its own rays" + order);
-    vtkNew<vtkSingleScatteringReference> own;
-    own->Render(scene.Renderer, scene.Right.Volume, 32, 24);
-    Check(LargestOpacity(own->GetOutput()) > 0.1,
-      "the CPU reference draws the volume of several components itself" + order);
+    CheckDrawnApart(scene, "a volume of several components" + order);
   }
 }
 
@@ -279,19 +292,9 @@ void GradientOpacity()
   scene.Right.Property->SetGradientOpacity(gradient);
   for (vtkVolume* first : { scene.Right.Volume.Get(), scene.Left.Volume.Get() })
   {
-    scene.Renderer->RemoveAllViewProps();
-    scene.Renderer->AddVolume(first);
-    scene.Renderer->AddVolume(
-      first == scene.Left.Volume.Get() ? scene.Right.Volume.Get() : scene.Left.Volume.Get());
+    const std::string order = PutFirst(scene, first);
     scene.Gpu();
-    const std::string order = first == scene.Left.Volume.Get() ? " (drawn second)" : " (first)";
-    Check(scene.Right.Mapper->GetLastRayCastTime() > 0.0 &&
-        scene.Left.Mapper->GetLastRayCastTime() > 0.0,
-      "gradient opacity overlapping another: each volume casts its own rays" + order);
-    vtkNew<vtkSingleScatteringReference> own;
-    own->Render(scene.Renderer, scene.Right.Volume, 32, 24);
-    Check(LargestOpacity(own->GetOutput()) > 0.1,
-      "the CPU reference draws the volume with gradient opacity itself" + order);
+    CheckDrawnApart(scene, "a volume with gradient opacity" + order);
   }
 }
 }
