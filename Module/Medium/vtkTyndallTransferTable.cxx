@@ -2,7 +2,11 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkImageResize.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkTransmittanceMapMath.h"
@@ -128,6 +132,14 @@ bool vtkTyndallTransferTable::Tabulate2D(
     error = os.str() + ".";
     return false;
   }
+  if (dims[0] > Largest2D || dims[1] > Largest2D)
+  {
+    os << "the property's 2-D transfer function is " << dims[0] << " x " << dims[1]
+       << " pixels; at most " << Largest2D << " on each side (VTK's texture of it would be "
+       << "larger still).";
+    error = os.str();
+    return false;
+  }
   const vtkIdType count = values->GetNumberOfTuples();
   std::vector<float> rgba(4 * static_cast<size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
@@ -145,9 +157,7 @@ bool vtkTyndallTransferTable::Tabulate2D(
       rgba[4 * i + c] = static_cast<float>(v);
     }
   }
-  this->Transfer2D.swap(rgba);
-  this->Transfer2DSize[0] = dims[0];
-  this->Transfer2DSize[1] = dims[1];
+  this->Resample2D(rgba, dims);
   // The extinction row, an upper bound of the function's extinction between
   // entries i - 1 and i + 1 (so that interpolating the row bounds it too):
   // the largest opacity of the pixel columns that reach that stretch of u,
@@ -176,6 +186,47 @@ bool vtkTyndallTransferTable::Tabulate2D(
       vtkTransmittanceMapMath::ExtinctionFromOpacity(std::min(largest, 0.999999), distance, 1.0);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallTransferTable::Resample2D(std::vector<float>& rgba, int dims[3])
+{
+  // VTK 9.1's texture (vtkOpenGLVolumeLookupTable::GetMaximumSupportedTextureWidth()):
+  // each side the next power of two, at least 1024 (a height of 1 stays 1).
+  const int width = std::max(vtkMath::NearestPowerOfTwo(dims[0]), 1024);
+  const int height = dims[1] > 1 ? std::max(vtkMath::NearestPowerOfTwo(dims[1]), 1024) : 1;
+  if (width != dims[0] || height != dims[1])
+  {
+    // vtkOpenGLVolumeTransferFunction2D's resampling: vtkImageResize at its
+    // defaults (a Lanczos sinc, the corner pixels' centres kept).
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(dims[0], dims[1], 1);
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfComponents(4);
+    values->SetArray(rgba.data(), static_cast<vtkIdType>(rgba.size()), 1);
+    image->GetPointData()->SetScalars(values);
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(image);
+    resize->SetResizeMethodToOutputDimensions();
+    resize->SetOutputDimensions(width, height, 1);
+    resize->Update();
+    auto* resampled =
+      vtkFloatArray::SafeDownCast(resize->GetOutput()->GetPointData()->GetScalars());
+    const float* first = resampled->GetPointer(0);
+    std::vector<float> table(first, first + 4 * static_cast<size_t>(width) * height);
+    // The sinc rings a little past a hard edge: VTK composites no negative
+    // opacity; colour and opacity are kept in [0, 1] (an albedo's range).
+    for (float& v : table)
+    {
+      v = std::min(std::max(v, 0.0f), 1.0f);
+    }
+    rgba.swap(table);
+    dims[0] = width;
+    dims[1] = height;
+  }
+  this->Transfer2D.swap(rgba);
+  this->Transfer2DSize[0] = dims[0];
+  this->Transfer2DSize[1] = dims[1];
 }
 
 //------------------------------------------------------------------------------

@@ -101,18 +101,26 @@ public:
    * image of W x H pixels of 4 components (colour, opacity), its x axis the
    * scalar over [Minimum, Maximum], its y axis the gradient magnitude over
    * [0, GradientMaximum] (the change per average voxel, TabulateGradientOpacity()'s
-   * units), each read at u = position / extent across the whole image
-   * (pixel i spans [i / W, (i + 1) / W]) and interpolated bilinearly
-   * between pixel centres, clamped at the edges (the GPU's texture lookup),
-   * or with `nearest` (VTK reads it so with the property's nearest
-   * interpolation) the pixel the point falls in. Tabulate2D() copies it
+   * units). VTK resamples it to its texture's size, each side the next
+   * power of two and at least 1024 (a height of 1 stays 1), with
+   * vtkImageResize's defaults (a Lanczos sinc over the corner pixels'
+   * centres); so does Tabulate2D(), keeping the result in [0, 1] (VTK
+   * keeps the sinc's ringing past a hard edge of a colour).
+   * The table (Transfer2DSize, W' x H') is read at u = position / extent
+   * across it (pixel i spans [i / W', (i + 1) / W']), interpolated
+   * bilinearly between pixel centres, clamped at the edges (the GPU's
+   * texture lookup), or with `nearest` (VTK reads it so with the property's
+   * nearest interpolation) the pixel the point falls in. Tabulate2D() reads
+   * the function
    * (false, with `error`, for no image, another shape than W x H x 1 with
-   * W, H >= 1, other than 4 components, a non-finite value, or a colour or
-   * opacity outside [0, 1]); it replaces Extinction by an upper bound of
+   * W, H >= 1, more than Largest2D pixels on a side (a 4096^2 texture of
+   * RGBA floats is 256 MiB), other than 4 components, a non-finite value,
+   * or a colour or opacity outside [0, 1]); it replaces Extinction by an upper bound of
    * the function's extinction around each entry, over every gradient, at
    * `distance` per opacity (what empty-space skipping and the majorant
    * read). Transfer2DAt() is the lookup (rgba). Build() clears it.
    */
+  static constexpr int Largest2D = 4096;
   bool Tabulate2D(vtkImageData* function, double distance, bool nearest, std::string& error);
   void Transfer2DAt(double u, double g, double rgba[4]) const;
   bool Has2D() const { return !this->Transfer2D.empty(); }
@@ -220,6 +228,11 @@ public:
    * GradientRow = (gradient opacity, 0, 0, 0) (1 without one).
    */
   void GetTexture(std::vector<float>& rgba) const;
+
+private:
+  // Tabulate2D()'s resampling of the validated W x H pixels `rgba` to VTK's
+  // texture size (dims becomes it); sets Transfer2D and Transfer2DSize.
+  void Resample2D(std::vector<float>& rgba, int dims[3]);
 };
 
 #endif

@@ -298,6 +298,8 @@ int TestTransmittanceMapperBadInput(int, char*[])
     expectTransfer2D(function, "in [0, 1]", "a NaN in a 2-D function");
     function = MakeImage(8, 4, 2, 4, 0.5);
     expectTransfer2D(function, "W x H x 1", "a 2-D function of two slices");
+    function = MakeImage(4097, 2, 1, 4, 0.5);
+    expectTransfer2D(function, "at most 4096", "a 2-D function 4097 pixels wide");
     plain->SetTransferFunction2D(MakeImage(8, 4, 1, 4, 0.5));
     observer->Clear();
     window->Render();

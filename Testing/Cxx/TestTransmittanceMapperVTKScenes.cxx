@@ -629,6 +629,32 @@ void Transfer2DProperty(vtkVolumeProperty* property, const double range[2])
   property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
 }
 
+// A coarse 2-D function (4 x 3 pixels): a colour per quarter of the scalar
+// range (red, green, blue, white) and an opacity per third of the gradient
+// axis (0.02, 0.1, 0.3): read nearest, the colours meet at hard edges, read
+// bilinear, they blend across a quarter of the range; TF_2D.
+void CoarseTransfer2DProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ColorProperty(property, range);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 3, 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  auto* rgba = static_cast<float*>(image->GetScalarPointer());
+  const float colors[4][3] = { { 0.8f, 0.2f, 0.2f }, { 0.2f, 0.8f, 0.2f }, { 0.2f, 0.2f, 0.8f },
+    { 0.8f, 0.8f, 0.8f } };
+  const float opacities[3] = { 0.02f, 0.1f, 0.3f };
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 4; ++i, rgba += 4)
+    {
+      std::copy(colors[i], colors[i] + 3, rgba);
+      rgba[3] = opacities[j];
+    }
+  }
+  property->SetTransferFunction2D(image);
+  property->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+}
+
 // Transfer2DProperty with Shade on.
 void ShadedTransfer2DProperty(vtkVolumeProperty* property, const double range[2])
 {
@@ -1008,6 +1034,12 @@ std::vector<Scene> Scenes()
       },
       Tilted, true },
     { "Transfer2D-Wavelet", MakeWavelet, Transfer2DProperty, none, Tilted, true },
+    // VTK's default interpolation: the volume and the function read nearest.
+    { "Transfer2D-WaveletNearest", MakeWavelet, Transfer2DProperty, none, Tilted, true, 35.0,
+      true },
+    { "Transfer2D-WaveletCoarse", MakeWavelet, CoarseTransfer2DProperty, none, Tilted, true },
+    { "Transfer2D-WaveletCoarseNearest", MakeWavelet, CoarseTransfer2DProperty, none, Tilted, true,
+      35.0, true },
     { "Transfer2D-ShadedHead", MakeHead, ShadedTransfer2DProperty, none, Tilted, true, 35.0, false,
       true },
     { "Components-RGBA", MakeRGBA, RGBAProperty, none, Tilted, true },
