@@ -46,6 +46,7 @@ set(tyndall_test_costs
   TyndallCLI-DetailSampled 12
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 120
   Tyndall::RenderingCxx-TestTransmittanceMapperScenes 10
+  Tyndall::RenderingCxx-TestTransmittanceMapperDataTypes 12
   TyndallParaView-GUI 10
   Tyndall::ReferenceCxx-TestVolumetricPathTracer 9
   Tyndall::ReferenceCxx-TestVolumetricPathTracerScenes 13

@@ -56,8 +56,9 @@ int vtkTyndallMajorantGrid::BlockOf(int a, double v) const
 }
 
 //------------------------------------------------------------------------------
+template <typename T>
 double vtkTyndallMajorantGrid::BuildRanges(
-  const float* values, int components, const unsigned char* valid, const int dims[3])
+  const T* values, int components, const unsigned char* valid, const int dims[3])
 {
   this->Components = components;
   vtkNew<vtkTimerLog> timer;
@@ -92,15 +93,31 @@ double vtkTyndallMajorantGrid::BuildRanges(
             for (int y = first(by); y <= y1; ++y)
             {
               const size_t rowStart = (static_cast<size_t>(z) * dims[1] + y) * dims[0];
+              if (components == 1 && !valid)
+              {
+                // The common case as a loop over T the compiler vectorises
+                // (a 1024^3 volume of bytes: 3.2 s the general way).
+                const T* row = values + rowStart;
+                T rowLo = row[x0], rowHi = row[x0];
+                for (int x = x0 + 1; x <= x1; ++x)
+                {
+                  rowLo = std::min(rowLo, row[x]);
+                  rowHi = std::max(rowHi, row[x]);
+                }
+                lo[0] = std::min(lo[0], static_cast<float>(rowLo));
+                hi[0] = std::max(hi[0], static_cast<float>(rowHi));
+                continue;
+              }
               for (int x = x0; x <= x1; ++x)
               {
                 if (!valid || valid[rowStart + x])
                 {
-                  const float* v = values + (rowStart + x) * components;
+                  const T* v = values + (rowStart + x) * components;
                   for (int c = 0; c < components; ++c)
                   {
-                    lo[c] = std::min(lo[c], v[c]);
-                    hi[c] = std::max(hi[c], v[c]);
+                    const float value = static_cast<float>(v[c]);
+                    lo[c] = std::min(lo[c], value);
+                    hi[c] = std::max(hi[c], value);
                   }
                 }
               }
@@ -112,6 +129,17 @@ double vtkTyndallMajorantGrid::BuildRanges(
   timer->StopTimer();
   return timer->GetElapsedTime();
 }
+
+template double vtkTyndallMajorantGrid::BuildRanges<float>(
+  const float*, int, const unsigned char*, const int[3]);
+template double vtkTyndallMajorantGrid::BuildRanges<unsigned char>(
+  const unsigned char*, int, const unsigned char*, const int[3]);
+template double vtkTyndallMajorantGrid::BuildRanges<signed char>(
+  const signed char*, int, const unsigned char*, const int[3]);
+template double vtkTyndallMajorantGrid::BuildRanges<unsigned short>(
+  const unsigned short*, int, const unsigned char*, const int[3]);
+template double vtkTyndallMajorantGrid::BuildRanges<short>(
+  const short*, int, const unsigned char*, const int[3]);
 
 //------------------------------------------------------------------------------
 double vtkTyndallMajorantGrid::BuildMajorants(const vtkTyndallTransferTable& table)

@@ -55,10 +55,12 @@ public:
    * The range of each of the `components` of every block of `values`
    * (dims[0] x dims[1] x dims[2] samples, x fastest, `components` values
    * each); `valid` (may be null) is 0 for missing samples. Returns the
-   * seconds it took.
+   * seconds it took. T: float, or the 8- and 16-bit integers the GPU keeps
+   * in their own type (unsigned and signed char and short).
    */
+  template <typename T>
   double BuildRanges(
-    const float* values, int components, const unsigned char* valid, const int dims[3]);
+    const T* values, int components, const unsigned char* valid, const int dims[3]);
 
   ///@{
   /**

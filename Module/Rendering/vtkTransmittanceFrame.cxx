@@ -501,8 +501,11 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
     std::copy(guest.Textures->GetTextureScale(), guest.Textures->GetTextureScale() + 3, scale[g]);
     std::copy(guest.Textures->GetTextureShift(), guest.Textures->GetTextureShift() + 3, shift[g]);
     const vtkTyndallTransferTable& table = guest.Medium->GetTable();
-    toTable[g][0] = static_cast<float>(table.TextureScale());
-    toTable[g][1] = static_cast<float>(table.TextureShift());
+    // The guest's texel straight to its table coordinate (its value map
+    // folded in: value = texel * map[0] + map[1]).
+    const float* map = guest.Textures->GetValueMap();
+    toTable[g][0] = static_cast<float>(table.TextureScale() * map[0]);
+    toTable[g][1] = static_cast<float>(table.TextureScale() * map[1] + table.TextureShift());
     density[g] = static_cast<float>(guest.Medium->GetParameters().DensityScale);
     camera[g] = guest.Camera ? 1.0f : 0.0f;
   }

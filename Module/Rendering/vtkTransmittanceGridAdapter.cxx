@@ -66,6 +66,7 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
   const vtkTyndallGridMedium& grid = this->GetGrid(medium);
   const vtkTyndallTransferTable& table = grid.GetTable();
   program->SetUniformi("volumeTexture", textures.GetVolumeTexture()->GetTextureUnit());
+  program->SetUniform2f("volumeValueMap", textures.GetValueMap());
   if (vtkTextureObject* validity = textures.GetValidityTexture())
   {
     // Declared only by the missing-data variant.

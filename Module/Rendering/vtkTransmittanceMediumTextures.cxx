@@ -8,9 +8,12 @@
 #include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
+#include "vtkTypeTraits.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <vector>
 
@@ -56,6 +59,18 @@ void Gather(const vtkTyndallGridMedium& medium, const T* data, int components, i
       }
     }
   }
+}
+
+// Whether the GL holds `texture`'s level 0 at its size: a driver out of
+// memory may refuse a large texture without raising an error (Mesa's
+// llvmpipe left a 4 GiB volume texture empty, and the picture black).
+bool Allocated(vtkTextureObject* texture)
+{
+  texture->Activate();
+  GLint width = 0;
+  glGetTexLevelParameteriv(texture->GetTarget(), 0, GL_TEXTURE_WIDTH, &width);
+  texture->Deactivate();
+  return width == static_cast<GLint>(texture->GetWidth());
 }
 
 // Releases `texture`'s graphics resources and drops it.
@@ -212,6 +227,85 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
                                         << maxSize << "; rendering every " << factor
                                         << "th sample.");
   }
+  vtkDataArray* scalars = medium.GetScalars();
+  const void* data = scalars->GetVoidPointer(0);
+  switch (scalars->GetDataType())
+  {
+    case VTK_UNSIGNED_CHAR:
+      return this->UploadStored(window, medium, static_cast<const unsigned char*>(data), reporter);
+    case VTK_CHAR: // the signed or unsigned char it is here
+      if (std::numeric_limits<char>::is_signed)
+      {
+        return this->UploadStored(window, medium, static_cast<const signed char*>(data), reporter);
+      }
+      return this->UploadStored(window, medium, static_cast<const unsigned char*>(data), reporter);
+    case VTK_SIGNED_CHAR:
+      return this->UploadStored(window, medium, static_cast<const signed char*>(data), reporter);
+    case VTK_UNSIGNED_SHORT:
+      return this->UploadStored(window, medium, static_cast<const unsigned short*>(data), reporter);
+    case VTK_SHORT:
+      return this->UploadStored(window, medium, static_cast<const short*>(data), reporter);
+    default:
+      return this->UploadFloats(window, medium, reporter);
+  }
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+bool vtkTransmittanceMediumTextures::UploadStored(vtkOpenGLRenderWindow* window,
+  const vtkTyndallGridMedium& medium, const T* data, vtkObject* reporter)
+{
+  // A normalized texture of T (GL_R8, GL_R8_SNORM, GL_R16, GL_R16_SNORM, as
+  // VTK's mapper stores them) that the GPU reads as c / max(T), clamped to
+  // -1 (so the lowest signed value reads as -max(T)); the value is the
+  // texel times max(T), a product alone (no added term a compiler could
+  // fuse into it and round otherwise).
+  const int components = medium.GetScalars()->GetNumberOfComponents();
+  const size_t count =
+    static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
+  const bool masked = !medium.GetMask().empty(); // integers hold no NaN
+  std::vector<T> sampled;
+  std::vector<unsigned char> valid;
+  const bool copy = this->Factor > 1;
+  try
+  {
+    sampled.resize(copy ? count * components : 0);
+    valid.resize(masked ? count : 0);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Cannot allocate "
+                                      << (copy ? count * components * sizeof(T) : 0) + valid.size()
+                                      << " bytes for the volume's textures.");
+    return false;
+  }
+  if (copy)
+  {
+    EveryFactorth(
+      data, components, this->Factor, medium.GetDimensions(), this->Dimensions, sampled.data());
+  }
+  const T* values = copy ? sampled.data() : data;
+  if (masked)
+  {
+    const unsigned char* mask = medium.GetMask().data();
+    EveryFactorth(mask, 1, this->Factor, medium.GetDimensions(), this->Dimensions, valid.data());
+    for (unsigned char& v : valid)
+    {
+      v = v ? 255 : 0;
+    }
+  }
+  this->BlockRangeTime = this->Majorants.BuildRanges(
+    values, components, masked ? valid.data() : nullptr, this->Dimensions);
+  this->ValueMap[0] = static_cast<float>(std::numeric_limits<T>::max());
+  this->ValueMap[1] = 0.0f;
+  return this->CreateVolumeTexture(window, components, vtkTypeTraits<T>::VTKTypeID(),
+    const_cast<T*>(values), masked ? valid.data() : nullptr, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadFloats(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
   const size_t count =
     static_cast<size_t>(this->Dimensions[0]) * this->Dimensions[1] * this->Dimensions[2];
   const bool missing = medium.HasMissingData(); // NaN scalars or a mask
@@ -232,22 +326,42 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   switch (scalars->GetDataType())
   {
     vtkTemplateMacro(Gather(medium, static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
-      components, factor, this->Dimensions, values.data(), missing ? valid.data() : nullptr));
+      components, this->Factor, this->Dimensions, values.data(), missing ? valid.data() : nullptr));
   }
   this->BlockRangeTime = this->Majorants.BuildRanges(
     values.data(), components, missing ? valid.data() : nullptr, this->Dimensions);
+  this->ValueMap[0] = 1.0f;
+  this->ValueMap[1] = 0.0f;
+  return this->CreateVolumeTexture(
+    window, components, VTK_FLOAT, values.data(), missing ? valid.data() : nullptr, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* window,
+  int components, int type, void* values, unsigned char* valid, vtkObject* reporter)
+{
+  const int* dims = this->Dimensions;
   if (!this->VolumeTexture)
   {
     this->VolumeTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTransmittanceOffscreenDraw::SetClamped(this->VolumeTexture, window, true);
-  if (!this->VolumeTexture->Create3DFromRaw(this->Dimensions[0], this->Dimensions[1],
-        this->Dimensions[2], components, VTK_FLOAT, values.data()))
+  // The format of these scalars (vtkTextureObject keeps the last upload's
+  // format and type otherwise: another type's data read as the old one).
+  this->VolumeTexture->ResetFormatAndType();
+  if (!this->VolumeTexture->Create3DFromRaw(dims[0], dims[1], dims[2], components, type, values) ||
+    !Allocated(this->VolumeTexture))
   {
-    vtkErrorWithObjectMacro(reporter, << "Could not create the volume's 3-D texture.");
+    const double mib = static_cast<double>(dims[0]) * dims[1] * dims[2] * components *
+      vtkDataArray::GetDataTypeSize(type) / (1024.0 * 1024.0);
+    vtkErrorWithObjectMacro(reporter,
+      << "The GPU could not create the volume's 3-D texture (" << dims[0] << " x " << dims[1]
+      << " x " << dims[2] << ", " << components << " x " << vtkImageScalarTypeNameMacro(type)
+      << ", " << mib << " MiB): too large for its memory, or a format it lacks.");
+    Release(this->VolumeTexture, window);
     return false;
   }
-  if (!missing)
+  if (!valid)
   {
     Release(this->ValidityTexture, window);
     return true;
@@ -257,10 +371,15 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
     this->ValidityTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTransmittanceOffscreenDraw::SetClamped(this->ValidityTexture, window, true);
-  if (!this->ValidityTexture->Create3DFromRaw(this->Dimensions[0], this->Dimensions[1],
-        this->Dimensions[2], 1, VTK_UNSIGNED_CHAR, valid.data()))
+  if (!this->ValidityTexture->Create3DFromRaw(
+        dims[0], dims[1], dims[2], 1, VTK_UNSIGNED_CHAR, valid) ||
+    !Allocated(this->ValidityTexture))
   {
-    vtkErrorWithObjectMacro(reporter, << "Could not create the volume's validity texture.");
+    vtkErrorWithObjectMacro(reporter, << "The GPU could not create the volume's validity texture ("
+                                      << dims[0] << " x " << dims[1] << " x " << dims[2]
+                                      << " bytes).");
+    Release(this->ValidityTexture, window);
+    Release(this->VolumeTexture, window);
     return false;
   }
   return true;

@@ -3,8 +3,9 @@
  * @brief   the upload pass of vtkTransmittanceVolumeMapper: a medium's scalars and table on the GPU
  *
  * Uploads a vtkTyndallGridMedium's cleaned scalars (+-Inf clamped:
- * vtkTyndallGridMedium::Clean()) as a float 3-D texture with linear
- * filtering and clamp-to-edge, and its transfer table
+ * vtkTyndallGridMedium::Clean()) as a 3-D texture with linear filtering and
+ * clamp-to-edge, in the data's own size for 8- and 16-bit integers and as
+ * floats otherwise (GetValueMap()), and its transfer table
  * (vtkTyndallTransferTable::GetTexture()) as a 2-D texture, each only when
  * it changed. When the scalars hold NaN (missing data), NaN voxels get the
  * range's minimum in the scalar texture and 0 in a validity texture (1
@@ -73,6 +74,15 @@ public:
   vtkTextureObject* GetDetailTexture() const { return this->DetailTexture; }
 
   vtkTextureObject* GetVolumeTexture() const { return this->VolumeTexture; }
+  /**
+   * How the volume texture's texels give the scalars: value = texel *
+   * GetValueMap()[0] + GetValueMap()[1]. 8- and 16-bit integer scalars are
+   * stored in their own type as normalized textures (1 or 2 bytes per
+   * component and voxel): (max of the type, 0), the lowest signed value
+   * reading as minus the max (the GL's clamp); any other type as 32-bit
+   * floats (4 bytes): (1, 0).
+   */
+  const float* GetValueMap() const { return this->ValueMap; }
   /// Null without an emission array (vtkTyndallGridMedium::GetEmissionValues()).
   vtkTextureObject* GetEmissionTexture() const { return this->EmissionTexture; }
   /// A coloured particle cloud's scattering density (Extras::Scattering); null for any other
@@ -128,6 +138,19 @@ private:
 
   bool UploadScalars(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  // The scalars of an 8- or 16-bit integer type T (unsigned or signed char
+  // or short) in a normalized texture of T (no copy at every sample).
+  template <typename T>
+  bool UploadStored(vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium,
+    const T* data, vtkObject* reporter);
+  // Every other type's scalars as floats (NaN and +-Inf cleaned).
+  bool UploadFloats(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  // VolumeTexture from `values` (Dimensions, `components` of `type`) and,
+  // for non-null `valid`, ValidityTexture; false with an error naming the
+  // texture's size when the GPU cannot hold it.
+  bool CreateVolumeTexture(vtkOpenGLRenderWindow* window, int components, int type, void* values,
+    unsigned char* valid, vtkObject* reporter);
   bool UploadTable(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadEmission(
@@ -176,6 +199,7 @@ private:
   int Factor = 1;
   vtkTimeStamp ExtinctionContentTime;
   vtkMTimeType SeenExtinctionTime = 0;
+  float ValueMap[2] = { 1.0f, 0.0f };
   float TextureScale[3] = { 1.0f, 1.0f, 1.0f };
   float TextureShift[3] = { 0.0f, 0.0f, 0.0f };
   float BlockScale[3] = { 1.0f, 1.0f, 1.0f };

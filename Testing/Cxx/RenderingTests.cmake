@@ -28,6 +28,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperMaps.cxx
   TestTransmittanceMapperSceneRules.cxx
   TestTransmittanceMapperDepthPeeling.cxx
+  TestTransmittanceMapperDataTypes.cxx
   TestTransmittanceMapReducer.cxx)
 # VTK's scenes against VTK's mapper (no baseline; -T: where their pictures go).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests

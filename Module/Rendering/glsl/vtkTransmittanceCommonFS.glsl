@@ -18,6 +18,9 @@
 // emission colour, a = the scalar opacity function, which the projection
 // blend modes read; gradient row r = a plain property's gradient opacity).
 uniform sampler3D volumeTexture;
+// The scalars from the volume texture's texels: value = texel * x + y (the
+// data's own 8- or 16-bit integers read normalized; floats: (1, 0)).
+uniform vec2 volumeValueMap;
 #if TYNDALL_PARTICLE_COLORS
 // A coloured particle cloud: density x albedo per node, beside the density.
 uniform sampler3D scatteringTexture;
@@ -159,12 +162,12 @@ void tyndallChannelDifferences(vec3 t, out vec3 d, out vec4 dx, out vec4 dy, out
     return;
   }
 #endif
-  dx = texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)) -
-    texture(volumeTexture, t - vec3(d.x, 0.0, 0.0));
-  dy = texture(volumeTexture, t + vec3(0.0, d.y, 0.0)) -
-    texture(volumeTexture, t - vec3(0.0, d.y, 0.0));
-  dz = texture(volumeTexture, t + vec3(0.0, 0.0, d.z)) -
-    texture(volumeTexture, t - vec3(0.0, 0.0, d.z));
+  dx = (texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)) -
+         texture(volumeTexture, t - vec3(d.x, 0.0, 0.0))) * volumeValueMap.x;
+  dy = (texture(volumeTexture, t + vec3(0.0, d.y, 0.0)) -
+         texture(volumeTexture, t - vec3(0.0, d.y, 0.0))) * volumeValueMap.x;
+  dz = (texture(volumeTexture, t + vec3(0.0, 0.0, d.z)) -
+         texture(volumeTexture, t - vec3(0.0, 0.0, d.z))) * volumeValueMap.x;
 }
 
 // The first channel's (the scalar's) differences (tyndallChannelDifferences()).
@@ -408,7 +411,7 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   }
 #endif
 #if TYNDALL_COMPONENTS > 1
-  vec4 components = texture(volumeTexture, texel);
+  vec4 components = texture(volumeTexture, texel) * volumeValueMap.x + volumeValueMap.y;
   return densityScale * tyndallComponentMix(components, color, tableCoord);
 #endif
 #if TYNDALL_DETAIL_UNIFORM_ALBEDO
@@ -418,7 +421,7 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   tableCoord = 0.0;
   return tyndallDetailExtinction(q);
 #endif
-  float value = texture(volumeTexture, texel).r;
+  float value = texture(volumeTexture, texel).r * volumeValueMap.x + volumeValueMap.y;
   tableCoord = value * scalarToTable.x + scalarToTable.y;
   vec4 tf = texture(transferTexture, vec2(tableCoord, TYNDALL_TABLE_ALBEDO_ROW));
 #if TYNDALL_PARTICLE_COLORS
@@ -466,7 +469,7 @@ bool tyndallKeptScalar(vec3 x, vec3 texel, out float value)
     return false;
   }
 #endif
-  value = texture(volumeTexture, texel).r;
+  value = texture(volumeTexture, texel).r * volumeValueMap.x + volumeValueMap.y;
   return true;
 }
 
@@ -569,8 +572,10 @@ float tyndallIsoExtinction(vec3 x, vec3 dir, float dt)
 #if TYNDALL_GUESTS > 0
 // Guests (vtkTyndallSceneReader::GetGuests()): the other media the light
 // crosses. Each has its scalars and table (its own mapper's textures), its
-// world -> box matrix, box -> texture coordinates, scalar -> table
-// coordinate and density scale; it is empty outside its box.
+// world -> box matrix, box -> texture coordinates, texel -> table
+// coordinate (its volume's value map folded in: a coloured particle
+// cloud's texels are its float densities) and density scale; it is empty
+// outside its box.
 uniform sampler3D guestVolume[TYNDALL_GUESTS];
 uniform sampler2D guestTransfer[TYNDALL_GUESTS];
 uniform mat4 guestWorldToBox[TYNDALL_GUESTS];

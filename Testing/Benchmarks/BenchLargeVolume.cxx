@@ -1,0 +1,372 @@
+// Benchmark of a large volume (issue 37): one frame of a smooth volume of
+// X x Y x Z samples of an integer or float type, drawn by
+// vtkTransmittanceVolumeMapper or by VTK 9.1's vtkGPUVolumeRayCastMapper, in
+// a process of its own so that its peak resident memory is its own. Prints
+// the data's size, the first frame's time, a second frame's time and the
+// process's peak resident memory (getrusage), and writes the picture.
+// Prints figures; it is not a test.
+//
+//   BenchLargeVolume [--dims X Y Z] [--type uchar|char|schar|ushort|short|float]
+//                    [--mapper tyndall|vtk] [--size N] [--output FILE.png]
+//   BenchLargeVolume --compare [--voxels N] [--size N] [--output-dir DIR]
+//
+// The volume: four Gaussian blobs over [-1, 1]^3 (a level of 200 at a
+// blob's centre, clamped to [0, 255], mapped into each type's range: see
+// Types; the transfer functions mapped alike), a plain
+// vtkVolumeProperty (shade off: VTK's unlit picture, drawn alike by both
+// mappers), the camera at an angle. --compare runs this program three times
+// (Tyndall at N^3, Tyndall at (N/2)^3, VTK at N^3; N default 1024, unsigned
+// char) and prints Tyndall's peak resident memory and first frame over
+// VTK's and the PSNR of the N^3 picture against the (N/2)^3 one and against
+// VTK's (failing below 30 and 35 dB). A volume the GPU cannot hold ends
+// with the mapper's error, never a black picture.
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
+#include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallErrorObserver.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include "TyndallTestImage.h"
+
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Options
+{
+  int Dims[3] = { 1024, 1024, 1024 };
+  std::string Type = "uchar";
+  std::string Mapper = "tyndall";
+  int Size = 400;
+  std::string Output = "BenchLargeVolume.png";
+  bool Compare = false;
+  std::string OutputDir = ".";
+};
+
+// Peak resident memory of this process in MiB.
+double PeakResidentMiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+// The blobs' level at every sample, a sum of separable Gaussians (each blob
+// a product of three per-axis tables) clamped to [0, 255], as T: level *
+// scale + offset (within T: see Types).
+template <typename T>
+void FillBlobs(T* out, const int dims[3], double scale, double offset)
+{
+  const double blobs[4][4] = { { -0.4, -0.3, -0.2, 0.5 }, { 0.35, 0.3, 0.1, 0.45 },
+    { 0.0, 0.1, 0.45, 0.4 }, { 0.2, -0.45, -0.4, 0.35 } };
+  std::vector<float> axis[4][3];
+  for (int b = 0; b < 4; ++b)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      axis[b][a].resize(dims[a]);
+      for (int i = 0; i < dims[a]; ++i)
+      {
+        const double x = dims[a] > 1 ? -1.0 + 2.0 * i / (dims[a] - 1) : 0.0;
+        const double d = (x - blobs[b][a]) / blobs[b][3];
+        axis[b][a][i] = static_cast<float>(std::exp(-d * d));
+      }
+    }
+  }
+  vtkSMPTools::For(0, dims[2],
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType z = first; z < last; ++z)
+      {
+        T* slice = out + static_cast<size_t>(z) * dims[0] * dims[1];
+        for (int y = 0; y < dims[1]; ++y)
+        {
+          for (int x = 0; x < dims[0]; ++x)
+          {
+            float v = 0.0f;
+            for (int b = 0; b < 4; ++b)
+            {
+              v += axis[b][0][x] * axis[b][1][y] * axis[b][2][z];
+            }
+            const double level = std::min(std::max(200.0 * v, 0.0), 255.0);
+            slice[static_cast<size_t>(y) * dims[0] + x] = static_cast<T>(level * scale + offset);
+          }
+        }
+      }
+    });
+}
+
+// A scalar type of --type: the blobs' level L (0..255) is stored as
+// L * Scale + Offset, so that each type's range is used (negative values
+// in the signed ones, large ones in the 16-bit ones) within the type.
+struct Type
+{
+  const char* Name;
+  int Id;
+  double Scale;
+  double Offset;
+};
+const Type Types[] = { { "uchar", VTK_UNSIGNED_CHAR, 1.0, 0.0 }, { "char", VTK_CHAR, 0.5, -64.0 },
+  { "schar", VTK_SIGNED_CHAR, 0.5, -64.0 }, { "ushort", VTK_UNSIGNED_SHORT, 200.0, 0.0 },
+  { "short", VTK_SHORT, 100.0, -12000.0 }, { "float", VTK_FLOAT, 1.0, 0.0 } };
+
+const Type* FindType(const std::string& name)
+{
+  for (const Type& type : Types)
+  {
+    if (name == type.Name)
+    {
+      return &type;
+    }
+  }
+  return nullptr;
+}
+
+vtkSmartPointer<vtkImageData> MakeVolume(const Options& o, const Type& type)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(o.Dims);
+  image->SetOrigin(-1.0, -1.0, -1.0);
+  image->SetSpacing(2.0 / std::max(o.Dims[0] - 1, 1), 2.0 / std::max(o.Dims[1] - 1, 1),
+    2.0 / std::max(o.Dims[2] - 1, 1));
+  image->AllocateScalars(type.Id, 1);
+  void* data = image->GetScalarPointer();
+  switch (type.Id)
+  {
+    vtkTemplateMacro(FillBlobs(static_cast<VTK_TT*>(data), o.Dims, type.Scale, type.Offset));
+  }
+  return image;
+}
+
+// One volume, one mapper: the figures and the picture.
+int RenderOne(const Options& o)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  const Type* type = FindType(o.Type);
+  if (!type)
+  {
+    std::printf("BenchLargeVolume: unknown --type %s\n", o.Type.c_str());
+    return EXIT_FAILURE;
+  }
+  vtkSmartPointer<vtkImageData> data = MakeVolume(o, *type);
+  timer->StopTimer();
+  // The functions over the levels, mapped as the values are.
+  auto at = [type](double level) { return level * type->Scale + type->Offset; };
+  const double mib = data->GetPointData()->GetScalars()->GetDataSize() *
+    data->GetPointData()->GetScalars()->GetDataTypeSize() / (1024.0 * 1024.0);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(at(0.0), 0.2, 0.3, 0.9);
+  color->AddRGBPoint(at(100.0), 0.9, 0.8, 0.3);
+  color->AddRGBPoint(at(255.0), 1.0, 0.3, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(at(0.0), 0.0);
+  opacity->AddPoint(at(20.0), 0.0);
+  opacity->AddPoint(at(255.0), 0.6);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(0.05);
+  property->SetInterpolationTypeToLinear();
+  vtkSmartPointer<vtkVolumeMapper> mapper;
+  if (o.Mapper == "vtk")
+  {
+    mapper = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
+  }
+  else
+  {
+    mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
+  }
+  vtkNew<vtkTyndallErrorObserver> errors;
+  errors->Watch(mapper);
+  mapper->SetInputData(data);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(o.Size, o.Size);
+  window->AddRenderer(renderer);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(30.0);
+  renderer->GetActiveCamera()->Elevation(20.0);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Zoom(1.4);
+  double times[2];
+  for (double& t : times)
+  {
+    timer->StartTimer();
+    window->Render();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    t = timer->GetElapsedTime();
+  }
+  vtkSmartPointer<vtkImageData> picture = tyndall_test::Grab(window);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(o.Output.c_str());
+  writer->SetInputData(picture);
+  writer->Write();
+  std::printf("%-8s %5d x %5d x %5d %-6s %9.1f MiB  first frame %7.2f s  second %7.2f s  peak "
+              "resident %8.1f MiB  %s%s\n",
+    o.Mapper.c_str(), o.Dims[0], o.Dims[1], o.Dims[2], o.Type.c_str(), mib, times[0], times[1],
+    PeakResidentMiB(), o.Output.c_str(), errors->HasErrors() ? "  (error)" : "");
+  // The figures for --compare, beside the picture.
+  if (FILE* figures = std::fopen((o.Output + ".txt").c_str(), "w"))
+  {
+    std::fprintf(figures, "%f %f\n", PeakResidentMiB(), times[0]);
+    std::fclose(figures);
+  }
+  if (errors->HasErrors())
+  {
+    std::printf("  error: %s\n", errors->GetMessages().front().c_str());
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
+
+vtkSmartPointer<vtkImageData> ReadPNG(const std::string& name)
+{
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(name.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+// Three runs of this program (each its own process) and their comparison.
+int Compare(const char* self, const Options& o)
+{
+  const int n = o.Dims[0];
+  struct Run
+  {
+    const char* Mapper;
+    int Voxels;
+    std::string Picture;
+  };
+  std::vector<Run> runs = { { "tyndall", n, "" }, { "tyndall", n / 2, "" }, { "vtk", n, "" } };
+  for (Run& run : runs)
+  {
+    run.Picture = o.OutputDir + "/large-" + run.Mapper + "-" + std::to_string(run.Voxels) + ".png";
+    // (VTK's mapper refuses VTK_CHAR, whose sign depends on the platform:
+    // it draws the same values as signed char.)
+    const std::string type =
+      o.Type == "char" && run.Mapper == std::string("vtk") ? "schar" : o.Type;
+    const std::string command = std::string(self) + " --mapper " + run.Mapper + " --type " + type +
+      " --size " + std::to_string(o.Size) + " --dims " + std::to_string(run.Voxels) + " " +
+      std::to_string(run.Voxels) + " " + std::to_string(run.Voxels) + " --output " + run.Picture;
+    std::fflush(stdout);
+    if (std::system(command.c_str()) != 0)
+    {
+      std::printf("BenchLargeVolume: the %s run at %d^3 failed\n", run.Mapper, run.Voxels);
+      return EXIT_FAILURE;
+    }
+  }
+  double figures[3][2] = {};
+  for (int r = 0; r < 3; ++r)
+  {
+    if (FILE* f = std::fopen((runs[r].Picture + ".txt").c_str(), "r"))
+    {
+      if (std::fscanf(f, "%lf %lf", &figures[r][0], &figures[r][1]) != 2)
+      {
+        figures[r][0] = figures[r][1] = 0.0;
+      }
+      std::fclose(f);
+    }
+  }
+  std::printf("Tyndall / VTK at %d^3: peak resident memory %.2f, first frame %.2f\n", n,
+    figures[0][0] / figures[2][0], figures[0][1] / figures[2][1]);
+  vtkSmartPointer<vtkImageData> full = ReadPNG(runs[0].Picture);
+  const double half = tyndall_test::PSNR(full, ReadPNG(runs[1].Picture));
+  const double vtk = tyndall_test::PSNR(full, ReadPNG(runs[2].Picture));
+  std::printf("PSNR: Tyndall %d^3 against Tyndall %d^3 %.1f dB, against VTK %d^3 %.1f dB\n", n,
+    n / 2, half, n, vtk);
+  // The issue's bar for the half resolution; VTK's unlit picture is the
+  // same scene: a volume stored or read wrong is far from both.
+  if (half < 30.0 || vtk < 35.0)
+  {
+    std::printf("BenchLargeVolume: the pictures disagree (floors: 30 dB at half the resolution, "
+                "35 dB against VTK): failed\n");
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--dims" && i + 3 < argc)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        o.Dims[d] = std::atoi(argv[++i]);
+      }
+    }
+    else if (a == "--voxels" && i + 1 < argc)
+    {
+      o.Dims[0] = o.Dims[1] = o.Dims[2] = std::atoi(argv[++i]);
+    }
+    else if (a == "--type" && i + 1 < argc)
+    {
+      o.Type = argv[++i];
+    }
+    else if (a == "--mapper" && i + 1 < argc)
+    {
+      o.Mapper = argv[++i];
+    }
+    else if (a == "--size" && i + 1 < argc)
+    {
+      o.Size = std::atoi(argv[++i]);
+    }
+    else if (a == "--output" && i + 1 < argc)
+    {
+      o.Output = argv[++i];
+    }
+    else if (a == "--output-dir" && i + 1 < argc)
+    {
+      o.OutputDir = argv[++i];
+    }
+    else if (a == "--compare")
+    {
+      o.Compare = true;
+    }
+    else
+    {
+      std::printf(
+        "Usage: BenchLargeVolume [--dims X Y Z | --voxels N] [--type "
+        "uchar|char|schar|ushort|short|float] [--mapper tyndall|vtk] [--size N] [--output "
+        "FILE.png] [--compare [--output-dir DIR]]\n");
+      return EXIT_FAILURE;
+    }
+  }
+  if (o.Dims[0] < 2 || o.Dims[1] < 2 || o.Dims[2] < 2 || o.Size < 16 || o.Size > 4096 ||
+    (o.Mapper != "tyndall" && o.Mapper != "vtk"))
+  {
+    std::printf("BenchLargeVolume: --dims of 2 or more, --size 16..4096, --mapper tyndall|vtk\n");
+    return EXIT_FAILURE;
+  }
+  return o.Compare ? Compare(argv[0], o) : RenderOne(o);
+}
