@@ -23,12 +23,14 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTransferFunctionFileReader.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallDisplay.h"
 #include "vtkTyndallErrorObserver.h"
+#include "vtkTyndallFrameSequence.h"
 #include "vtkTyndallOptions.h"
 #include "vtkTyndallSceneBuilder.h"
 #include "vtkVolumeFileReader.h"
@@ -300,6 +302,105 @@ int RenderFrames(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
   return EXIT_SUCCESS;
 }
 
+int WritePng(const std::string& path, vtkRenderWindow* window, bool verbose);
+
+// A time series (--sequence): frame FIRST is the built scene; each later
+// frame is read into it, rendered (the maps rebuilt) and written to its own
+// picture, with its times. A frame that cannot be read ends the run (or,
+// with `skipBad`, is skipped with a warning).
+int RenderSequence(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
+  vtkTyndallErrorObserver* errors, vtkTyndallFrameSequence* sequence, int renders, bool skipBad,
+  bool verbose)
+{
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  vtkTransmittanceVolumeMapper* mapper = builder->GetMapper();
+  vtkNew<vtkTimerLog> timer;
+  double firstTime = 0.0, laterLoad = 0.0, laterRender = 0.0;
+  int later = 0, skipped = 0;
+  for (int f = sequence->GetFirst(); f <= sequence->GetLast(); ++f)
+  {
+    const std::string input = sequence->GetInputPath(f);
+    const std::string what = "frame " + std::to_string(f) + " (" + input +
+      (sequence->GetNumberedFiles() ? std::string() : ", time frame " + std::to_string(f)) + ")";
+    double load = 0.0;
+    errors->Clear();
+    if (f != sequence->GetFirst())
+    {
+      timer->StartTimer();
+      const bool loaded = builder->LoadFrame(input, sequence->GetInputFrame(f));
+      timer->StopTimer();
+      load = timer->GetElapsedTime();
+      if (!loaded)
+      {
+        const std::string why =
+          errors->HasErrors() ? errors->GetMessages().front() : std::string("cannot be read");
+        if (!skipBad)
+        {
+          return Fail(what + ": " + why + " (--skip-bad-frames skips such frames)");
+        }
+        std::cerr << Program << ": warning: skipped " << what << ": " << why << "\n";
+        ++skipped;
+        continue;
+      }
+    }
+    // The camera's near and far planes around this frame's data (a
+    // simulation's box may grow); `renders` still frames (sampled detail
+    // averages them).
+    renderer->ResetCameraClippingRange();
+    const int builds = mapper->GetMapBuildCount();
+    timer->StartTimer();
+    for (int r = 0; r < renders; ++r)
+    {
+      window->Render();
+    }
+    vtkOpenGLRenderWindow::SafeDownCast(window)->WaitForCompletion();
+    timer->StopTimer();
+    const double render = timer->GetElapsedTime();
+    if (errors->HasErrors())
+    {
+      return Fail(what + ": rendering failed: " + errors->GetMessages().front());
+    }
+    const std::string output = sequence->GetOutputPath(f);
+    if (WritePng(output, window, false) != EXIT_SUCCESS)
+    {
+      return ExitFailure;
+    }
+    std::cout << vtksys::SystemTools::CollapseFullPath(output) << std::endl;
+    if (verbose)
+    {
+      std::cerr << what << ": load " << load << " s, render " << render << " s (maps "
+                << (mapper->GetMapBuildCount() > builds
+                       ? std::to_string(mapper->GetLastMapBuildTime()) + " s"
+                       : std::string("not rebuilt"))
+                << "), " << output << "\n";
+    }
+    if (f == sequence->GetFirst())
+    {
+      firstTime = render;
+    }
+    else
+    {
+      laterLoad += load;
+      laterRender += render;
+      ++later;
+    }
+  }
+  if (verbose && later == 0 && skipped > 0)
+  {
+    std::cerr << "sequence: 1 frame drawn, " << skipped << " skipped\n";
+  }
+  if (verbose && later > 0)
+  {
+    const double perFrame = (laterLoad + laterRender) / later;
+    std::cerr << "sequence: " << later + 1 << " frames drawn" << (skipped ? ", " : "")
+              << (skipped ? std::to_string(skipped) + " skipped" : std::string())
+              << "; after the first (" << firstTime << " s to render), " << perFrame
+              << " s per frame (load " << laterLoad / later << " s, render " << laterRender / later
+              << " s), " << perFrame / firstTime << " x the first frame's render\n";
+  }
+  return EXIT_SUCCESS;
+}
+
 // The PNG: the window's frame buffer of the frame just rendered.
 int WritePng(const std::string& path, vtkRenderWindow* window, bool verbose)
 {
@@ -354,11 +455,26 @@ int main(int argc, char* argv[])
     : (input.empty() ? "tyndall-cloud.png" : DefaultOutputFor(input));
   const std::string exr = options->GetText("exr");
   const bool verbose = !options->GetFlag("quiet");
+  vtkNew<vtkTyndallFrameSequence> sequence;
+  const bool sequenced = options->IsSet("sequence");
+  if (sequenced &&
+    !sequence->SetUp(input,
+      options->IsSet("output") ? output : vtkTyndallFrameSequence::DefaultOutput(output),
+      static_cast<int>(options->GetNumber("sequence", 0)),
+      static_cast<int>(options->GetNumber("sequence", 1))))
+  {
+    return Fail(sequence->GetErrorMessage(), ExitUsage);
+  }
 
   // The scene: the medium (loaded with progress), its transfer function,
   // camera, lights and background.
   vtkNew<vtkTyndallSceneBuilder> builder;
   builder->SetOptions(options);
+  if (sequenced)
+  {
+    builder->SetFrame(
+      sequence->GetInputPath(sequence->GetFirst()), sequence->GetInputFrame(sequence->GetFirst()));
+  }
   vtkNew<vtkTyndallErrorObserver> errors;
   errors->Watch(builder);
   Progress progress;
@@ -403,7 +519,8 @@ int main(int argc, char* argv[])
     }
     else
     {
-      LogLoaded(input, builder->GetImage(), timer->GetElapsedTime());
+      LogLoaded(sequenced ? sequence->GetInputPath(sequence->GetFirst()) : input,
+        builder->GetImage(), timer->GetElapsedTime());
     }
     double range[2];
     vtkDataArray* scalars = builder->GetImage()->GetPointData()->GetScalars();
@@ -458,6 +575,13 @@ int main(int argc, char* argv[])
   {
     // Sampled detail: the picture is the average of still frames.
     frames = std::max(frames, static_cast<int>(options->GetNumber("detail-frames")));
+  }
+  if (sequenced)
+  {
+    const int status = RenderSequence(
+      window, builder, errors, sequence, frames, options->GetFlag("skip-bad-frames"), verbose);
+    window->Finalize(); // before the display connection closes
+    return status;
   }
   int status = RenderFrames(window, builder, errors, frames, verbose);
   if (status == EXIT_SUCCESS)

@@ -323,6 +323,16 @@ const Spec kOptions[] = {
   { "exr", "", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,
     "also write a linear float OpenEXR image (RGB, 32-bit float, unclamped radiance) captured "
     "from a float frame buffer" },
+  { "sequence", "", Kind::Pair, 0, 1000000, false, "", "FIRST LAST", "", "Output", Render,
+    "render frames FIRST to LAST of a time series, one picture each: INPUT names numbered files "
+    "with a printf frame number (smoke_%04d.vdb is frame 12's smoke_0012.vdb), or is a 4-D file "
+    "(NIfTI) whose time frames they are; -o names the pictures with a frame number too [default: "
+    "<input name>_%04d.png]. Frame FIRST sets the transfer function, camera and lights; each frame "
+    "rebuilds the maps; the times per frame are reported. A missing or damaged frame is an error "
+    "that names it (the pictures before it are written)" },
+  { "skip-bad-frames", "", Kind::Flag, 0, 0, false, "", "", "", "Output", Render,
+    "with --sequence: skip a missing or damaged frame with a warning (no picture for it) instead "
+    "of stopping" },
   { "frames", "", Kind::Integer, 1, 1000, false, "", "N", "1", "Output", Render,
     "render N frames: frames after the first reuse the maps and shaders; their mean time is "
     "reported (the images are identical)" },
@@ -767,6 +777,16 @@ public:
     if (set("preset") && set("transfer-function"))
     {
       return "give either --preset or --transfer-function, not both";
+    }
+    if (set("sequence") && (input.empty() || set("frame") || set("frames") || set("exr")))
+    {
+      return input.empty()
+        ? "--sequence needs an input (numbered files or a 4-D file)"
+        : "--sequence renders frames FIRST to LAST into PNGs: give no --frame, --frames or --exr";
+    }
+    if (set("skip-bad-frames") && !set("sequence"))
+    {
+      return "--skip-bad-frames needs --sequence";
     }
     return std::string();
   }

@@ -410,12 +410,14 @@ bool vtkTyndallSceneBuilder::Update(vtkAlgorithm* source)
   const unsigned long errorTag = source->AddObserver(vtkCommand::ErrorEvent, forward);
   const unsigned long executiveTag =
     source->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
-  source->Update();
+  // (A failed request leaves the last output in place: a sequence's
+  // missing frame would keep the frame before it.)
+  const bool executed = source->GetExecutive()->Update() != 0;
   source->RemoveObserver(progressTag);
   source->RemoveObserver(errorTag);
   source->GetExecutive()->RemoveObserver(executiveTag);
   auto* data = vtkDataSet::SafeDownCast(source->GetOutputDataObject(0));
-  return data && data->GetNumberOfPoints() > 0;
+  return executed && data && data->GetNumberOfPoints() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -578,7 +580,19 @@ bool vtkTyndallSceneBuilder::LoadMedium()
     this->ProgressLabel = "cloud: " + std::to_string(n) + "^3 voxels";
     return this->Run(cloud);
   }
-  vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(o->GetInput());
+  const std::string path = this->FramePath.empty() ? o->GetInput() : this->FramePath;
+  vtkSmartPointer<vtkVolumeFileReader> reader = this->MakeReader(path.c_str());
+  this->ConfigureReader(
+    reader, this->FrameIndex >= 0 ? this->FrameIndex : static_cast<int>(o->GetNumber("frame")));
+  this->ProgressLabel = "loading " + path;
+  // The reader reports its own error (one line starting with the path).
+  return this->Run(reader) && this->LoadMask();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ConfigureReader(vtkVolumeFileReader* reader, int frame)
+{
+  vtkTyndallOptions* o = this->Options;
   if (o->IsSet("grid"))
   {
     reader->SetGridName(o->GetText("grid"));
@@ -592,10 +606,32 @@ bool vtkTyndallSceneBuilder::LoadMedium()
     reader->SetComponent(static_cast<int>(o->GetNumber("component")));
   }
   reader->SetAllComponents(o->GetChoice("components") != 0); // --components
-  reader->SetFrame(static_cast<int>(o->GetNumber("frame")));
-  this->ProgressLabel = std::string("loading ") + o->GetInput();
-  // The reader reports its own error (one line starting with the path).
-  return this->Run(reader) && this->LoadMask();
+  reader->SetFrame(frame);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::SetFrame(const std::string& path, int frame)
+{
+  this->FramePath = path;
+  this->FrameIndex = path.empty() ? -1 : frame;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallSceneBuilder::LoadFrame(const std::string& path, int frame)
+{
+  auto* reader = vtkVolumeFileReader::SafeDownCast(this->Source);
+  if (!reader || !this->Mapper)
+  {
+    vtkErrorMacro(<< "LoadFrame: no volume file was built (Build() first, with an input).");
+    return false;
+  }
+  this->SetFrame(path, frame);
+  reader->SetFileName(path.c_str());
+  reader->SetFrame(frame);
+  this->ProgressLabel = "loading " + path;
+  const bool ok = this->Update(reader);
+  this->Image = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  return ok;
 }
 
 //------------------------------------------------------------------------------

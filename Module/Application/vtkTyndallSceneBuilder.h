@@ -100,6 +100,22 @@ public:
 
   ///@{
   /**
+   * A time series (tyndall-render --sequence): SetFrame() names the file
+   * and its time frame that Build() reads in place of the options' input
+   * and --frame (an empty path: the options' again). After Build(),
+   * LoadFrame() reads another frame into the built scene: the same reader
+   * settings, the volume's data replaced, its transfer function, camera and
+   * lights kept; the mask or labels, added volumes, particles, ground and
+   * surface of the options stay those of the first frame. False, with the
+   * reader's error (naming the file), when the frame cannot be read (the
+   * reader may keep the frame before: do not draw the scene then).
+   */
+  void SetFrame(const std::string& path, int frame);
+  bool LoadFrame(const std::string& path, int frame);
+  ///@}
+
+  ///@{
+  /**
    * What Build() made (null before a successful Build()).
    */
   vtkImageData* GetImage();
@@ -196,6 +212,12 @@ private:
   // The actors with shadows: the receiver pass installed once.
   void ReceiveShadows(vtkRenderer* renderer);
   bool Run(vtkAlgorithm* source);
+
+  // The volume's file and time frame (SetFrame()); "" and -1: the options'.
+  std::string FramePath;
+  int FrameIndex = -1;
+  // LoadMedium()'s and LoadFrame()'s reader settings from the options.
+  void ConfigureReader(vtkVolumeFileReader* reader, int frame);
 
   vtkSmartPointer<vtkAlgorithm> Source;
   vtkSmartPointer<vtkImageData> Image;

@@ -2,7 +2,9 @@
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceOffscreenDraw.h"
@@ -71,6 +73,25 @@ bool Allocated(vtkTextureObject* texture)
   glGetTexLevelParameteriv(texture->GetTarget(), 0, GL_TEXTURE_WIDTH, &width);
   texture->Deactivate();
   return width == static_cast<GLint>(texture->GetWidth());
+}
+
+// The type the volume texture holds for scalars of `type`: 8- and 16-bit
+// integers their own (char as the signed or unsigned char it is here),
+// every other type floats.
+int StoredType(int type)
+{
+  switch (type)
+  {
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_SHORT:
+      return type;
+    case VTK_CHAR:
+      return std::numeric_limits<char>::is_signed ? VTK_SIGNED_CHAR : VTK_UNSIGNED_CHAR;
+    default:
+      return VTK_FLOAT;
+  }
 }
 
 // Releases `texture`'s graphics resources and drops it.
@@ -228,6 +249,14 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
                                         << "th sample.");
   }
   vtkDataArray* scalars = medium.GetScalars();
+  // Asked of the GL before any copy or pass over the data: a volume the
+  // GPU cannot hold fails at once (a 1024^3 float volume: before its 4 GiB
+  // float copy).
+  if (!this->VolumeFits(
+        window, scalars->GetNumberOfComponents(), StoredType(scalars->GetDataType()), reporter))
+  {
+    return false;
+  }
   const void* data = scalars->GetVoidPointer(0);
   switch (scalars->GetDataType())
   {
@@ -337,6 +366,42 @@ bool vtkTransmittanceMediumTextures::UploadFloats(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::VolumeFits(
+  vtkOpenGLRenderWindow* window, int components, int type, vtkObject* reporter)
+{
+  const int* dims = this->Dimensions;
+  vtkNew<vtkTextureObject> probe; // only for the GL's names of the format
+  probe->SetContext(window);
+  vtkOpenGLClearErrorMacro();
+  glTexImage3D(GL_PROXY_TEXTURE_3D, 0,
+    static_cast<GLint>(probe->GetDefaultInternalFormat(type, components, false)), dims[0], dims[1],
+    dims[2], 0, probe->GetDefaultFormat(type, components, false), probe->GetDefaultDataType(type),
+    nullptr);
+  GLint width = 0;
+  glGetTexLevelParameteriv(GL_PROXY_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &width);
+  vtkOpenGLClearErrorMacro();
+  if (width == dims[0])
+  {
+    return true;
+  }
+  this->ReportTooLarge(components, type, " (asked before uploading it)", reporter);
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceMediumTextures::ReportTooLarge(
+  int components, int type, const char* when, vtkObject* reporter) const
+{
+  const int* dims = this->Dimensions;
+  const double mib = static_cast<double>(dims[0]) * dims[1] * dims[2] * components *
+    vtkDataArray::GetDataTypeSize(type) / (1024.0 * 1024.0);
+  vtkErrorWithObjectMacro(reporter,
+    << "The GPU could not create the volume's 3-D texture (" << dims[0] << " x " << dims[1] << " x "
+    << dims[2] << ", " << components << " x " << vtkImageScalarTypeNameMacro(type) << ", " << mib
+    << " MiB" << when << "): too large for its memory, or a format it lacks.");
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* window,
   int components, int type, void* values, unsigned char* valid, vtkObject* reporter)
 {
@@ -352,12 +417,7 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
   if (!this->VolumeTexture->Create3DFromRaw(dims[0], dims[1], dims[2], components, type, values) ||
     !Allocated(this->VolumeTexture))
   {
-    const double mib = static_cast<double>(dims[0]) * dims[1] * dims[2] * components *
-      vtkDataArray::GetDataTypeSize(type) / (1024.0 * 1024.0);
-    vtkErrorWithObjectMacro(reporter,
-      << "The GPU could not create the volume's 3-D texture (" << dims[0] << " x " << dims[1]
-      << " x " << dims[2] << ", " << components << " x " << vtkImageScalarTypeNameMacro(type)
-      << ", " << mib << " MiB): too large for its memory, or a format it lacks.");
+    this->ReportTooLarge(components, type, "", reporter);
     Release(this->VolumeTexture, window);
     return false;
   }

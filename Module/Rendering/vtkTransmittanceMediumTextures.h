@@ -151,6 +151,12 @@ private:
   // texture's size when the GPU cannot hold it.
   bool CreateVolumeTexture(vtkOpenGLRenderWindow* window, int components, int type, void* values,
     unsigned char* valid, vtkObject* reporter);
+  // Whether the GL can create the volume texture (Dimensions, `components`
+  // of `type`), asked with a proxy texture; false with ReportTooLarge().
+  bool VolumeFits(vtkOpenGLRenderWindow* window, int components, int type, vtkObject* reporter);
+  // The error of a volume texture the GPU cannot create, naming its size
+  // (`when`: what to add after the MiB).
+  void ReportTooLarge(int components, int type, const char* when, vtkObject* reporter) const;
   bool UploadTable(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   bool UploadEmission(

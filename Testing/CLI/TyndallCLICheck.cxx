@@ -14,6 +14,8 @@
 //     The EXR has WIDTH x HEIGHT finite RGB pixels whose clamp(v, 0, 1) *
 //     255 agrees with the PNG within MAX_LEVELS; with MIN_MAXIMUM, the EXR's
 //     largest value must reach it (proving unclamped float capture).
+//   differ A B MAX_DB
+//     PSNR of two 8-bit PNGs over RGB below MAX_DB: different pictures.
 //   nonempty PNG MIN_FRACTION [--skip-unless PATH]...
 //     At least MIN_FRACTION of the pixels differ from the corner pixel by
 //     more than 2 levels (something was drawn on the background).
@@ -56,6 +58,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -75,8 +78,8 @@ constexpr int Skip = 125;
 
 int Usage()
 {
-  std::cerr
-    << "usage: TyndallCLICheck run|psnr|exr|nonempty|sharper|make-data ... (see the source)\n";
+  std::cerr << "usage: TyndallCLICheck run|psnr|differ|exr|nonempty|sharper|make-data ... (see the "
+               "source)\n";
   return Fail;
 }
 
@@ -261,6 +264,27 @@ double Pixel(vtkImageData* image, int x, int y, int c)
   return image->GetScalarComponentAsDouble(x, y, 0, c);
 }
 
+// PSNR in dB of two 8-bit pictures of one size over RGB (inf when equal).
+double PsnrOf(vtkImageData* a, vtkImageData* b)
+{
+  int d[3];
+  a->GetDimensions(d);
+  double sum = 0.0;
+  for (int y = 0; y < d[1]; ++y)
+  {
+    for (int x = 0; x < d[0]; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double e = Pixel(a, x, y, c) - Pixel(b, x, y, c);
+        sum += e * e;
+      }
+    }
+  }
+  const double mse = sum / (3.0 * d[0] * d[1]);
+  return mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+}
+
 int Psnr(const std::vector<std::string>& args)
 {
   if (args.size() < 3)
@@ -299,26 +323,45 @@ int Psnr(const std::vector<std::string>& args)
               << db[0] << " x " << db[1] << "\n";
     return Fail;
   }
-  double sum = 0.0;
-  for (int y = 0; y < da[1]; ++y)
-  {
-    for (int x = 0; x < da[0]; ++x)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        const double d = Pixel(a, x, y, c) - Pixel(b, x, y, c);
-        sum += d * d;
-      }
-    }
-  }
-  const double mse = sum / (3.0 * da[0] * da[1]);
-  const double psnr =
-    mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : std::numeric_limits<double>::infinity();
+  const double psnr = PsnrOf(a, b);
   std::cout << "PSNR of " << candidate << " against " << baseline << ": " << psnr << " dB (floor "
             << floor << " dB)\n";
   if (!(psnr >= floor))
   {
     std::cout << "FAIL: below the floor\n";
+    return Fail;
+  }
+  return Pass;
+}
+
+// differ A B MAX_DB: the two pictures must be different ones (PSNR below MAX_DB).
+int Differ(const std::vector<std::string>& args)
+{
+  if (args.size() != 3)
+  {
+    return Usage();
+  }
+  auto a = ReadPNG(args[0]);
+  auto b = ReadPNG(args[1]);
+  if (!a || !b)
+  {
+    return Fail;
+  }
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  if (da[0] != db[0] || da[1] != db[1])
+  {
+    std::cout << args[0] << " and " << args[1] << " differ in size: different pictures\n";
+    return Pass;
+  }
+  const double psnr = PsnrOf(a, b);
+  const double ceiling = std::atof(args[2].c_str());
+  std::cout << "PSNR of " << args[0] << " against " << args[1] << ": " << psnr
+            << " dB (they must differ: below " << ceiling << " dB)\n";
+  if (!(psnr < ceiling))
+  {
+    std::cout << "FAIL: the same picture\n";
     return Fail;
   }
   return Pass;
@@ -636,6 +679,27 @@ int MakeData(const std::vector<std::string>& args)
     writer->Write();
   }
   {
+    // A numbered sequence of the 4-D file's frames (frame c: the blob times
+    // c + 1), seq/blob_0000.mha .. blob_0002.mha; frame 3 is missing.
+    vtksys::SystemTools::MakeDirectory(dir + "/seq");
+    for (int c = 0; c < 3; ++c)
+    {
+      auto frame = Blob(1);
+      vtkDataArray* values = frame->GetPointData()->GetScalars();
+      for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+      {
+        values->SetComponent(i, 0, (c + 1) * values->GetComponent(i, 0));
+      }
+      char name[64];
+      std::snprintf(name, sizeof(name), "/seq/blob_%04d.mha", c);
+      vtkNew<vtkMetaImageWriter> writer;
+      writer->SetInputData(frame);
+      writer->SetFileName((dir + name).c_str());
+      writer->SetCompression(false);
+      writer->Write();
+    }
+  }
+  {
     vtkNew<vtkStructuredPointsWriter> writer;
     writer->SetInputData(blob);
     writer->SetFileName((dir + "/blob.vtk").c_str());
@@ -849,6 +913,8 @@ int main(int argc, char* argv[])
     return Psnr(args);
   if (mode == "exr")
     return Exr(args);
+  if (mode == "differ")
+    return Differ(args);
   if (mode == "nonempty")
     return NonEmpty(args);
   if (mode == "sharper")

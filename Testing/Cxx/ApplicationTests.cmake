@@ -3,6 +3,7 @@
 # scene builder (no display needed: nothing is rendered).
 vtk_add_test_cxx(TyndallApplicationCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
+  TestTyndallFrameSequence.cxx
   TestTyndallOptions.cxx
   TestTyndallSceneBuilder.cxx)
 vtk_test_cxx_executable(TyndallApplicationCxxTests tests)
