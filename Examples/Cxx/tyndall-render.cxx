@@ -9,6 +9,7 @@
 // image. The PNG's path is printed on stdout; progress and timings go to
 // stderr. See Documentation/cli.md.
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFramebufferPass.h"
@@ -37,6 +38,10 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#ifdef TYNDALL_HAVE_THEORA
+#include "vtkOggTheoraWriter.h"
+#endif
+
 #ifdef TYNDALL_HAVE_OPENEXR
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -46,6 +51,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -304,27 +310,138 @@ int RenderFrames(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
 
 int WritePng(const std::string& path, vtkRenderWindow* window, bool verbose);
 
-// A time series (--sequence): frame FIRST is the built scene; each later
-// frame is read into it, rendered (the maps rebuilt) and written to its own
-// picture, with its times. A frame that cannot be read ends the run (or,
-// with `skipBad`, is skipped with a warning).
+// --video: the pictures of a sequence as an Ogg Theora video, each taken
+// from the window's frame buffer after its PNG. A run that fails removes
+// the video (never half a video).
+class Video
+{
+public:
+  // False (with the reason printed) where this build has no encoder.
+  bool Open(const std::string& path, int rate, vtkRenderWindow* window)
+  {
+    this->Path = path;
+#ifdef TYNDALL_HAVE_THEORA
+    this->Grab->SetInput(window);
+    this->Grab->ReadFrontBufferOff();
+    this->Grab->ShouldRerenderOff();
+    this->Writer->SetInputConnection(this->Grab->GetOutputPort());
+    this->Writer->SetFileName(path.c_str());
+    this->Writer->SetRate(rate);
+    this->Writer->SetQuality(2);
+    this->Errors->Watch(this->Writer);
+    // The writer opens its file at the first frame: a path that cannot be
+    // written is found here, before any rendering.
+    if (FILE* probe = vtksys::SystemTools::Fopen(path, "wb"))
+    {
+      std::fclose(probe);
+    }
+    else
+    {
+      Fail("cannot write the video " + path);
+      return false;
+    }
+    this->Writer->Start();
+    this->Started = !this->Errors->HasErrors();
+    if (!this->Started)
+    {
+      Fail("cannot write the video " + path + ": " + this->Errors->GetMessages().front());
+      vtksys::SystemTools::RemoveFile(path);
+    }
+    return this->Started;
+#else
+    (void)rate;
+    (void)window;
+    Fail("--video is not available: this build's VTK has no Ogg Theora writer "
+         "(VTK::IOOggTheora)");
+    return false;
+#endif
+  }
+  // The frame just rendered; false (printed) when the encoder fails.
+  bool Add()
+  {
+#ifdef TYNDALL_HAVE_THEORA
+    this->Grab->Modified();
+    this->Writer->Write();
+    if (this->Errors->HasErrors() || this->Writer->GetErrorCode() != 0)
+    {
+      Fail("cannot write the video " + this->Path + ": " +
+        (this->Errors->HasErrors() ? this->Errors->GetMessages().front()
+                                   : std::string("the encoder failed")));
+      return false;
+    }
+    ++this->Frames;
+#endif
+    return true;
+  }
+  // Ends the file: kept (its path printed) when `keep` and a frame is in it, else removed.
+  void Close(bool keep)
+  {
+    if (this->Path.empty())
+    {
+      return; // no --video
+    }
+#ifdef TYNDALL_HAVE_THEORA
+    if (!this->Started)
+    {
+      return;
+    }
+    this->Writer->End();
+    this->Started = false;
+#endif
+    if (keep && this->Frames > 0)
+    {
+      std::cout << vtksys::SystemTools::CollapseFullPath(this->Path) << std::endl;
+    }
+    else
+    {
+      vtksys::SystemTools::RemoveFile(this->Path);
+    }
+  }
+  int GetFrames() const
+  {
+    return this->Frames;
+  }
+
+private:
+  std::string Path;
+  int Frames = 0;
+#ifdef TYNDALL_HAVE_THEORA
+  bool Started = false;
+  vtkNew<vtkWindowToImageFilter> Grab;
+  vtkNew<vtkOggTheoraWriter> Writer;
+  vtkNew<vtkTyndallErrorObserver> Errors;
+#endif
+};
+
+// A time series (--sequence) or a camera path (--orbit): frame FIRST is the
+// built scene; each later frame of a series is read into it; the camera
+// takes the path's place for the frame; each is rendered (the maps rebuilt
+// when the data changed) and written to its own picture (and the video),
+// with its times. A frame that cannot be read ends the run (or, with
+// `skipBad`, is skipped with a warning).
 int RenderSequence(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
   vtkTyndallErrorObserver* errors, vtkTyndallFrameSequence* sequence, int renders, bool skipBad,
-  bool verbose)
+  Video* video, bool verbose)
 {
   vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
   vtkTransmittanceVolumeMapper* mapper = builder->GetMapper();
+  vtkNew<vtkCamera> start; // the camera of frame FIRST, where the orbit starts
+  start->DeepCopy(renderer->GetActiveCamera());
   vtkNew<vtkTimerLog> timer;
   double firstTime = 0.0, laterLoad = 0.0, laterRender = 0.0;
   int later = 0, skipped = 0;
+  const int buildsBefore = mapper->GetMapBuildCount();
   for (int f = sequence->GetFirst(); f <= sequence->GetLast(); ++f)
   {
     const std::string input = sequence->GetInputPath(f);
-    const std::string what = "frame " + std::to_string(f) + " (" + input +
-      (sequence->GetNumberedFiles() ? std::string() : ", time frame " + std::to_string(f)) + ")";
+    const std::string what = "frame " + std::to_string(f) +
+      (sequence->GetStill() ? std::string()
+                            : " (" + input +
+            (sequence->GetNumberedFiles() ? std::string() : ", time frame " + std::to_string(f)) +
+            ")");
     double load = 0.0;
     errors->Clear();
-    if (f != sequence->GetFirst())
+    if (f != sequence->GetFirst() && !sequence->GetStill())
     {
       timer->StartTimer();
       const bool loaded = builder->LoadFrame(input, sequence->GetInputFrame(f));
@@ -343,9 +460,16 @@ int RenderSequence(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
         continue;
       }
     }
-    // The camera's near and far planes around this frame's data (a
-    // simulation's box may grow); `renders` still frames (sampled detail
-    // averages them).
+    // The camera on its path, its near and far planes around this frame's
+    // data (a simulation's box may grow); `renders` still frames (sampled
+    // detail averages them).
+    if (sequence->GetOrbitDegrees() != 0.0)
+    {
+      vtkCamera* camera = renderer->GetActiveCamera();
+      camera->DeepCopy(start);
+      camera->Azimuth(sequence->GetAzimuth(f));
+      camera->OrthogonalizeViewUp();
+    }
     renderer->ResetCameraClippingRange();
     const int builds = mapper->GetMapBuildCount();
     timer->StartTimer();
@@ -361,7 +485,7 @@ int RenderSequence(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
       return Fail(what + ": rendering failed: " + errors->GetMessages().front());
     }
     const std::string output = sequence->GetOutputPath(f);
-    if (WritePng(output, window, false) != EXIT_SUCCESS)
+    if (WritePng(output, window, false) != EXIT_SUCCESS || (video && !video->Add()))
     {
       return ExitFailure;
     }
@@ -396,7 +520,14 @@ int RenderSequence(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
               << (skipped ? std::to_string(skipped) + " skipped" : std::string())
               << "; after the first (" << firstTime << " s to render), " << perFrame
               << " s per frame (load " << laterLoad / later << " s, render " << laterRender / later
-              << " s), " << perFrame / firstTime << " x the first frame's render\n";
+              << " s), " << perFrame / firstTime << " x the first frame's render; maps built "
+              << mapper->GetMapBuildCount() - buildsBefore
+              << (mapper->GetMapBuildCount() - buildsBefore == 1 ? " time" : " times")
+              << " in all\n";
+  }
+  if (verbose && video)
+  {
+    std::cerr << "video: " << video->GetFrames() << " frames\n";
   }
   return EXIT_SUCCESS;
 }
@@ -456,21 +587,28 @@ int main(int argc, char* argv[])
   const std::string exr = options->GetText("exr");
   const bool verbose = !options->GetFlag("quiet");
   vtkNew<vtkTyndallFrameSequence> sequence;
-  const bool sequenced = options->IsSet("sequence");
-  if (sequenced &&
-    !sequence->SetUp(input,
-      options->IsSet("output") ? output : vtkTyndallFrameSequence::DefaultOutput(output),
-      static_cast<int>(options->GetNumber("sequence", 0)),
-      static_cast<int>(options->GetNumber("sequence", 1))))
+  const bool series = options->IsSet("sequence");
+  const bool sequenced = series || options->IsSet("orbit");
+  if (sequenced)
   {
-    return Fail(sequence->GetErrorMessage(), ExitUsage);
+    const std::string pictures =
+      options->IsSet("output") ? output : vtkTyndallFrameSequence::DefaultOutput(output);
+    const bool ok = series
+      ? sequence->SetUp(input, pictures, static_cast<int>(options->GetNumber("sequence", 0)),
+          static_cast<int>(options->GetNumber("sequence", 1)))
+      : sequence->SetUpStill(pictures, static_cast<int>(options->GetNumber("orbit-frames")));
+    if (!ok)
+    {
+      return Fail(sequence->GetErrorMessage(), ExitUsage);
+    }
+    sequence->SetOrbitDegrees(options->GetNumber("orbit"));
   }
 
   // The scene: the medium (loaded with progress), its transfer function,
   // camera, lights and background.
   vtkNew<vtkTyndallSceneBuilder> builder;
   builder->SetOptions(options);
-  if (sequenced)
+  if (series)
   {
     builder->SetFrame(
       sequence->GetInputPath(sequence->GetFirst()), sequence->GetInputFrame(sequence->GetFirst()));
@@ -519,8 +657,8 @@ int main(int argc, char* argv[])
     }
     else
     {
-      LogLoaded(sequenced ? sequence->GetInputPath(sequence->GetFirst()) : input,
-        builder->GetImage(), timer->GetElapsedTime());
+      LogLoaded(series ? sequence->GetInputPath(sequence->GetFirst()) : input, builder->GetImage(),
+        timer->GetElapsedTime());
     }
     double range[2];
     vtkDataArray* scalars = builder->GetImage()->GetPointData()->GetScalars();
@@ -578,8 +716,18 @@ int main(int argc, char* argv[])
   }
   if (sequenced)
   {
-    const int status = RenderSequence(
-      window, builder, errors, sequence, frames, options->GetFlag("skip-bad-frames"), verbose);
+    Video video;
+    const bool withVideo = options->IsSet("video");
+    if (withVideo &&
+      !video.Open(
+        options->GetText("video"), static_cast<int>(options->GetNumber("video-rate")), window))
+    {
+      window->Finalize();
+      return ExitFailure;
+    }
+    const int status = RenderSequence(window, builder, errors, sequence, frames,
+      options->GetFlag("skip-bad-frames"), withVideo ? &video : nullptr, verbose);
+    video.Close(status == EXIT_SUCCESS);
     window->Finalize(); // before the display connection closes
     return status;
   }

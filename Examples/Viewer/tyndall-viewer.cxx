@@ -34,6 +34,7 @@
 #include "vtkTransform.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallErrorObserver.h"
+#include "vtkTyndallFrameSequence.h"
 #include "vtkTyndallOptions.h"
 #include "vtkTyndallSceneBuilder.h"
 #include "vtkVolumeFileReader.h"
@@ -50,6 +51,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -68,8 +70,11 @@ std::string Description()
     "Mouse: left-drag orbit, middle-drag or shift+left-drag pan, wheel or\n"
     "right-drag zoom, ctrl+left-drag or L+left-drag move the key light.\n"
     "Script commands (--script, --events): orbit AZ EL, pan DX DY, zoom F,\n"
-    "light AZ EL, drag BUTTON[+shift|+ctrl|+l] DX DY, key K, frames N,\n"
-    "resize W H, hud on|off, screenshot PATH, report, quit.\n\n"
+    "light AZ EL, drag BUTTON[+shift|+ctrl|+l] DX DY, key K (a character,\n"
+    "plus, minus, space, left, right or esc), frames N, resize W H,\n"
+    "hud on|off, screenshot PATH, report, quit.\n"
+    "A time series (--sequence FIRST LAST): Space plays and pauses, the arrow\n"
+    "keys step.\n\n"
     "Volumes it reads:\n";
   return text + vtkVolumeFileReader::GetFormatsDescription();
 }
@@ -105,6 +110,18 @@ bool ParseKey(const std::string& name, int& key)
   else if (lower == "plus")
   {
     key = '+';
+  }
+  else if (lower == "space")
+  {
+    key = ' ';
+  }
+  else if (lower == "left")
+  {
+    key = vtkTyndallOptions::KEY_LEFT;
+  }
+  else if (lower == "right")
+  {
+    key = vtkTyndallOptions::KEY_RIGHT;
   }
   else if (lower == "minus")
   {
@@ -256,7 +273,7 @@ std::string ValidateCommand(const Command& c)
   {
     return c.Args.size() == 1 && ParseKey(c.Args[0], iv)
       ? ""
-      : "needs one key: a character, plus, minus or esc";
+      : "needs one key: a character, plus, minus, space, left, right or esc";
   }
   if (c.Verb == "frames")
   {
@@ -390,6 +407,11 @@ private:
     this->LastAveraged = averaged;
   }
 
+  // A time series (--sequence): the frame shown, playback.
+  bool SetUpSequence();
+  void StepFrame(int delta);
+  void PlayOn();
+
   void RenderFrame();
   bool WriteScreenshot(const std::string& path);
   void UpdateText();
@@ -431,6 +453,12 @@ private:
   vtkNew<vtkTextActor> Text;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> RenderWindow;
   double InitialCamera[10] = {};
+
+  vtkNew<vtkTyndallFrameSequence> Sequence;
+  bool Sequenced = false;
+  int ShownFrame = 0;
+  bool Playing = false;
+  std::chrono::steady_clock::time_point NextPlayFrame;
 
   bool Quit = false;
   bool NeedsRender = true;
@@ -477,6 +505,10 @@ bool Viewer::LoadScene()
   vtkNew<vtkTyndallErrorObserver> errors;
   errors->Watch(this->Builder);
   this->Builder->SetOptions(this->Options);
+  if (!this->SetUpSequence())
+  {
+    return false;
+  }
   if (!this->Builder->Build(this->Renderer))
   {
     for (const std::string& message : errors->GetMessages())
@@ -498,6 +530,77 @@ bool Viewer::LoadScene()
   camera->GetViewUp(&this->InitialCamera[6]);
   this->InitialCamera[9] = camera->GetViewAngle();
   return true;
+}
+
+// --sequence: frame FIRST is the one Build() reads.
+bool Viewer::SetUpSequence()
+{
+  this->Sequenced = this->Options->IsSet("sequence");
+  if (!this->Sequenced)
+  {
+    return true;
+  }
+  if (!this->Sequence->SetUp(this->Options->GetInput(), std::string(),
+        static_cast<int>(this->Options->GetNumber("sequence", 0)),
+        static_cast<int>(this->Options->GetNumber("sequence", 1))))
+  {
+    std::cerr << Program << ": " << this->Sequence->GetErrorMessage() << "\n";
+    return false;
+  }
+  this->ShownFrame = this->Sequence->GetFirst();
+  this->Builder->SetFrame(this->Sequence->GetInputPath(this->ShownFrame),
+    this->Sequence->GetInputFrame(this->ShownFrame));
+  return true;
+}
+
+// The sequence's frame `delta` steps away (looping), read into the scene; a
+// frame that cannot be read is skipped with a warning, and when none can,
+// the frame shown stays.
+void Viewer::StepFrame(int delta)
+{
+  if (!this->Sequenced)
+  {
+    std::cerr << Program << ": no sequence to step through (--sequence FIRST LAST)\n";
+    return;
+  }
+  const int first = this->Sequence->GetFirst();
+  const int count = this->Sequence->GetLast() - first + 1;
+  vtkNew<vtkTyndallErrorObserver> errors;
+  errors->Watch(this->Builder);
+  int frame = this->ShownFrame;
+  for (int tries = 0; tries < count; ++tries)
+  {
+    frame = first + ((frame - first + delta) % count + count) % count;
+    errors->Clear();
+    const std::string path = this->Sequence->GetInputPath(frame);
+    if (this->Builder->LoadFrame(path, this->Sequence->GetInputFrame(frame)))
+    {
+      this->ShownFrame = frame;
+      this->Renderer->ResetCameraClippingRange();
+      this->NeedsRender = true;
+      return;
+    }
+    std::cerr << Program << ": warning: skipped frame " << frame << " (" << path
+              << "): " << (errors->HasErrors() ? errors->GetMessages().front() : "cannot be read")
+              << "\n";
+    delta = delta < 0 ? -1 : 1;
+  }
+  // None could be read: the frame shown again (the reader may hold a failed one).
+  std::cerr << Program << ": warning: no other frame can be read; frame " << this->ShownFrame
+            << " stays\n";
+  this->Builder->LoadFrame(this->Sequence->GetInputPath(this->ShownFrame),
+    this->Sequence->GetInputFrame(this->ShownFrame));
+  this->NeedsRender = true;
+}
+
+// While playing: the next frame, no sooner than --play-rate allows.
+void Viewer::PlayOn()
+{
+  std::this_thread::sleep_until(this->NextPlayFrame);
+  this->NextPlayFrame = std::chrono::steady_clock::now() +
+    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(1.0 / this->Options->GetNumber("play-rate")));
+  this->StepFrame(1);
 }
 
 //------------------------------------------------------------------------------
@@ -679,6 +782,11 @@ void Viewer::UpdateText()
     os << "-- ms";
   }
   os << " | map builds " << this->Mapper->GetMapBuildCount();
+  if (this->Sequenced)
+  {
+    os << " | frame " << this->ShownFrame << " of " << this->Sequence->GetFirst() << ".."
+       << this->Sequence->GetLast() << (this->Playing ? " playing" : "");
+  }
   if (this->Mapper->GetLastImageReduction() > 1)
   {
     os << " | 1/" << this->Mapper->GetLastImageReduction() << " size";
@@ -787,8 +895,10 @@ void Viewer::LogFrame()
             << this->Mapper->GetMapBuildCount() << " method "
             << this->Mapper->GetTransmittanceMethodAsString() << " coefficients "
             << this->Mapper->GetNumberOfCoefficients() << " reduction "
-            << this->Mapper->GetLastImageReduction() << " command "
-            << (this->CurrentCommand.empty() ? "-" : this->CurrentCommand) << std::endl;
+            << this->Mapper->GetLastImageReduction() << " sequence-frame "
+            << (this->Sequenced ? std::to_string(this->ShownFrame) : std::string("-"))
+            << " command " << (this->CurrentCommand.empty() ? "-" : this->CurrentCommand)
+            << std::endl;
 }
 
 //------------------------------------------------------------------------------
@@ -942,6 +1052,20 @@ void Viewer::Key(int key)
   else if (name == "quit")
   {
     this->Quit = true;
+  }
+  else if (name == "play")
+  {
+    this->Playing = this->Sequenced && !this->Playing;
+    this->NextPlayFrame = std::chrono::steady_clock::now();
+    if (!this->Sequenced)
+    {
+      std::cerr << Program << ": no sequence to play (--sequence FIRST LAST)\n";
+    }
+  }
+  else if (name == "next-frame" || name == "previous-frame")
+  {
+    this->Playing = false;
+    this->StepFrame(name == "next-frame" ? 1 : -1);
   }
   else
   {
@@ -1109,6 +1233,14 @@ void Viewer::OnKey(GLFWwindow* w, int key, int, int action, int)
   {
     From(w)->Key(27);
   }
+  else if (key == GLFW_KEY_SPACE && action == GLFW_PRESS)
+  {
+    From(w)->Key(' ');
+  }
+  else if ((key == GLFW_KEY_LEFT || key == GLFW_KEY_RIGHT) && action != GLFW_RELEASE)
+  {
+    From(w)->Key(key == GLFW_KEY_LEFT ? vtkTyndallOptions::KEY_LEFT : vtkTyndallOptions::KEY_RIGHT);
+  }
 }
 
 void Viewer::OnChar(GLFWwindow* w, unsigned int codepoint)
@@ -1143,6 +1275,8 @@ int Viewer::Run()
   bool announced = this->Script.empty();
   while (!this->Quit && !glfwWindowShouldClose(this->Window))
   {
+    // Playing from the frame before on: this frame shows the next one.
+    const bool wasPlaying = this->Playing;
     bool scripted = false;
     if (framesLeft > 0)
     {
@@ -1166,7 +1300,7 @@ int Viewer::Run()
       std::cerr << Program << ": script finished; the window stays open (q quits)\n";
     }
 
-    if (scripted || this->NeedsRender || this->Refine)
+    if (scripted || this->NeedsRender || this->Refine || this->Playing)
     {
       glfwPollEvents();
     }
@@ -1177,6 +1311,10 @@ int Viewer::Run()
     if (this->Quit)
     {
       break;
+    }
+    if (wasPlaying && this->Playing)
+    {
+      this->PlayOn();
     }
     if (this->NeedsRender || scripted || this->Refine)
     {

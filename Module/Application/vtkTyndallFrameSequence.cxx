@@ -125,10 +125,8 @@ bool vtkTyndallFrameSequence::SetUp(
       "' has more than one frame number; a sequence's names have one";
     return false;
   }
-  if (outputNumbers == 0)
+  if (!this->CheckOutput(output, outputNumbers))
   {
-    this->ErrorMessage = "the pictures of a sequence need a frame number in their name: '" +
-      output + "' has none (e.g. " + DefaultOutput(output) + ")";
     return false;
   }
   if (inputNumbers == 0 && !IsFourDimensional(input))
@@ -149,12 +147,66 @@ bool vtkTyndallFrameSequence::SetUp(
   this->First = first;
   this->Last = last;
   this->NumberedFiles = inputNumbers == 1;
+  this->Still = false;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallFrameSequence::CheckOutput(const std::string& output, int numbers)
+{
+  if (numbers == 0 && !output.empty())
+  {
+    this->ErrorMessage = "the pictures of a sequence need a frame number in their name: '" +
+      output + "' has none (e.g. " + DefaultOutput(output) + ")";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallFrameSequence::SetUpStill(const std::string& output, int count)
+{
+  this->ErrorMessage.clear();
+  std::string error;
+  const int numbers = CountFrameNumbers(output, error);
+  if (numbers < 0 || numbers > 1)
+  {
+    this->ErrorMessage = numbers < 0
+      ? error
+      : "'" + output + "' has more than one frame number; a sequence's names have one";
+    return false;
+  }
+  if (!this->CheckOutput(output, numbers))
+  {
+    return false;
+  }
+  if (count < 1)
+  {
+    this->ErrorMessage = "a sequence has at least one picture (" + std::to_string(count) + ")";
+    return false;
+  }
+  this->Input.clear();
+  this->Output = output;
+  this->First = 0;
+  this->Last = count - 1;
+  this->NumberedFiles = false;
+  this->Still = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkTyndallFrameSequence::GetAzimuth(int frame) const
+{
+  return this->OrbitDegrees * (frame - this->First) / (this->Last - this->First + 1);
 }
 
 //------------------------------------------------------------------------------
 std::string vtkTyndallFrameSequence::GetInputPath(int frame) const
 {
+  if (this->Still)
+  {
+    return std::string();
+  }
   return this->NumberedFiles ? Format(this->Input, frame) : Format(this->Input, 0);
 }
 
@@ -179,4 +231,6 @@ void vtkTyndallFrameSequence::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "First: " << this->First << "\n";
   os << indent << "Last: " << this->Last << "\n";
   os << indent << "NumberedFiles: " << this->NumberedFiles << "\n";
+  os << indent << "Still: " << this->Still << "\n";
+  os << indent << "OrbitDegrees: " << this->OrbitDegrees << "\n";
 }

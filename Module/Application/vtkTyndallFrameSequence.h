@@ -16,7 +16,14 @@
  * its picture goes. DefaultOutput() makes an output pattern from a picture
  * name ("smoke_%04d.png" stays, "blob-4d.png" becomes "blob-4d_%04d.png").
  *
- * Not wrapped (a program-level helper of tyndall-render).
+ * A sequence can also be pictures of one still scene (SetUpStill(): no
+ * input, pictures 0 to count - 1), for a camera path alone. The camera path
+ * is an orbit: SetOrbitDegrees() turns the camera that many degrees about
+ * the data over the pictures, picture i of n at GetAzimuth(i) = degrees x
+ * i / n (so a full turn loops without repeating a picture); 0 (the default)
+ * keeps it still.
+ *
+ * Not wrapped (a program-level helper of tyndall-render and the viewer).
  */
 
 #ifndef vtkTyndallFrameSequence_h
@@ -35,13 +42,36 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * The input pattern (numbered files) or 4-D file, the output pattern and
-   * frames `first` to `last`. False, with GetErrorMessage(), for a pattern
+   * The input pattern (numbered files) or 4-D file, the output pattern (or
+   * "": no pictures, as in the viewer) and frames `first` to `last`. False,
+   * with GetErrorMessage(), for a pattern
    * with more than one frame number or a malformed one, an output without a
    * frame number, an input with none that is no 4-D file (NIfTI), or
    * last < first.
    */
   bool SetUp(const std::string& input, const std::string& output, int first, int last);
+
+  /**
+   * Pictures 0 to `count` - 1 of one still scene, named by the output
+   * pattern (a camera path alone). False, with GetErrorMessage(), for an
+   * output without one frame number or a count below 1.
+   */
+  bool SetUpStill(const std::string& output, int count);
+
+  /// Whether the pictures are of one still scene (SetUpStill()).
+  bool GetStill() const { return this->Still; }
+
+  ///@{
+  /**
+   * The orbit: the camera turns this many degrees (about the view-up through
+   * the focal point) over the pictures; 0, the default, keeps it still.
+   */
+  void SetOrbitDegrees(double degrees) { this->OrbitDegrees = degrees; }
+  double GetOrbitDegrees() const { return this->OrbitDegrees; }
+  ///@}
+
+  /// The camera's turn at `frame` from frame First's: degrees x (frame - First) / count.
+  double GetAzimuth(int frame) const;
 
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
   int GetFirst() const { return this->First; }
@@ -50,7 +80,8 @@ public:
   bool GetNumberedFiles() const { return this->NumberedFiles; }
 
   ///@{
-  /// The file to read for `frame`, the time frame within it, and the picture's path.
+  /// The file to read for `frame` (empty for a still scene), the time frame within it, and the
+  /// picture's path.
   std::string GetInputPath(int frame) const;
   int GetInputFrame(int frame) const;
   std::string GetOutputPath(int frame) const;
@@ -88,6 +119,10 @@ private:
   int First = 0;
   int Last = 0;
   bool NumberedFiles = false;
+  bool Still = false;
+  double OrbitDegrees = 0.0;
+
+  bool CheckOutput(const std::string& output, int numbers);
 };
 
 #endif

@@ -330,9 +330,32 @@ const Spec kOptions[] = {
     "<input name>_%04d.png]. Frame FIRST sets the transfer function, camera and lights; each frame "
     "rebuilds the maps; the times per frame are reported. A missing or damaged frame is an error "
     "that names it (the pictures before it are written)" },
+  { "sequence", "", Kind::Pair, 0, 1000000, false, "", "FIRST LAST", "", "Viewer", Viewer,
+    "show frames FIRST to LAST of a time series (INPUT as for tyndall-render --sequence: "
+    "numbered files such as smoke_%04d.vdb, or a 4-D NIfTI file): Space plays and pauses, the "
+    "left and right arrows step (both loop). Frame FIRST sets the transfer function, camera and "
+    "lights; each frame rebuilds the maps. A frame that cannot be read is skipped with a warning "
+    "(the frame before stays)" },
+  { "play-rate", "", Kind::Number, 0.1, 240, false, "", "FPS", "24", "Viewer", Viewer,
+    "with --sequence: frames per second while playing, at most (a frame is shown when it is "
+    "read and drawn)" },
   { "skip-bad-frames", "", Kind::Flag, 0, 0, false, "", "", "", "Output", Render,
     "with --sequence: skip a missing or damaged frame with a warning (no picture for it) instead "
     "of stopping" },
+  { "orbit", "", Kind::Number, -36000, 36000, false, "", "DEGREES", "", "Output", Render,
+    "a camera path: the camera turns DEGREES about the data (about the view-up through the "
+    "focal point) over the pictures, picture i of n at DEGREES x i / n (360 loops without "
+    "repeating a picture). With --sequence over its frames, else --orbit-frames pictures of the "
+    "one scene (the maps are built once); -o names them with a frame number [default: <name>_"
+    "%04d.png]. The scene's lights stay where they are (a headlight turns with the camera)" },
+  { "orbit-frames", "", Kind::Integer, 1, 100000, false, "", "N", "36", "Output", Render,
+    "with --orbit and no --sequence: the number of pictures" },
+  { "video", "", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,
+    "with --sequence or --orbit: also write the pictures as an Ogg Theora video (.ogv; VTK's "
+    "vtkOggTheoraWriter and libtheora, the encoder Debian's VTK has). A run that fails leaves no "
+    "video; skipped frames are not in it" },
+  { "video-rate", "", Kind::Integer, 1, 120, false, "", "FPS", "24", "Output", Render,
+    "the video's frames per second" },
   { "frames", "", Kind::Integer, 1, 1000, false, "", "N", "1", "Output", Render,
     "render N frames: frames after the first reuse the maps and shaders; their mean time is "
     "reported (the images are identical)" },
@@ -360,6 +383,12 @@ const Spec kOptions[] = {
     "screenshot (tyndall-viewer-NNN.png)", KeyMode::Toggle, "s" },
   { "quit", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer, "quit", KeyMode::Toggle,
     "q\033" },
+  { "play", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer,
+    "play or pause the sequence (--sequence)", KeyMode::Toggle, " " },
+  { "next-frame", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer,
+    "the sequence's next frame (after the last: the first)", KeyMode::Toggle, "\035" },
+  { "previous-frame", "", Kind::Action, 0, 0, false, "", "", "", "Keys", Viewer,
+    "the sequence's frame before (before the first: the last)", KeyMode::Toggle, "\034" },
 };
 
 struct Value
@@ -788,6 +817,28 @@ public:
     {
       return "--skip-bad-frames needs --sequence";
     }
+    if (set("play-rate") && !set("sequence"))
+    {
+      return "--play-rate needs --sequence";
+    }
+    if (set("orbit") && !set("sequence") && (set("frame") || set("frames") || set("exr")))
+    {
+      return "--orbit renders pictures along the path into PNGs: give no --frame, --frames or "
+             "--exr";
+    }
+    if (set("orbit-frames") && (!set("orbit") || set("sequence")))
+    {
+      return set("sequence") ? "--orbit-frames is for a still scene: --sequence sets the frames"
+                             : "--orbit-frames needs --orbit";
+    }
+    if (set("video") && !set("sequence") && !set("orbit"))
+    {
+      return "--video needs --sequence or --orbit (the pictures it holds)";
+    }
+    if (set("video-rate") && !set("video"))
+    {
+      return "--video-rate needs --video";
+    }
     return std::string();
   }
 
@@ -1161,7 +1212,22 @@ std::string vtkTyndallOptions::GetKeyHelp()
       continue;
     }
     std::string keys;
-    auto name = [](char c) { return c == '\033' ? std::string("Esc") : std::string(1, c); };
+    auto name = [](char c)
+    {
+      switch (c)
+      {
+        case '\033':
+          return std::string("Esc");
+        case ' ':
+          return std::string("Space");
+        case KEY_LEFT:
+          return std::string("Left");
+        case KEY_RIGHT:
+          return std::string("Right");
+        default:
+          return std::string(1, c);
+      }
+    };
     if (s.Mode == KeyMode::Choose)
     {
       keys = name(s.KeysUp[0]) + ".." + name(s.KeysUp[std::strlen(s.KeysUp) - 1]);

@@ -157,11 +157,19 @@ public:
   double GetLightIntensity(int light);
   ///@}
 
+  /// The codes ApplyKey() takes for the arrow keys (characters otherwise).
+  enum Keys
+  {
+    KEY_LEFT = 28, ///< the left arrow
+    KEY_RIGHT = 29 ///< the right arrow
+  };
+
   /**
    * The viewer's keys: changes the option `key` is bound to (a method
    * number, +/- coefficients, ...) and returns the option's name, or the
-   * name of a viewer action ("hud", "reset", "screenshot", "quit"); nullptr
-   * for a key that is not bound.
+   * name of a viewer action ("hud", "reset", "screenshot", "quit", "play",
+   * "next-frame", "previous-frame"); nullptr for a key that is not bound.
+   * `key` is a character or KEY_LEFT / KEY_RIGHT.
    */
   const char* ApplyKey(int key);
 

@@ -266,7 +266,11 @@ int Compare(const char* self, const Options& o)
   std::vector<Run> runs = { { "tyndall", n, "" }, { "tyndall", n / 2, "" }, { "vtk", n, "" } };
   for (Run& run : runs)
   {
-    run.Picture = o.OutputDir + "/large-" + run.Mapper + "-" + std::to_string(run.Voxels) + ".png";
+    // The type is in the name: ctest runs one comparison per type at once,
+    // into one folder (a shared name let one run read another's half-written
+    // picture).
+    run.Picture = o.OutputDir + "/large-" + o.Type + "-" + run.Mapper + "-" +
+      std::to_string(run.Voxels) + ".png";
     // (VTK's mapper refuses VTK_CHAR, whose sign depends on the platform:
     // it draws the same values as signed char.)
     const std::string type =

@@ -22,6 +22,9 @@
 //   sharper A B RATIO
 //     A's detail finer than 5 pixels (RMS of the luminance minus its 5 x 5
 //     box blur) is at least RATIO times B's.
+//   video OGV WIDTH HEIGHT FRAMES RATE
+//     An Ogg Theora file whose video is WIDTH x HEIGHT pixels at RATE frames
+//     per second and holds FRAMES frames (its last granule position).
 //   make-data DIR
 //     Writes the synthetic inputs of the loader tests into DIR.
 //   make-bad-inputs DIR [VDB]
@@ -63,6 +66,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -78,8 +82,9 @@ constexpr int Skip = 125;
 
 int Usage()
 {
-  std::cerr << "usage: TyndallCLICheck run|psnr|differ|exr|nonempty|sharper|make-data ... (see the "
-               "source)\n";
+  std::cerr
+    << "usage: TyndallCLICheck run|psnr|differ|exr|nonempty|sharper|video|make-data ... (see the "
+       "source)\n";
   return Fail;
 }
 
@@ -362,6 +367,113 @@ int Differ(const std::vector<std::string>& args)
   if (!(psnr < ceiling))
   {
     std::cout << "FAIL: the same picture\n";
+    return Fail;
+  }
+  return Pass;
+}
+
+// Ogg pages (RFC 3533) of the file's first Theora stream: the
+// identification header's picture size, frame rate and granule shift
+// (Theora specification, section 6.2), and the last granule position.
+struct TheoraStream
+{
+  bool Found = false;
+  long Width = 0, Height = 0, RateNumerator = 0, RateDenominator = 0;
+  int Shift = 0;
+  int64_t LastGranule = -1;
+};
+
+uint64_t BigEndian(const unsigned char* p, int bytes)
+{
+  uint64_t v = 0;
+  for (int i = 0; i < bytes; ++i)
+  {
+    v = (v << 8) | p[i];
+  }
+  return v;
+}
+
+bool ReadTheora(const std::string& path, TheoraStream& stream)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<unsigned char> bytes(
+    (std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  uint32_t serial = 0;
+  size_t at = 0;
+  while (at + 27 <= bytes.size())
+  {
+    const unsigned char* page = bytes.data() + at;
+    if (std::memcmp(page, "OggS", 4) != 0)
+    {
+      std::cout << path << ": no Ogg page at byte " << at << "\n";
+      return false;
+    }
+    const int segments = page[26];
+    size_t body = 27 + segments, length = 0;
+    for (int i = 0; i < segments && at + 27 + i < bytes.size(); ++i)
+    {
+      length += page[27 + i];
+    }
+    if (at + body + length > bytes.size())
+    {
+      std::cout << path << ": the Ogg page at byte " << at << " is cut off\n";
+      return false;
+    }
+    int64_t granule = 0;
+    for (int i = 7; i >= 0; --i)
+    {
+      granule = (granule << 8) | page[6 + i];
+    }
+    const uint32_t pageSerial = static_cast<uint32_t>(
+      page[14] | page[15] << 8 | page[16] << 16 | static_cast<uint32_t>(page[17]) << 24);
+    const unsigned char* data = page + body;
+    if (!stream.Found && length >= 42 && std::memcmp(data, "\x80theora", 7) == 0)
+    {
+      stream.Found = true;
+      serial = pageSerial;
+      stream.Width = static_cast<long>(BigEndian(data + 14, 3));
+      stream.Height = static_cast<long>(BigEndian(data + 17, 3));
+      stream.RateNumerator = static_cast<long>(BigEndian(data + 22, 4));
+      stream.RateDenominator = static_cast<long>(BigEndian(data + 26, 4));
+      stream.Shift = ((data[40] & 0x03) << 3) | (data[41] >> 5);
+    }
+    else if (stream.Found && pageSerial == serial && granule != -1)
+    {
+      stream.LastGranule = granule;
+    }
+    at += body + length;
+  }
+  return stream.Found;
+}
+
+int Video(const std::vector<std::string>& args)
+{
+  if (args.size() != 5)
+  {
+    return Usage();
+  }
+  TheoraStream stream;
+  if (!ReadTheora(args[0], stream))
+  {
+    std::cout << "FAIL: " << args[0] << " holds no Theora video\n";
+    return Fail;
+  }
+  // Theora 3.2.1: the granule is the key frame's number << shift plus the
+  // frames since it; their sum counts the frames up to this one.
+  const int64_t frames = stream.LastGranule < 0 ? 0
+                                                : (stream.LastGranule >> stream.Shift) +
+      (stream.LastGranule & ((int64_t(1) << stream.Shift) - 1));
+  std::cout << args[0] << ": " << stream.Width << " x " << stream.Height << ", "
+            << stream.RateNumerator << "/" << stream.RateDenominator << " frames per second, "
+            << frames << " frames\n";
+  const bool ok = stream.Width == std::atol(args[1].c_str()) &&
+    stream.Height == std::atol(args[2].c_str()) && frames == std::atol(args[3].c_str()) &&
+    stream.RateDenominator > 0 &&
+    stream.RateNumerator == std::atol(args[4].c_str()) * stream.RateDenominator;
+  if (!ok)
+  {
+    std::cout << "FAIL: expected " << args[1] << " x " << args[2] << ", " << args[4]
+              << " frames per second, " << args[3] << " frames\n";
     return Fail;
   }
   return Pass;
@@ -698,6 +810,18 @@ int MakeData(const std::vector<std::string>& args)
       writer->SetCompression(false);
       writer->Write();
     }
+    // The same count of OpenVDB frames, a blob moving along x by 3 voxels
+    // a frame (seq/blob_0000.vdb ..): a time series for ParaView.
+    for (int c = 0; c < 3; ++c)
+    {
+      char name[64];
+      std::snprintf(name, sizeof(name), "/seq/blob_%04d.vdb", c);
+      if (!tyndall_test_data::WriteDensityBlob(dir + name, 3.0 * c))
+      {
+        std::cout << "cannot write " << dir << name << "\n";
+        return Fail;
+      }
+    }
   }
   {
     vtkNew<vtkStructuredPointsWriter> writer;
@@ -919,6 +1043,8 @@ int main(int argc, char* argv[])
     return NonEmpty(args);
   if (mode == "sharper")
     return Sharper(args);
+  if (mode == "video")
+    return Video(args);
   if (mode == "make-data")
     return MakeData(args);
   if (mode == "make-bad-inputs" && (args.size() == 1 || args.size() == 2))

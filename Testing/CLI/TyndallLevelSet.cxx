@@ -1,9 +1,12 @@
-// An OpenVDB level set for the tyndall-render tests: a sphere of radius 5
-// voxels of 0.1 (narrow band 3 voxels), written with OpenVDB itself.
+// OpenVDB inputs of the tests, written with OpenVDB itself: a level set (a
+// sphere of radius 5 voxels of 0.1, narrow band 3 voxels) and a fog volume
+// (a Gaussian blob) for time series.
 #include "TyndallTestData.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetSphere.h>
+
+#include <cmath>
 
 namespace tyndall_test_data
 {
@@ -17,6 +20,41 @@ bool WriteLevelSetSphere(const std::string& path)
   {
     openvdb::io::File file(path);
     file.write({ sphere });
+    file.close();
+  }
+  catch (const openvdb::Exception&)
+  {
+    return false;
+  }
+  return true;
+}
+
+bool WriteDensityBlob(const std::string& path, double shift)
+{
+  openvdb::initialize();
+  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+  grid->setName("density");
+  grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+  openvdb::FloatGrid::Accessor voxels = grid->getAccessor();
+  for (int k = 0; k < 16; ++k)
+  {
+    for (int j = 0; j < 20; ++j)
+    {
+      for (int i = 0; i < 24; ++i)
+      {
+        const double x = (i - 8.5 - shift) / 5.0, y = (j - 9.5) / 5.0, z = (k - 7.5) / 4.0;
+        const double value = 100.0 * std::exp(-2.0 * (x * x + y * y + z * z));
+        if (value > 1.0e-3)
+        {
+          voxels.setValue(openvdb::Coord(i, j, k), static_cast<float>(value));
+        }
+      }
+    }
+  }
+  try
+  {
+    openvdb::io::File file(path);
+    file.write({ grid });
     file.close();
   }
   catch (const openvdb::Exception&)

@@ -48,6 +48,10 @@ bool WriteDicomSlice(const std::string& path, const DicomSlice& slice);
 /// `path`; false on failure. (TyndallLevelSet.cxx, the only OpenVDB user.)
 bool WriteLevelSetSphere(const std::string& path);
 
+/// A fog volume "density": a Gaussian blob of peak 100 in a 24 x 20 x 16
+/// box, its centre `shift` voxels along x from (8.5, 9.5, 7.5).
+bool WriteDensityBlob(const std::string& path, double shift);
+
 /// Writes the bad inputs of Documentation/bad-inputs.md into `dir` (with
 /// `vdb`, an OpenVDB file, cut in half); returns 0.
 int MakeBadInputs(const std::string& dir, const std::string& vdb);

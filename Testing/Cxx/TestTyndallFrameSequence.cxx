@@ -67,5 +67,22 @@ int TestTyndallFrameSequence(int, char*[])
   refused("smoke.vdb", "out_%d.png", 0, 1, "no frame number");
   refused("smoke_%s.vdb", "out_%d.png", 0, 1, "no frame number (%d");
   refused("smoke_%04d.vdb", "out_%d.png", 3, 2, "comes before its first");
+
+  // A still scene's pictures (a camera path alone) and the orbit's angles.
+  Check(sequence->SetUpStill("turn_%02d.png", 8), "a still scene's 8 pictures");
+  Check(sequence->GetStill() && sequence->GetFirst() == 0 && sequence->GetLast() == 7 &&
+      sequence->GetInputPath(3).empty() && sequence->GetOutputPath(7) == "turn_07.png",
+    "pictures 0 to 7 of a still scene, no input");
+  sequence->SetOrbitDegrees(360.0);
+  Check(sequence->GetAzimuth(0) == 0.0 && sequence->GetAzimuth(2) == 90.0 &&
+      sequence->GetAzimuth(7) == 315.0,
+    "a full turn over 8 pictures: 45 degrees apart, the last short of 360");
+  Check(sequence->SetUp("smoke_%04d.vdb", "out_%03d.png", 10, 12) && !sequence->GetStill() &&
+      sequence->GetAzimuth(10) == 0.0 && sequence->GetAzimuth(11) == 120.0,
+    "an orbit over frames 10 to 12 starts at frame 10");
+  Check(!sequence->SetUpStill("turn.png", 4) &&
+      std::string(sequence->GetErrorMessage()).find("need a frame number") != std::string::npos,
+    "a still scene's pictures need a frame number");
+  Check(!sequence->SetUpStill("turn_%d.png", 0), "a still scene has at least one picture");
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -9,6 +9,15 @@
       transmittance maps while a light move did, and that its screenshot
       matches the baseline with a PSNR floor.
 
+  CheckViewer.py sequence --viewer EXE --render EXE --input PATTERN --first N --last N
+                          --output-dir DIR [--size W H] [--min-psnr DB]
+      A time series (--sequence): the viewer steps through the frames with
+      the arrow keys (looping both ways) and plays them with Space; each
+      frame it shows must match tyndall-render's picture of that frame, each
+      frame played must be the next one with the maps rebuilt once, and a
+      frame that cannot be read (LAST + 1, which must not exist) is skipped
+      with a warning.
+
   CheckViewer.py failures --viewer EXE
       Checks that the viewer fails cleanly (non-zero exit, a message, no
       crash) without an X display, with a bad script and with a bad input.
@@ -162,6 +171,78 @@ def scripted(args):
     return failures
 
 
+def sequence_mode(args):
+    failures = []
+    os.makedirs(args.output_dir, exist_ok=True)
+    size = [str(args.size[0]), str(args.size[1])]
+    first, last = args.first, args.last
+    frames = list(range(first, last + 1))
+    out = lambda name: os.path.join(args.output_dir, name)
+    for f in frames:
+        for name in ("render_%d.png" % f, "viewer_%d.png" % f):
+            if os.path.exists(out(name)):
+                os.remove(out(name))
+    result = run([args.render, "-q", "-s"] + size + ["--sequence", str(first), str(last),
+                  "-o", out("render_%d.png"), args.input])
+    if result.returncode != 0:
+        return ["tyndall-render exited with %d" % result.returncode]
+
+    # Step forward through every frame and once more (back to FIRST), back
+    # once (to LAST), then play len(frames) + 1 frames and pause.
+    events = ["hud off", "screenshot " + out("viewer_%d.png" % first)]
+    for f in frames[1:]:
+        events += ["key right", "screenshot " + out("viewer_%d.png" % f)]
+    events += ["key right", "screenshot " + out("viewer_wrapped.png"),
+               "key left", "screenshot " + out("viewer_back.png"),
+               "key space", "frames %d" % (len(frames) + 1), "key space", "quit"]
+    result = run([args.viewer, "-s"] + size + ["--sequence", str(first), str(last),
+                  args.input, "--events", "; ".join(events)])
+    if result.returncode != 0:
+        failures.append("the viewer exited with %d" % result.returncode)
+    pairs = [("viewer_%d.png" % f, "render_%d.png" % f) for f in frames]
+    pairs += [("viewer_wrapped.png", "render_%d.png" % first),
+              ("viewer_back.png", "render_%d.png" % last)]
+    for shown, rendered in pairs:
+        a, b = read_png(out(shown)), read_png(out(rendered))
+        if a is None or b is None:
+            failures.append("cannot read %s or %s" % (shown, rendered))
+            continue
+        value = psnr(a, b)
+        print("%s against %s: %s dB (floor %s dB)" % (shown, rendered, value, args.min_psnr))
+        if value is None or not value >= args.min_psnr:
+            failures.append("%s is not tyndall-render's %s (%s dB)" % (shown, rendered, value))
+
+    # Playing: each frame the next one (looping), the maps rebuilt once each.
+    log = [line.split() for line in result.stdout.splitlines() if line.startswith("frame ")]
+    played = [w for w in log if "command" in w and w[w.index("command") + 1] == "frames"]
+    if len(played) != len(frames) + 1:
+        failures.append("%d frames played, expected %d" % (len(played), len(frames) + 1))
+    shown = [int(w[w.index("sequence-frame") + 1]) for w in played]
+    builds = [int(w[w.index("map-builds") + 1]) for w in played]
+    start = last  # playing starts where "key left" left it
+    expected = [frames[(frames.index(start) + 1 + i) % len(frames)] for i in range(len(played))]
+    print("played frames %s (expected %s), map builds %s" % (shown, expected, builds))
+    if shown != expected:
+        failures.append("played frames %s, expected %s" % (shown, expected))
+    if any(b - a != 1 for a, b in zip(builds, builds[1:])):
+        failures.append("map builds while playing %s: one per frame expected" % builds)
+
+    # A frame that cannot be read: skipped with a warning, the one before shown.
+    missing = last + 1
+    result = run([args.viewer, "-s"] + size + ["--sequence", str(first), str(missing),
+                  args.input, "--events", "hud off; key left; quit"])
+    log = [line.split() for line in result.stdout.splitlines() if line.startswith("frame ")]
+    if result.returncode != 0:
+        failures.append("with a missing frame the viewer exited with %d" % result.returncode)
+    if "warning: skipped frame %d" % missing not in result.stderr:
+        failures.append("no warning naming the missing frame %d" % missing)
+    after = [int(w[w.index("sequence-frame") + 1]) for w in log if "left" in w]
+    if after != [last]:
+        failures.append("after the missing frame the viewer showed %s, expected [%d]" % (
+            after, last))
+    return failures
+
+
 def failures_mode(args):
     failures = []
 
@@ -204,11 +285,21 @@ def main():
     s.add_argument("--output", required=True)
     s.add_argument("--size", nargs=2, type=int, default=[256, 256])
     s.add_argument("--min-psnr", type=float, default=45.0)
+    q = sub.add_parser("sequence")
+    q.add_argument("--viewer", required=True)
+    q.add_argument("--render", required=True)
+    q.add_argument("--input", required=True)
+    q.add_argument("--first", type=int, required=True)
+    q.add_argument("--last", type=int, required=True)
+    q.add_argument("--output-dir", required=True)
+    q.add_argument("--size", nargs=2, type=int, default=[64, 64])
+    q.add_argument("--min-psnr", type=float, default=45.0)
     f = sub.add_parser("failures")
     f.add_argument("--viewer", required=True)
     args = parser.parse_args()
 
-    failures = scripted(args) if args.mode == "scripted" else failures_mode(args)
+    modes = {"scripted": scripted, "sequence": sequence_mode, "failures": failures_mode}
+    failures = modes[args.mode](args)
     for message in failures:
         print("FAIL:", message)
     if failures:
