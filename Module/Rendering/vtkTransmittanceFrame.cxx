@@ -375,6 +375,10 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
     this->Adapter->DeclareSwitches(*this->OwnMedium, *this->Textures, variant);
   }
   variant.Guests = static_cast<int>(this->Guests.size());
+  for (const Guest& guest : this->Guests)
+  {
+    variant.VolumeTiled = variant.VolumeTiled || guest.Textures->GetTiling().IsTiled();
+  }
   variant.MapBeyondMedium = this->Integrator.HasMapBounds;
   variant.OpacityCoversRadiance = this->Integrator.OpacityCoversRadiance;
   variant.CameraGuests = this->HasCameraGuests();
@@ -516,6 +520,15 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   program->SetUniform3fv("guestTexShift", n, shift);
   program->SetUniform2fv("guestScalarToTable", n, toTable);
   program->SetUniform1fv("guestDensity", n, density);
+  // Read by the tiled variant only (a guest's tiles or this volume's).
+  float tiling[kMaxGuests][3] = {}, dims[kMaxGuests][3] = {}, textureDims[kMaxGuests][3] = {};
+  for (int g = 0; g < n; ++g)
+  {
+    this->Guests[g].Textures->GetTiling().GetUniforms(tiling[g], dims[g], textureDims[g]);
+  }
+  program->SetUniform3fv("guestTiling", n, tiling);
+  program->SetUniform3fv("guestDims", n, dims);
+  program->SetUniform3fv("guestTextureDims", n, textureDims);
   if (this->HasCameraGuests())
   {
     program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only

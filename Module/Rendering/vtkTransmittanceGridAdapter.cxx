@@ -27,6 +27,7 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
 {
   const vtkTyndallGridMedium& grid = this->GetGrid(medium);
   variant.MissingData = textures.GetValidityTexture() != nullptr;
+  variant.VolumeTiled = textures.GetTiling().IsTiled();
   variant.Clip = grid.GetClip() != nullptr;
   variant.Chromatic = grid.GetParameters().GetChromatic();
   variant.GradientOpacity = grid.GetGradientOpacity();
@@ -67,6 +68,12 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
   const vtkTyndallTransferTable& table = grid.GetTable();
   program->SetUniformi("volumeTexture", textures.GetVolumeTexture()->GetTextureUnit());
   program->SetUniform2f("volumeValueMap", textures.GetValueMap());
+  // Read by the tiled variant only (this volume's tiles or a guest's).
+  float tiling[3], dims[3], textureDims[3];
+  textures.GetTiling().GetUniforms(tiling, dims, textureDims);
+  program->SetUniform3f("volumeTiling", tiling);
+  program->SetUniform3f("volumeDims", dims);
+  program->SetUniform3f("volumeTextureDims", textureDims);
   if (vtkTextureObject* validity = textures.GetValidityTexture())
   {
     // Declared only by the missing-data variant.

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <new>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkTransmittanceMediumTextures);
@@ -73,6 +74,44 @@ bool Allocated(vtkTextureObject* texture)
   glGetTexLevelParameteriv(texture->GetTarget(), 0, GL_TEXTURE_WIDTH, &width);
   texture->Deactivate();
   return width == static_cast<GLint>(texture->GetWidth());
+}
+
+// 2nd, 3rd, 4th, 11th, 21st ...
+std::string Ordinal(int n)
+{
+  const int tens = n % 100, ones = n % 10;
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th"
+    : ones == 1                                   ? "st"
+    : ones == 2                                   ? "nd"
+    : ones == 3                                   ? "rd"
+                                                  : "th";
+  return std::to_string(n) + suffix;
+}
+
+// What the GL says of its free memory, where it says (NVIDIA's and AMD's
+// extensions; Mesa's llvmpipe says nothing: its textures are in the
+// process's memory).
+std::string FreeMemoryNote()
+{
+  GLint kib[4] = { 0, 0, 0, 0 };
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+  if (glewIsSupported("GL_NVX_gpu_memory_info"))
+  {
+    glGetIntegerv(0x9049, kib); // GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX
+  }
+  else if (glewIsSupported("GL_ATI_meminfo"))
+  {
+    glGetIntegerv(0x87FC, kib); // GL_TEXTURE_FREE_MEMORY_ATI: total free, largest block, ...
+  }
+  const bool said = glGetError() == GL_NO_ERROR && kib[0] > 0;
+  std::ostringstream note;
+  if (said)
+  {
+    note << " (the GPU has " << kib[0] / 1024 << " MiB free)";
+  }
+  return note.str();
 }
 
 // The type the volume texture holds for scalars of `type`: 8- and 16-bit
@@ -139,7 +178,8 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
   const vtkTyndallGridMedium& medium, const Extras& extras, vtkObject* reporter)
 {
   const bool sameMedium = this->UploadedMedium == &medium && this->VolumeTexture &&
-    this->VolumeTexture->GetContext() == window;
+    this->VolumeTexture->GetContext() == window &&
+    this->UploadedMaximumSize == this->MaximumTextureSize;
   const bool newScalars = !sameMedium || medium.GetScalarsTime() > this->ScalarsTime;
   if (newScalars)
   {
@@ -149,6 +189,7 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
       return false;
     }
     this->ScalarsTime = medium.GetScalarsTime();
+    this->UploadedMaximumSize = this->MaximumTextureSize;
   }
   // The scalars' interpolation (vtkTyndallGridMedium::GetNearest()): the
   // volume's and its validity's filter, sent when the textures are bound.
@@ -230,23 +271,35 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
 {
   const int* full = medium.GetDimensions();
-  const int maxSize = vtkTextureObject::GetMaximumTextureSize3D(window);
-  int factor = 1;
-  for (int a = 0; a < 3 && maxSize > 0; ++a)
+  int maxSize = vtkTextureObject::GetMaximumTextureSize3D(window);
+  maxSize = maxSize > 0 ? maxSize : 2048; // (a GL that does not say: its minimum is 256)
+  if (this->MaximumTextureSize > 0)
   {
-    factor = std::max(factor, (full[a] + maxSize - 1) / maxSize);
+    maxSize = std::min(maxSize, std::max(this->MaximumTextureSize, 2));
   }
-  for (int a = 0; a < 3; ++a)
+  // Every sample in tiles of slices where the slices pass the limit
+  // (vtkTransmittanceVolumeTiling); else every factor-th sample, the
+  // smallest factor that fits.
+  // (It ends: at the largest side's factor the volume is 1 x 1 x 1.)
+  int factor = 1;
+  for (;; ++factor)
   {
-    this->Dimensions[a] = (full[a] - 1) / factor + 1;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Dimensions[a] = (full[a] - 1) / factor + 1;
+    }
+    if (this->Tiling.Plan(this->Dimensions, maxSize))
+    {
+      break;
+    }
   }
   this->Factor = factor;
   if (factor > 1)
   {
-    vtkWarningWithObjectMacro(reporter, << "The volume (" << full[0] << " x " << full[1] << " x "
-                                        << full[2] << ") exceeds the GPU's 3-D texture size "
-                                        << maxSize << "; rendering every " << factor
-                                        << "th sample.");
+    vtkWarningWithObjectMacro(reporter,
+      << "The volume (" << full[0] << " x " << full[1] << " x " << full[2]
+      << ") exceeds the GPU's 3-D texture size " << maxSize << " (a side of " << maxSize
+      << " or less across, slices in tiles); rendering every " << Ordinal(factor) << " sample.");
   }
   vtkDataArray* scalars = medium.GetScalars();
   // Asked of the GL before any copy or pass over the data: a volume the
@@ -369,7 +422,7 @@ bool vtkTransmittanceMediumTextures::UploadFloats(
 bool vtkTransmittanceMediumTextures::VolumeFits(
   vtkOpenGLRenderWindow* window, int components, int type, vtkObject* reporter)
 {
-  const int* dims = this->Dimensions;
+  const int* dims = this->Tiling.GetTextureDimensions();
   vtkNew<vtkTextureObject> probe; // only for the GL's names of the format
   probe->SetContext(window);
   vtkOpenGLClearErrorMacro();
@@ -392,13 +445,21 @@ bool vtkTransmittanceMediumTextures::VolumeFits(
 void vtkTransmittanceMediumTextures::ReportTooLarge(
   int components, int type, const char* when, vtkObject* reporter) const
 {
-  const int* dims = this->Dimensions;
+  const int* dims = this->Tiling.GetTextureDimensions();
   const double mib = static_cast<double>(dims[0]) * dims[1] * dims[2] * components *
     vtkDataArray::GetDataTypeSize(type) / (1024.0 * 1024.0);
-  vtkErrorWithObjectMacro(reporter,
-    << "The GPU could not create the volume's 3-D texture (" << dims[0] << " x " << dims[1] << " x "
-    << dims[2] << ", " << components << " x " << vtkImageScalarTypeNameMacro(type) << ", " << mib
-    << " MiB" << when << "): too large for its memory, or a format it lacks.");
+  std::ostringstream tiles;
+  if (this->Tiling.IsTiled())
+  {
+    const int* volume = this->Tiling.GetDimensions();
+    tiles << "; the " << volume[0] << " x " << volume[1] << " x " << volume[2] << " samples in "
+          << this->Tiling.GetTiles() << " tiles of slices";
+  }
+  vtkErrorWithObjectMacro(
+    reporter, << "The GPU could not create the volume's 3-D texture (" << dims[0] << " x "
+              << dims[1] << " x " << dims[2] << tiles.str() << ", " << components << " x "
+              << vtkImageScalarTypeNameMacro(type) << ", " << mib << " MiB" << when
+              << "): too large for its memory" << FreeMemoryNote() << ", or a format it lacks.");
 }
 
 //------------------------------------------------------------------------------
@@ -414,7 +475,7 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
   // The format of these scalars (vtkTextureObject keeps the last upload's
   // format and type otherwise: another type's data read as the old one).
   this->VolumeTexture->ResetFormatAndType();
-  if (!this->VolumeTexture->Create3DFromRaw(dims[0], dims[1], dims[2], components, type, values) ||
+  if (!this->Tiling.Upload(this->VolumeTexture, components, type, values) ||
     !Allocated(this->VolumeTexture))
   {
     this->ReportTooLarge(components, type, "", reporter);
@@ -431,8 +492,7 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
     this->ValidityTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTransmittanceOffscreenDraw::SetClamped(this->ValidityTexture, window, true);
-  if (!this->ValidityTexture->Create3DFromRaw(
-        dims[0], dims[1], dims[2], 1, VTK_UNSIGNED_CHAR, valid) ||
+  if (!this->Tiling.Upload(this->ValidityTexture, 1, VTK_UNSIGNED_CHAR, valid) ||
     !Allocated(this->ValidityTexture))
   {
     vtkErrorWithObjectMacro(reporter, << "The GPU could not create the volume's validity texture ("
@@ -500,8 +560,8 @@ bool vtkTransmittanceMediumTextures::UploadSampled(vtkOpenGLRenderWindow* window
     texture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTransmittanceOffscreenDraw::SetClamped(texture, window, true);
-  if (!texture->Create3DFromRaw(dims[0], dims[1], dims[2], components, VTK_FLOAT,
-        this->Factor > 1 ? static_cast<void*>(sampled.data()) : const_cast<float*>(values)))
+  if (!this->Tiling.Upload(texture, components, VTK_FLOAT,
+        this->Factor > 1 ? static_cast<const float*>(sampled.data()) : values))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not create the " << what << "'s 3-D texture.");
     return false;
@@ -587,9 +647,8 @@ bool vtkTransmittanceMediumTextures::UploadLabels(
     this->LabelTexture = vtkSmartPointer<vtkTextureObject>::New();
   }
   vtkTransmittanceOffscreenDraw::SetClamped(this->LabelTexture, window, false);
-  if (!this->LabelTexture->Create3DFromRaw(dims[0], dims[1], dims[2], 1, VTK_UNSIGNED_CHAR,
-        this->Factor > 1 ? static_cast<void*>(sampled.data())
-                         : const_cast<unsigned char*>(labels.data())))
+  if (!this->Tiling.Upload(this->LabelTexture, 1, VTK_UNSIGNED_CHAR,
+        this->Factor > 1 ? sampled.data() : labels.data()))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not create the label map's 3-D texture.");
     return false;
@@ -717,6 +776,16 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
   this->DetailTime = 0;
   vtkTransmittanceOffscreenDraw::SetClamped(this->DetailTexture, window, true);
   const int* n = detail.GetDimensions();
+  const int maxSize = vtkTextureObject::GetMaximumTextureSize3D(window);
+  if (maxSize > 0 && std::max(n[0], std::max(n[1], n[2])) > maxSize)
+  {
+    // (The shape is evaluated at the grid's samples; it is not tiled.)
+    vtkErrorWithObjectMacro(reporter, << "Procedural detail over a volume past one 3-D texture ("
+                                      << n[0] << " x " << n[1] << " x " << n[2] << ", limit "
+                                      << maxSize << " per side) is not supported.");
+    this->DetailTexture = nullptr;
+    return false;
+  }
   if (!this->DetailTexture->Create3DFromRaw(
         n[0], n[1], n[2], 1, VTK_FLOAT, const_cast<float*>(detail.GetShape().data())))
   {
@@ -765,6 +834,9 @@ void vtkTransmittanceMediumTextures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Dimensions: " << this->Dimensions[0] << " x " << this->Dimensions[1] << " x "
      << this->Dimensions[2] << "\n";
   os << indent << "Downsampling: " << this->Factor << "\n";
+  os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  os << indent << "Tiles: " << this->Tiling.GetTiles() << " (" << this->Tiling.GetTilesX()
+     << " across, " << this->Tiling.GetSlicesPerTile() << " slices apart)\n";
   const int* blocks = this->Majorants.GetBlockCounts();
   os << indent << "Blocks: " << blocks[0] << " x " << blocks[1] << " x " << blocks[2] << " ("
      << 100.0 * this->Majorants.GetEmptyFraction() << " % empty)\n";

@@ -10,8 +10,11 @@
  * it changed. When the scalars hold NaN (missing data), NaN voxels get the
  * range's minimum in the scalar texture and 0 in a validity texture (1
  * elsewhere, 8-bit, linear): a sample whose filtered validity is below 1
- * touches a NaN voxel and is empty, as on the CPU (vtkTyndallGridMedium). A volume larger than the
- * GPU's 3-D texture limit is downsampled by the smallest integer factor that fits, with a warning.
+ * touches a NaN voxel and is empty, as on the CPU (vtkTyndallGridMedium). A volume whose slices
+ * pass the GPU's 3-D texture limit (GL_MAX_3D_TEXTURE_SIZE, or SetMaximumTextureSize()) is
+ * stored in tiles of slices side by side in each texture (vtkTransmittanceVolumeTiling: every
+ * sample kept); one whose width or height passes it, or whose tiles do not fit, is downsampled
+ * by the smallest integer factor that fits, with a warning.
  * GetTextureScale() and GetTextureShift() map the medium's box as [0, 1]^3
  * to texture coordinates (point scalars: texel centres at the box's corners;
  * cell scalars: the texels fill the box).
@@ -30,10 +33,11 @@
 
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkObject.h"
-#include "vtkSmartPointer.h"        // For vtkSmartPointer
-#include "vtkTextureObject.h"       // For the inline getters
-#include "vtkTimeStamp.h"           // For vtkTimeStamp
-#include "vtkTyndallMajorantGrid.h" // For vtkTyndallMajorantGrid
+#include "vtkSmartPointer.h"              // For vtkSmartPointer
+#include "vtkTextureObject.h"             // For the inline getters
+#include "vtkTimeStamp.h"                 // For vtkTimeStamp
+#include "vtkTransmittanceVolumeTiling.h" // For vtkTransmittanceVolumeTiling
+#include "vtkTyndallMajorantGrid.h"       // For vtkTyndallMajorantGrid
 
 class vtkOpenGLRenderWindow;
 class vtkTyndallDetailMedium;
@@ -69,6 +73,20 @@ public:
    */
   bool Update(vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium,
     const Extras& extras, vtkObject* reporter);
+
+  ///@{
+  /**
+   * The most texels per side of a volume texture: 0 (the default) for the
+   * GL's GL_MAX_3D_TEXTURE_SIZE, else the smaller of the two (the mapper's
+   * vtkTransmittanceVolumeMapper::SetMaximumTextureSize()). A change uploads
+   * the volume again.
+   */
+  void SetMaximumTextureSize(int size) { this->MaximumTextureSize = size; }
+  int GetMaximumTextureSize() const { return this->MaximumTextureSize; }
+  ///@}
+
+  /// The volume's layout in its textures (the scalars, validity, labels, emission).
+  const vtkTransmittanceVolumeTiling& GetTiling() const { return this->Tiling; }
 
   /// Null without procedural detail.
   vtkTextureObject* GetDetailTexture() const { return this->DetailTexture; }
@@ -203,6 +221,9 @@ private:
   const vtkTyndallGridMedium* UploadedMedium = nullptr;
   int Dimensions[3] = { 0, 0, 0 };
   int Factor = 1;
+  vtkTransmittanceVolumeTiling Tiling;
+  int MaximumTextureSize = 0;
+  int UploadedMaximumSize = 0;
   vtkTimeStamp ExtinctionContentTime;
   vtkMTimeType SeenExtinctionTime = 0;
   float ValueMap[2] = { 1.0f, 0.0f };

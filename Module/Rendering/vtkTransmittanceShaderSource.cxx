@@ -58,6 +58,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("VIEW_TERMINATION", static_cast<double>(ViewTermination));
   define("PI", vtkMath::Pi());
   define("MISSING_DATA", variant.MissingData ? 1 : 0);
+  define("VOLUME_TILED", variant.VolumeTiled ? 1 : 0);
   define("SKIP_EMPTY", variant.SkipEmpty ? 1 : 0);
   define("CLIP", variant.Clip ? 1 : 0);
   define("MAX_CLIP_PLANES", vtkTyndallClipRegion::MaximumPlanes);

@@ -102,6 +102,12 @@ public:
   struct Variant
   {
     bool MissingData = false;
+    /**
+     * The volume, or a guest's, is in tiles of slices
+     * (vtkTransmittanceVolumeTiling): its textures are read through
+     * tyndallTiledTexel().
+     */
+    bool VolumeTiled = false;
     bool SkipEmpty = false;
     bool Clip = false; // the medium is clipped or cropped (vtkTyndallClipRegion)
     /// Groups of four waves of procedural detail (vtkTyndallDetailMedium); 0: none.

@@ -651,6 +651,7 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::UpdateMedium(vtkTransmittanceVo
     return false;
   }
   const vtkTyndallMedium& medium = *this->Scene.GetMedia().front();
+  this->Textures->SetMaximumTextureSize(self->MaximumTextureSize);
   return vtkTransmittanceMediumAdapters::For(medium).Upload(window, medium, *this->Textures, self);
 }
 
@@ -1057,6 +1058,14 @@ int vtkTransmittanceVolumeMapper::GetLastImageReduction()
 }
 
 //------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetNumberOfVolumeTextureTiles()
+{
+  return this->Internals->Textures->GetVolumeTexture()
+    ? this->Internals->Textures->GetTiling().GetTiles()
+    : 0;
+}
+
+//------------------------------------------------------------------------------
 double vtkTransmittanceVolumeMapper::GetLastStepScale()
 {
   return this->Internals->Complete ? this->Internals->StepScale : 0.0;
@@ -1137,6 +1146,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "InteractiveAdjustment: " << (this->InteractiveAdjustment ? "On" : "Off") << "\n";
   os << indent << "MaximumImageReduction: " << this->MaximumImageReduction << "\n";
+  os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "DetailSamplesPerPixel: " << this->DetailSamplesPerPixel << "\n";
   os << indent << "TransmittanceCache: " << (this->TransmittanceCache ? "On" : "Off") << "\n";
   os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";

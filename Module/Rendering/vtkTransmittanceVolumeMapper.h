@@ -85,8 +85,11 @@
  * Bad input is reported with vtkErrorMacro and leaves the rest of the
  * render intact (see Documentation/rendering-model.md for what the scene
  * reader refuses, and how NaN scalars are rendered); so are a render window
- * that is not an OpenGL one and a shader that does not compile. A volume larger than the GPU's 3-D
- * texture limit is downsampled by the smallest integer factor that fits, with a warning.
+ * that is not an OpenGL one and a shader that does not compile. A volume deeper than the GPU's
+ * 3-D texture limit (GL_MAX_3D_TEXTURE_SIZE per side) is stored as tiles of slices side by side
+ * in one texture and drawn whole (SetMaximumTextureSize()); one wider or taller than the limit,
+ * or whose tiles do not fit, is downsampled by the smallest integer factor that fits, with a
+ * warning. A texture the GPU cannot hold is an error that names its size.
  *
  * @sa vtkParticipatingMediumProperty vtkSingleScatteringReference
  * vtkTransmittanceMapMath vtkTransmittanceLightFrustum
@@ -300,6 +303,22 @@ public:
 
   ///@{
   /**
+   * The most texels per side of the volume's 3-D textures, in [0, 65536]
+   * (1 counts as 2); default 0: the GL's GL_MAX_3D_TEXTURE_SIZE (2048 on most GPUs and on
+   * Mesa's llvmpipe); a value above it changes nothing. A volume whose
+   * slices pass it is stored as tiles of slices side by side in one texture
+   * (a 512 x 512 x 3000 CT in 1024 x 512 x 1501), every sample kept and
+   * drawn as one volume: lit, shadowed and skipped as one; a volume whose
+   * width or height passes it, or whose tiles do not fit, is drawn from
+   * every n-th sample with a warning. Smaller values bound one texture's
+   * size (and test the tiling on small data).
+   */
+  vtkSetClampMacro(MaximumTextureSize, int, 0, 65536);
+  vtkGetMacro(MaximumTextureSize, int);
+  ///@}
+
+  ///@{
+  /**
    * Camera rays through procedural detail
    * (vtkParticipatingMediumProperty::SetDetailNoise()), in [0, 64]; default 0.
    *
@@ -370,6 +389,13 @@ public:
    * or after a failed render).
    */
   int GetLastImageReduction();
+
+  /**
+   * The tiles of slices the volume's texture holds since the last upload
+   * (SetMaximumTextureSize(): 1 when the volume fits one texture; 0 before
+   * the first upload).
+   */
+  int GetNumberOfVolumeTextureTiles();
 
   /**
    * The factor the last Render() lengthened the camera steps by (1 or 2;
@@ -515,6 +541,7 @@ protected:
   int TransmittanceCacheSize = 256;
   bool InteractiveAdjustment = true;
   int MaximumImageReduction = 4;
+  int MaximumTextureSize = 0;
   int DetailSamplesPerPixel = 0;
 
 private:

@@ -29,6 +29,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperSceneRules.cxx
   TestTransmittanceMapperDepthPeeling.cxx
   TestTransmittanceMapperDataTypes.cxx
+  TestTransmittanceMapperTiling.cxx
   TestTransmittanceMapReducer.cxx)
 # VTK's scenes against VTK's mapper (no baseline; -T: where their pictures go).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests

@@ -36,6 +36,60 @@ uniform vec3 volumeTexShift;
 uniform vec2 scalarToTable; // table coordinate = value * x + y
 uniform float densityScale;
 uniform mat4 worldToVolume; // world -> the medium's box as [0,1]^3
+
+// The volume's textures (the scalars and those at their resolution:
+// validity, labels, emission) are read at the volume texture coordinate t
+// (texel i's centre at (i + 0.5) / n). A volume deeper than the GPU's 3-D
+// texture size is stored as tiles of slices side by side
+// (vtkTransmittanceVolumeTiling, whose MapCoordinate() is this function's
+// CPU twin): `tiling` = (tiles across x, S: slices from one tile to the
+// next, tiles), `dims` the volume's samples, `textureDims` the texture's.
+// Clamping the sample coordinate to the samples is clamp-to-edge, and
+// keeps each tile's filtering off its neighbours.
+vec3 tyndallTiledTexel(vec3 t, vec3 dims, vec3 tiling, vec3 textureDims)
+{
+  vec3 v = clamp(t * dims - 0.5, vec3(0.0), dims - 1.0);
+  float k = min(floor(v.z / tiling.y), tiling.z - 1.0);
+  float row = floor(k / tiling.x);
+  vec2 origin = vec2(k - row * tiling.x, row) * dims.xy;
+  return (vec3(origin + v.xy, v.z - k * tiling.y) + 0.5) / textureDims;
+}
+
+#if TYNDALL_VOLUME_TILED
+uniform vec3 volumeTiling;
+uniform vec3 volumeDims;
+uniform vec3 volumeTextureDims;
+vec3 tyndallVolumeTexel(vec3 t)
+{
+  return tyndallTiledTexel(t, volumeDims, volumeTiling, volumeTextureDims);
+}
+// One sample's step in volume texture coordinates.
+vec3 tyndallVolumeTexelSize()
+{
+  return 1.0 / volumeDims;
+}
+#else
+vec3 tyndallVolumeTexel(vec3 t)
+{
+  return t; // one tile: the texture is the volume (clamp-to-edge)
+}
+vec3 tyndallVolumeTexelSize()
+{
+  return 1.0 / vec3(textureSize(volumeTexture, 0));
+}
+#endif
+
+// The scalars' texels at the volume texture coordinate t.
+vec4 tyndallVolumeAt(vec3 t)
+{
+  return texture(volumeTexture, tyndallVolumeTexel(t));
+}
+#if TYNDALL_MISSING_DATA
+float tyndallValidityAt(vec3 t)
+{
+  return texture(validityTexture, tyndallVolumeTexel(t)).r;
+}
+#endif
 // World -> the camera rays' box as [0,1]^3: the medium's, or the box around
 // it and the guests drawn with it (TYNDALL_CAMERA_GUESTS).
 uniform mat4 worldToCameraBox;
@@ -148,26 +202,26 @@ float tyndallFootprint = 0.0;
 // texel): dx, dy, dz; 0 where a difference meets missing data.
 void tyndallChannelDifferences(vec3 t, out vec3 d, out vec4 dx, out vec4 dy, out vec4 dz)
 {
-  d = 1.0 / vec3(textureSize(volumeTexture, 0));
+  d = tyndallVolumeTexelSize();
   dx = dy = dz = vec4(0.0);
 #if TYNDALL_MISSING_DATA
-  float valid = min(min(min(texture(validityTexture, t + vec3(d.x, 0.0, 0.0)).r,
-                              texture(validityTexture, t - vec3(d.x, 0.0, 0.0)).r),
-                          min(texture(validityTexture, t + vec3(0.0, d.y, 0.0)).r,
-                            texture(validityTexture, t - vec3(0.0, d.y, 0.0)).r)),
-    min(texture(validityTexture, t + vec3(0.0, 0.0, d.z)).r,
-      texture(validityTexture, t - vec3(0.0, 0.0, d.z)).r));
+  float valid = min(min(min(tyndallValidityAt(t + vec3(d.x, 0.0, 0.0)),
+                              tyndallValidityAt(t - vec3(d.x, 0.0, 0.0))),
+                          min(tyndallValidityAt(t + vec3(0.0, d.y, 0.0)),
+                            tyndallValidityAt(t - vec3(0.0, d.y, 0.0)))),
+    min(tyndallValidityAt(t + vec3(0.0, 0.0, d.z)),
+      tyndallValidityAt(t - vec3(0.0, 0.0, d.z))));
   if (valid < 0.999)
   {
     return;
   }
 #endif
-  dx = (texture(volumeTexture, t + vec3(d.x, 0.0, 0.0)) -
-         texture(volumeTexture, t - vec3(d.x, 0.0, 0.0))) * volumeValueMap.x;
-  dy = (texture(volumeTexture, t + vec3(0.0, d.y, 0.0)) -
-         texture(volumeTexture, t - vec3(0.0, d.y, 0.0))) * volumeValueMap.x;
-  dz = (texture(volumeTexture, t + vec3(0.0, 0.0, d.z)) -
-         texture(volumeTexture, t - vec3(0.0, 0.0, d.z))) * volumeValueMap.x;
+  dx = (tyndallVolumeAt(t + vec3(d.x, 0.0, 0.0)) -
+         tyndallVolumeAt(t - vec3(d.x, 0.0, 0.0))) * volumeValueMap.x;
+  dy = (tyndallVolumeAt(t + vec3(0.0, d.y, 0.0)) -
+         tyndallVolumeAt(t - vec3(0.0, d.y, 0.0))) * volumeValueMap.x;
+  dz = (tyndallVolumeAt(t + vec3(0.0, 0.0, d.z)) -
+         tyndallVolumeAt(t - vec3(0.0, 0.0, d.z))) * volumeValueMap.x;
 }
 
 // The first channel's (the scalar's) differences (tyndallChannelDifferences()).
@@ -281,7 +335,7 @@ uniform vec2 labelScalar; // u = value * x + y
 
 float tyndallLabelMix(vec3 texel, float value, float sigma, inout vec3 color)
 {
-  int label = int(texture(labelTexture, texel).r * 255.0 + 0.5);
+  int label = int(texture(labelTexture, tyndallVolumeTexel(texel)).r * 255.0 + 0.5);
   if (label == 0)
   {
     return sigma;
@@ -403,7 +457,7 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   vec3 texel = q * volumeTexScale + volumeTexShift;
 #if TYNDALL_MISSING_DATA
-  if (texture(validityTexture, texel).r < 0.999)
+  if (tyndallValidityAt(texel) < 0.999)
   {
     color = vec3(0.0);
     tableCoord = 0.0;
@@ -411,7 +465,7 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   }
 #endif
 #if TYNDALL_COMPONENTS > 1
-  vec4 components = texture(volumeTexture, texel) * volumeValueMap.x + volumeValueMap.y;
+  vec4 components = tyndallVolumeAt(texel) * volumeValueMap.x + volumeValueMap.y;
   return densityScale * tyndallComponentMix(components, color, tableCoord);
 #endif
 #if TYNDALL_DETAIL_UNIFORM_ALBEDO
@@ -421,13 +475,13 @@ float tyndallMedium(vec3 x, out vec3 color, out float tableCoord)
   tableCoord = 0.0;
   return tyndallDetailExtinction(q);
 #endif
-  float value = texture(volumeTexture, texel).r * volumeValueMap.x + volumeValueMap.y;
+  float value = tyndallVolumeAt(texel).r * volumeValueMap.x + volumeValueMap.y;
   tableCoord = value * scalarToTable.x + scalarToTable.y;
   vec4 tf = texture(transferTexture, vec2(tableCoord, TYNDALL_TABLE_ALBEDO_ROW));
 #if TYNDALL_PARTICLE_COLORS
   // A coloured particle cloud: the interpolated scattering density over the
   // interpolated density, the nodes' colours weighted by their extinctions.
-  color = value > 0.0 ? clamp(texture(scatteringTexture, texel).rgb / value, 0.0, 1.0) : vec3(1.0);
+  color = value > 0.0 ? clamp(texture(scatteringTexture, tyndallVolumeTexel(texel)).rgb / value, 0.0, 1.0) : vec3(1.0);
 #else
   color = tf.rgb;
 #endif
@@ -464,12 +518,12 @@ bool tyndallKeptScalar(vec3 x, vec3 texel, out float value)
   }
 #endif
 #if TYNDALL_MISSING_DATA
-  if (texture(validityTexture, texel).r < 0.999)
+  if (tyndallValidityAt(texel) < 0.999)
   {
     return false;
   }
 #endif
-  value = texture(volumeTexture, texel).r * volumeValueMap.x + volumeValueMap.y;
+  value = tyndallVolumeAt(texel).r * volumeValueMap.x + volumeValueMap.y;
   return true;
 }
 
@@ -583,6 +637,22 @@ uniform vec3 guestTexScale[TYNDALL_GUESTS];
 uniform vec3 guestTexShift[TYNDALL_GUESTS];
 uniform vec2 guestScalarToTable[TYNDALL_GUESTS];
 uniform float guestDensity[TYNDALL_GUESTS];
+#if TYNDALL_VOLUME_TILED
+// Each guest's tiles (tyndallTiledTexel(); one tile when its volume fits).
+uniform vec3 guestTiling[TYNDALL_GUESTS];
+uniform vec3 guestDims[TYNDALL_GUESTS];
+uniform vec3 guestTextureDims[TYNDALL_GUESTS];
+#endif
+
+// Guest g's texture coordinate of its box coordinate q.
+vec3 tyndallGuestTexel(int g, vec3 q)
+{
+  vec3 t = q * guestTexScale[g] + guestTexShift[g];
+#if TYNDALL_VOLUME_TILED
+  t = tyndallTiledTexel(t, guestDims[g], guestTiling[g], guestTextureDims[g]);
+#endif
+  return t;
+}
 
 float tyndallGuestExtinction(sampler3D volume, sampler2D table, int g, vec3 x)
 {
@@ -591,7 +661,7 @@ float tyndallGuestExtinction(sampler3D volume, sampler2D table, int g, vec3 x)
   {
     return 0.0;
   }
-  float value = texture(volume, q * guestTexScale[g] + guestTexShift[g]).r;
+  float value = texture(volume, tyndallGuestTexel(g, q)).r;
   vec2 toTable = guestScalarToTable[g];
   return guestDensity[g] *
     texture(table, vec2(value * toTable.x + toTable.y, TYNDALL_TABLE_ALBEDO_ROW)).a;

@@ -201,7 +201,7 @@ vec3 tyndallArrayEmission(vec3 x)
   }
 #endif
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
-  float value = texture(emissionTexture, q * volumeTexScale + volumeTexShift).r;
+  float value = texture(emissionTexture, tyndallVolumeTexel(q * volumeTexScale + volumeTexShift)).r;
   return tyndallEmissionColor(value * emissionToTable.x + emissionToTable.y);
 }
 #endif
@@ -538,7 +538,7 @@ float tyndallGuestCameraSample(sampler3D volume, sampler2D table,
   {
     return 0.0;
   }
-  vec3 texel = q * guestTexScale[g] + guestTexShift[g];
+  vec3 texel = tyndallGuestTexel(g, q);
   float value = texture(volume, texel).r;
   vec2 toTable = guestScalarToTable[g];
   float coord = value * toTable.x + toTable.y;
