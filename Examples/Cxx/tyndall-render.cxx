@@ -330,10 +330,16 @@ public:
     this->Writer->SetQuality(2);
     this->Errors->Watch(this->Writer);
     // The writer opens its file at the first frame: a path that cannot be
-    // written is found here, before any rendering.
-    if (FILE* probe = vtksys::SystemTools::Fopen(path, "wb"))
+    // written is found here, before any rendering (appending: a file that is
+    // there is left as it is until the first frame replaces it).
+    const bool existed = vtksys::SystemTools::FileExists(path, true);
+    if (FILE* probe = vtksys::SystemTools::Fopen(path, "ab"))
     {
       std::fclose(probe);
+      if (!existed)
+      {
+        vtksys::SystemTools::RemoveFile(path);
+      }
     }
     else
     {
@@ -345,7 +351,6 @@ public:
     if (!this->Started)
     {
       Fail("cannot write the video " + path + ": " + this->Errors->GetMessages().front());
-      vtksys::SystemTools::RemoveFile(path);
     }
     return this->Started;
 #else
@@ -373,22 +378,21 @@ public:
 #endif
     return true;
   }
-  // Ends the file: kept (its path printed) when `keep` and a frame is in it, else removed.
+  // Ends the file: kept (its path printed) when `keep`, else removed. The
+  // writer creates its file at the first frame: without one there is
+  // nothing to end or remove (and vtkOggTheoraWriter::End() would clear a
+  // stream it never set up).
   void Close(bool keep)
   {
-    if (this->Path.empty())
-    {
-      return; // no --video
-    }
 #ifdef TYNDALL_HAVE_THEORA
-    if (!this->Started)
+    if (!this->Started || this->Frames == 0)
     {
       return;
     }
     this->Writer->End();
     this->Started = false;
 #endif
-    if (keep && this->Frames > 0)
+    if (keep)
     {
       std::cout << vtksys::SystemTools::CollapseFullPath(this->Path) << std::endl;
     }
@@ -578,6 +582,14 @@ int main(int argc, char* argv[])
   if (options->IsSet("exr"))
   {
     return Fail("--exr is not available: this build has no OpenEXR", ExitUsage);
+  }
+#endif
+#ifndef TYNDALL_HAVE_THEORA
+  if (options->IsSet("video"))
+  {
+    return Fail("--video is not available: this build's VTK has no Ogg Theora writer "
+                "(VTK::IOOggTheora)",
+      ExitUsage);
   }
 #endif
   const std::string input = options->GetInput();

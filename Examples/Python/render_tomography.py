@@ -74,6 +74,12 @@ def main(argv):
     if options.GetHelpRequested():
         print(options.GetHelp(__doc__))
         return 0
+    # tyndall-render's outputs beyond one PNG are not this example's.
+    for name in ("exr", "sequence", "orbit", "video"):
+        if options.IsSet(name):
+            print("render_tomography: --%s is tyndall-render's; this example writes one PNG"
+                  % name, file=sys.stderr)
+            return 2
     path = options.GetInput()
     if skip_missing and path and not os.path.exists(path):
         print("render_tomography: skipped: %s does not exist" % path, file=sys.stderr)

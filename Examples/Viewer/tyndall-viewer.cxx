@@ -410,7 +410,8 @@ private:
   // A time series (--sequence): the frame shown, playback.
   bool SetUpSequence();
   void StepFrame(int delta);
-  void PlayOn();
+  void PlayOn(bool scripted);
+  double UntilNextPlayFrame() const;
 
   void RenderFrame();
   bool WriteScreenshot(const std::string& path);
@@ -555,7 +556,7 @@ bool Viewer::SetUpSequence()
 
 // The sequence's frame `delta` steps away (looping), read into the scene; a
 // frame that cannot be read is skipped with a warning, and when none can,
-// the frame shown stays.
+// the frame shown stays and playback pauses.
 void Viewer::StepFrame(int delta)
 {
   if (!this->Sequenced)
@@ -565,8 +566,10 @@ void Viewer::StepFrame(int delta)
   }
   const int first = this->Sequence->GetFirst();
   const int count = this->Sequence->GetLast() - first + 1;
+  // The builder's errors while reading (the observer removed again: one
+  // left per step would pile up while playing).
   vtkNew<vtkTyndallErrorObserver> errors;
-  errors->Watch(this->Builder);
+  const unsigned long tag = this->Builder->AddObserver(vtkCommand::ErrorEvent, errors);
   int frame = this->ShownFrame;
   for (int tries = 0; tries < count; ++tries)
   {
@@ -575,6 +578,7 @@ void Viewer::StepFrame(int delta)
     const std::string path = this->Sequence->GetInputPath(frame);
     if (this->Builder->LoadFrame(path, this->Sequence->GetInputFrame(frame)))
     {
+      this->Builder->RemoveObserver(tag);
       this->ShownFrame = frame;
       this->Renderer->ResetCameraClippingRange();
       this->NeedsRender = true;
@@ -585,22 +589,41 @@ void Viewer::StepFrame(int delta)
               << "\n";
     delta = delta < 0 ? -1 : 1;
   }
-  // None could be read: the frame shown again (the reader may hold a failed one).
+  // None could be read: the frame shown again (the reader may hold a failed
+  // one), and no more playing.
+  this->Builder->RemoveObserver(tag);
+  this->Playing = false;
   std::cerr << Program << ": warning: no other frame can be read; frame " << this->ShownFrame
-            << " stays\n";
-  this->Builder->LoadFrame(this->Sequence->GetInputPath(this->ShownFrame),
-    this->Sequence->GetInputFrame(this->ShownFrame));
+            << " stays" << (count > 1 ? " (playback paused)" : "") << "\n";
+  if (!this->Builder->LoadFrame(this->Sequence->GetInputPath(this->ShownFrame),
+        this->Sequence->GetInputFrame(this->ShownFrame)))
+  {
+    std::cerr << Program << ": frame " << this->ShownFrame << " cannot be read again either\n";
+  }
   this->NeedsRender = true;
 }
 
-// While playing: the next frame, no sooner than --play-rate allows.
-void Viewer::PlayOn()
+// While playing: the next frame when it is due (--play-rate); a script's
+// frame waits for it (each frame of a script while playing is the next one).
+void Viewer::PlayOn(bool scripted)
 {
+  const auto now = std::chrono::steady_clock::now();
+  if (!scripted && now < this->NextPlayFrame)
+  {
+    return; // not yet: the loop waits for events until then
+  }
   std::this_thread::sleep_until(this->NextPlayFrame);
   this->NextPlayFrame = std::chrono::steady_clock::now() +
     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(1.0 / this->Options->GetNumber("play-rate")));
   this->StepFrame(1);
+}
+
+// Seconds until the next frame of a playing sequence is due (0: now).
+double Viewer::UntilNextPlayFrame() const
+{
+  const std::chrono::duration<double> left = this->NextPlayFrame - std::chrono::steady_clock::now();
+  return std::max(0.0, left.count());
 }
 
 //------------------------------------------------------------------------------
@@ -1300,9 +1323,15 @@ int Viewer::Run()
       std::cerr << Program << ": script finished; the window stays open (q quits)\n";
     }
 
-    if (scripted || this->NeedsRender || this->Refine || this->Playing)
+    if (scripted || this->NeedsRender || this->Refine)
     {
       glfwPollEvents();
+    }
+    else if (this->Playing)
+    {
+      // The keys and the mouse answer while it plays: events until the
+      // next frame is due.
+      glfwWaitEventsTimeout(this->UntilNextPlayFrame());
     }
     else
     {
@@ -1314,7 +1343,7 @@ int Viewer::Run()
     }
     if (wasPlaying && this->Playing)
     {
-      this->PlayOn();
+      this->PlayOn(scripted);
     }
     if (this->NeedsRender || scripted || this->Refine)
     {

@@ -821,10 +821,9 @@ public:
     {
       return "--play-rate needs --sequence";
     }
-    if (set("orbit") && !set("sequence") && (set("frame") || set("frames") || set("exr")))
+    if (set("orbit") && !set("sequence") && (set("frames") || set("exr")))
     {
-      return "--orbit renders pictures along the path into PNGs: give no --frame, --frames or "
-             "--exr";
+      return "--orbit renders pictures along the path into PNGs: give no --frames or --exr";
     }
     if (set("orbit-frames") && (!set("orbit") || set("sequence")))
     {

@@ -36,6 +36,14 @@ if (TYNDALL_WRAP_PYTHON)
   set_tests_properties(TyndallIO-TomographyPython-HeadMR PROPERTIES
     ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/${TYNDALL_PYTHON_DESTINATION}"
     LABELS "Tyndall;IO;Python" SKIP_RETURN_CODE 125 TIMEOUT 300)
+  # tyndall-render's outputs beyond one PNG: refused, not ignored.
+  add_test(NAME TyndallIO-TomographyPython-RefusesVideo
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/render_tomography.py"
+      --orbit 90 --video "${CMAKE_BINARY_DIR}/Testing/Temporary/TomographyPython.ogv")
+  set_tests_properties(TyndallIO-TomographyPython-RefusesVideo PROPERTIES
+    ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/${TYNDALL_PYTHON_DESTINATION}"
+    LABELS "Tyndall;IO;Python"
+    PASS_REGULAR_EXPRESSION "--orbit is tyndall-render's; this example writes one PNG")
 endif ()
 
 # The reader's libFuzzer target and a short bounded fuzzing run (only when
