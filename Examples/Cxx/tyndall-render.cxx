@@ -384,8 +384,12 @@ public:
   // stream it never set up).
   void Close(bool keep)
   {
+    if (this->Frames == 0)
+    {
+      return; // no --video, or no frame in it
+    }
 #ifdef TYNDALL_HAVE_THEORA
-    if (!this->Started || this->Frames == 0)
+    if (!this->Started)
     {
       return;
     }

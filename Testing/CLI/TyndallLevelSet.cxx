@@ -8,6 +8,25 @@
 
 #include <cmath>
 
+namespace
+{
+// `grid` as the one grid of a .vdb file at `path`; false when OpenVDB cannot write it.
+bool WriteGrid(const std::string& path, openvdb::GridBase::Ptr grid)
+{
+  try
+  {
+    openvdb::io::File file(path);
+    file.write({ grid });
+    file.close();
+  }
+  catch (const openvdb::Exception&)
+  {
+    return false;
+  }
+  return true;
+}
+}
+
 namespace tyndall_test_data
 {
 bool WriteLevelSetSphere(const std::string& path)
@@ -16,17 +35,7 @@ bool WriteLevelSetSphere(const std::string& path)
   openvdb::FloatGrid::Ptr sphere =
     openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(0.5f, openvdb::Vec3f(0.0f), 0.05f);
   sphere->setName("surface");
-  try
-  {
-    openvdb::io::File file(path);
-    file.write({ sphere });
-    file.close();
-  }
-  catch (const openvdb::Exception&)
-  {
-    return false;
-  }
-  return true;
+  return WriteGrid(path, sphere);
 }
 
 bool WriteDensityBlob(const std::string& path, double shift)
@@ -51,16 +60,6 @@ bool WriteDensityBlob(const std::string& path, double shift)
       }
     }
   }
-  try
-  {
-    openvdb::io::File file(path);
-    file.write({ grid });
-    file.close();
-  }
-  catch (const openvdb::Exception&)
-  {
-    return false;
-  }
-  return true;
+  return WriteGrid(path, grid);
 }
 }
