@@ -973,6 +973,30 @@ bool vtkTyndallGridMedium::KeptScalar(const double p[3], bool clip, double& valu
 }
 
 //------------------------------------------------------------------------------
+bool vtkTyndallGridMedium::KeptComponents(
+  const double p[3], bool clip, double values[vtkTyndallComponents::MaximumCount]) const
+{
+  if (clip && !this->Clip.InsideIndex(p))
+  {
+    return false;
+  }
+  return this->FieldComponents(p, values);
+}
+
+//------------------------------------------------------------------------------
+vtkTyndallProjection::Classes vtkTyndallGridMedium::GetProjectionClasses() const
+{
+  vtkTyndallProjection::Classes classes;
+  classes.Components = &this->Components;
+  for (int t = 0; t < vtkTyndallComponents::MaximumCount; ++t)
+  {
+    classes.Tables[t] = &this->GetComponentTable(t);
+    classes.Ranges[t] = this->GetComponentRange(t);
+  }
+  return classes;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTyndallGridMedium::IsoSample(
   const double p0[3], const double p1[3], double dt, Point& point, double& first) const
 {
@@ -1337,10 +1361,9 @@ bool vtkTyndallGridMedium::UpdateComponents(vtkVolume* volume, vtkObject* report
   std::string what;
   if (this->Projection.Enabled())
   {
-    what = std::string("the ") + vtkTyndallProjection::GetModeName(this->Projection.GetMode()) +
-      " blend mode";
+    return true; // (vtkTyndallProjection: every mode reads the components)
   }
-  else if (this->Isosurfaces.Enabled())
+  if (this->Isosurfaces.Enabled())
   {
     what = "the isosurface blend mode";
   }

@@ -328,6 +328,16 @@ public:
   bool KeptScalar(const double p[3], bool clip, double& value) const;
 
   /**
+   * KeptScalar() for several components: every component at p (each
+   * interpolated on its own); the twin of the shaders' tyndallKeptComponents().
+   */
+  bool KeptComponents(
+    const double p[3], bool clip, double values[vtkTyndallComponents::MaximumCount]) const;
+
+  /// What a projection's rays of several components read (vtkTyndallProjection::Ray).
+  vtkTyndallProjection::Classes GetProjectionClasses() const;
+
+  /**
    * The scalar's change per average voxel at the field index point p: the
    * central differences (IndexDifferences()) times GetGradientToVoxel(),
    * their length; what gradient opacity and 2-D transfer functions read.

@@ -146,9 +146,28 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
       notDrawn.push_back("the labels' gradient opacity (their scalar opacity is drawn)");
     }
   }
-  // Shading is drawn but in a projection (vtkTyndallShading); a medium's
-  // Shade is its own surface term, documented with its meaning.
-  if (!medium && property->GetShade(0) && projection.Enabled())
+  // Several components in a projection (vtkTyndallProjection) are drawn as
+  // VTK 9.1 means them, where its shader draws otherwise.
+  const int count = mapper && projection.Enabled() ? ScalarComponents(mapper, property) : 0;
+  if (count > 1 && property->GetIndependentComponents() &&
+    projection.GetMode() == vtkTyndallProjection::MINIMUM)
+  {
+    notDrawn.push_back("VTK 9.1's minimum intensity of independent components (it keeps each "
+                       "component's maximum, its opacity in blue; Tyndall draws their minimum)");
+  }
+  if (count == 2 && !property->GetIndependentComponents() &&
+    (projection.GetMode() == vtkTyndallProjection::MAXIMUM ||
+      projection.GetMode() == vtkTyndallProjection::MINIMUM))
+  {
+    notDrawn.push_back(std::string("VTK 9.1's ") +
+      vtkTyndallProjection::GetModeName(projection.GetMode()) +
+      " of 2 dependent components (it draws each ray's first sample; Tyndall the sample of the "
+      "extreme second component)");
+  }
+  // Shading is drawn but in the slice (vtkTyndallShading; VTK 9.1 shades
+  // no other projection); a medium's Shade is its own surface term,
+  // documented with its meaning.
+  if (!medium && property->GetShade(0) && projection.GetMode() == vtkTyndallProjection::SLICE)
   {
     notDrawn.push_back(std::string("gradient shading in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)");
@@ -157,8 +176,14 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
   // for both kinds of property (vtkTyndallGridMedium), but where named here.
   const bool detail = medium && medium->GetDetailNoise();
   const bool isosurfaces = mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
-  // Gradient opacity is drawn but in a projection (vtkTyndallGridMedium).
-  if (projection.Enabled() && HasGradientOpacity(property))
+  // Gradient opacity is drawn but in a projection (vtkTyndallGridMedium);
+  // VTK 9.1 ignores it too in the average intensity and additive modes
+  // (the others multiply their pixel's opacity by it, at the gradient where
+  // the ray leaves the volume in the maximum and minimum).
+  const int mode = projection.GetMode();
+  if ((mode == vtkTyndallProjection::MAXIMUM || mode == vtkTyndallProjection::MINIMUM ||
+        mode == vtkTyndallProjection::SLICE) &&
+    HasGradientOpacity(property))
   {
     notDrawn.push_back(std::string("gradient opacity in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
@@ -211,5 +236,5 @@ std::string vtkTyndallVolumeSettings::Describe(const std::vector<std::string>& n
   }
   return text.empty()
     ? text
-    : "VTK's volume mappers draw these settings and Tyndall does not yet: " + text + ".";
+    : "Tyndall draws these settings otherwise than VTK 9.1's volume mappers: " + text + ".";
 }

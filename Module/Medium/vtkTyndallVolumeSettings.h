@@ -19,24 +19,30 @@
  *   volume is drawn without its labels), and the labels' gradient opacity
  *   (their scalar opacity is drawn);
  * for a plain vtkVolumeProperty (VTK's meaning):
- * - gradient shading in a projection blend mode (unshaded; drawn in the
- *   others: vtkTyndallShading);
+ * - gradient shading in the slice blend mode (unshaded; drawn in the
+ *   composite and isosurface modes, vtkTyndallShading; VTK 9.1 shades no
+ *   other projection);
  * for both kinds of property (the classification is VTK's):
- * - gradient opacity in a projection or the isosurface blend mode, or
- *   with several components (ignored; drawn in the others:
- *   vtkTyndallGridMedium::GetGradientOpacity());
+ * - gradient opacity in the maximum or minimum intensity, slice or
+ *   isosurface blend mode, or with several components (ignored; drawn in
+ *   the others, vtkTyndallGridMedium::GetGradientOpacity(); VTK 9.1 ignores
+ *   it in the average intensity and additive modes too);
  * - 2-D transfer functions in a projection or the isosurface blend mode
  *   (TF_2D: the 1-D functions are used; drawn in the others);
  * and for a vtkParticipatingMediumProperty:
  * - a 2-D transfer function or gradient opacity with procedural detail
  *   (the 1-D functions: the detail multiplies the 1-D extinction);
  * - emission (EmissionColor) with a 2-D transfer function (not drawn).
+ * Named too, where VTK 9.1's shader draws other than it means and Tyndall
+ * draws what it means (vtkTyndallProjection): the minimum intensity of
+ * independent components, the maximum or minimum intensity of 2 dependent
+ * components.
  * (Nearest interpolation, vtkVolumeProperty's default, is drawn:
  * vtkTyndallGridMedium::GetNearest().)
  * The first component's settings are read (several components are
- * classified by vtkTyndallComponents; the settings they are not drawn
- * with are an error there). vtkTyndallSceneReader warns with the list once when it
- * changes, for both renderers.
+ * classified by vtkTyndallComponents and vtkTyndallProjection; the
+ * settings they are not drawn with are an error there). vtkTyndallSceneReader warns with the list
+ * once when it changes, for both renderers.
  *
  * Internal to Tyndall::Medium; not wrapped.
  */

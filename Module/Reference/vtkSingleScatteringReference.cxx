@@ -313,15 +313,27 @@ private:
   {
     const vtkTyndallGridMedium& grid = *this->S->Projected;
     const vtkTyndallProjection& projection = grid.GetProjection();
-    vtkTyndallProjection::Ray ray(projection, grid.GetTable());
-    // The scalar at the distance t, to the ray (kept, not missing).
+    const vtkTyndallProjection::Classes classes = grid.GetProjectionClasses();
+    const bool components = grid.GetComponents().Enabled();
+    vtkTyndallProjection::Ray ray = components
+      ? vtkTyndallProjection::Ray(projection, classes)
+      : vtkTyndallProjection::Ray(projection, grid.GetTable());
+    // The scalar (or every component) at the distance t, to the ray (kept,
+    // not missing).
     auto add = [&](double t, double dt)
     {
-      double p[3], value;
+      double p[3], values[vtkTyndallComponents::MaximumCount];
       rays.At(0, t, p);
-      if (grid.KeptScalar(p, true, value))
+      if (components ? grid.KeptComponents(p, true, values) : grid.KeptScalar(p, true, values[0]))
       {
-        ray.Add(value, dt);
+        if (components)
+        {
+          ray.AddComponents(values, dt);
+        }
+        else
+        {
+          ray.Add(values[0], dt);
+        }
       }
     };
     double t;

@@ -684,8 +684,10 @@ bool vtkTransmittanceMediumTextures::UploadLabelRows(
 bool vtkTransmittanceMediumTextures::UploadComponentTables(
   vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
 {
-  // Tables 1 .. of several components (vtkTyndallComponents): their albedo
-  // rows (colour, extinction), one row each.
+  // Tables 1 .. of several components (vtkTyndallComponents): two rows
+  // each, its albedo row (colour, extinction) and its emission row
+  // (emission, the opacity function: what the projections read), as
+  // tyndallComponentRow() reads them.
   const int tables = medium.GetComponents().GetTableCount();
   if (tables < 2)
   {
@@ -697,8 +699,11 @@ bool vtkTransmittanceMediumTextures::UploadComponentTables(
   for (int t = 1; t < tables; ++t)
   {
     medium.GetComponentTable(t).GetTexture(table);
-    const auto row = table.begin() + width * vtkTyndallTransferTable::AlbedoRow;
-    rows.insert(rows.end(), row, row + width);
+    for (const int r : { vtkTyndallTransferTable::AlbedoRow, vtkTyndallTransferTable::EmissionRow })
+    {
+      const auto row = table.begin() + width * r;
+      rows.insert(rows.end(), row, row + width);
+    }
   }
   if (!this->ComponentTexture)
   {
@@ -706,7 +711,7 @@ bool vtkTransmittanceMediumTextures::UploadComponentTables(
   }
   vtkTransmittanceOffscreenDraw::SetClamped(this->ComponentTexture, window, true);
   if (!this->ComponentTexture->Create2DFromRaw(
-        vtkTyndallTransferTable::Size, tables - 1, 4, VTK_FLOAT, rows.data()))
+        vtkTyndallTransferTable::Size, 2 * (tables - 1), 4, VTK_FLOAT, rows.data()))
   {
     vtkErrorWithObjectMacro(reporter, << "Could not create the components' transfer texture.");
     return false;

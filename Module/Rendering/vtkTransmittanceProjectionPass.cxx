@@ -105,6 +105,17 @@ void vtkTransmittanceProjectionPass::SetUniforms(
     static_cast<float>(std::min(range[1], 1e38)) };
   program->SetUniform2f("averageRange", average);
   program->SetUniformf("additiveScale", static_cast<float>(1.0 / projection.GetUnitDistance()));
+  if (frame.Medium->GetComponents().Enabled())
+  {
+    // Declared only by the components' variant: each component's (dependent
+    // ones read their opacity component's, as VTK).
+    float scales[4];
+    for (int c = 0; c < 4; ++c)
+    {
+      scales[c] = static_cast<float>(1.0 / projection.GetUnitDistance(c));
+    }
+    program->SetUniform4f("componentAdditiveScale", scales);
+  }
   if (projection.GetMode() == vtkTyndallProjection::SLICE)
   {
     // Declared only by the slice variant.

@@ -14,8 +14,8 @@
 //    exact values), its own finite range, a NaN in any component is
 //    missing data, the extinction is the mixture of the tables' at the
 //    right components;
-// 4. what several components are not drawn with: an error (the maximum
-//    intensity blend mode, a 2-D transfer function), or named (gradient
+// 4. what several components are not drawn with: an error (the isosurface
+//    blend mode, a 2-D transfer function; the projections are drawn), or named (gradient
 //    opacity);
 // 5. the majorant grid over several tables (what empty-space skipping
 //    reads): each block's majorant bounds the mixture at every sample it
@@ -23,6 +23,7 @@
 //    mixture is;
 // 6. VTK 9.2's volumetric scattering weight (the blending's).
 #include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkMinimalStandardRandomSequence.h"
@@ -34,6 +35,7 @@
 #include "vtkTyndallComponents.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMajorantGrid.h"
+#include "vtkTyndallProjection.h"
 #include "vtkTyndallShading.h"
 #include "vtkTyndallTransferTable.h"
 #include "vtkTyndallVolumeSettings.h"
@@ -322,11 +324,18 @@ void TestGrid()
   image->Modified();
 
   // What several components are not drawn with.
-  observer->Clear();
+  // (The projections are drawn: vtkTyndallProjection.)
   mapper->SetBlendModeToMaximumIntensity();
+  Check(grid.Update(volume, reporter) &&
+      grid.GetProjection().GetMode() == vtkTyndallProjection::MAXIMUM,
+    "two components in the maximum intensity blend mode: read");
+  observer->Clear();
+  mapper->SetBlendModeToIsoSurface();
+  property->GetIsoSurfaceValues()->SetValue(0, 5.0);
   Check(!grid.Update(volume, reporter) &&
-      observer->GetErrorMessage().find("maximum intensity") != std::string::npos,
-    "two components in the maximum intensity blend mode: an error");
+      observer->GetErrorMessage().find("isosurface") != std::string::npos,
+    "two components in the isosurface blend mode: an error");
+  property->GetIsoSurfaceValues()->SetNumberOfContours(0);
   mapper->SetBlendModeToComposite();
   observer->Clear();
   vtkNew<vtkImageData> function;

@@ -1,4 +1,4 @@
-// The settings VTK's volume mappers draw and Tyndall does not yet
+// The settings Tyndall draws otherwise than VTK 9.1's volume mappers
 // (vtkTyndallVolumeSettings, issue 36): an application that swaps
 // vtkGPUVolumeRayCastMapper for a Tyndall mapper gets a warning naming each,
 // never a silently different picture. Read through vtkTyndallSceneReader,
@@ -6,8 +6,10 @@
 //
 // 0. VTK's projection blend modes (vtkTyndallProjection) and its
 //    isosurface mode (vtkTyndallIsosurfaces) are drawn: not named, nor the
-//    slice mode with a vtkPlane; without one it is, and procedural detail and gradient shading in a
-//    projection, gradient opacity in a projection or the isosurface mode;
+//    slice mode with a vtkPlane; without one it is, and procedural detail in
+//    a projection, gradient shading in the slice (VTK shades no other
+//    projection), gradient opacity in the maximum or minimum intensity, the
+//    slice or the isosurface mode (VTK ignores it in the others);
 // 1. a plain vtkVolumeProperty at VTK's defaults (composite, shade off, no
 //    gradient opacity, TF_1D, nearest) gives no warning, nor linear, nor does a
 //    vtkParticipatingMediumProperty with Shade on and nearest interpolation (Tyndall's meaning);
@@ -18,7 +20,10 @@
 // 4. two settings at once: one warning naming both; a change of the set
 //    warns again;
 // 5. one mapper drawing two volumes of different settings: each said once,
-//    not every frame; a vtkMultiVolume: an error.
+//    not every frame; a vtkMultiVolume: an error;
+// 6. several components in the projections are drawn; where VTK 9.1 draws
+//    otherwise than it means (the minimum of independent components, the
+//    maximum or minimum of 2 dependent ones), named.
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
@@ -119,7 +124,7 @@ void CheckSetting(Scene& scene, const std::string& name, const std::function<voi
   reset();
   const int after = scene.Read();
   std::cout << name << ": " << said << "\n";
-  Check(first == 1 && said.find("Tyndall does not yet") != std::string::npos,
+  Check(first == 1 && said.find("otherwise than VTK 9.1's volume mappers") != std::string::npos,
     name + ": one warning names it");
   Check(again == 0, name + ": not repeated while it holds");
   Check(after == 0, name + ": none once it is back to its default");
@@ -157,10 +162,22 @@ int TestTyndallVolumeSettings(int, char*[])
     "the slice blend mode with a vtkPlane: drawn, no warning");
   plain->SetSliceFunction(nullptr);
   mapper->SetBlendModeToComposite();
-  // Shading in a projection: VTK's projections are unshaded here.
-  mapper->SetBlendModeToMaximumIntensity();
+  // Shading in a projection: VTK 9.1 shades the slice alone (its
+  // maximum, minimum, average and additive are unshaded, as Tyndall's).
+  plain->ShadeOn();
+  for (int mode :
+    { vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND,
+      vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, vtkVolumeMapper::ADDITIVE_BLEND })
+  {
+    mapper->SetBlendMode(mode);
+    Check(
+      scene.Read() == 0, "gradient shading in a projection but the slice: as VTK's, no warning");
+  }
+  plain->ShadeOff();
+  plain->SetSliceFunction(slicePlane);
+  mapper->SetBlendModeToSlice();
   CheckSetting(
-    scene, "gradient shading in the maximum intensity blend mode", [&] { plain->ShadeOn(); },
+    scene, "gradient shading in the slice blend mode", [&] { plain->ShadeOn(); },
     [&] { plain->ShadeOff(); });
   mapper->SetBlendModeToComposite();
   // Shading in the composite blend mode is drawn (vtkTyndallShading).
@@ -174,6 +191,12 @@ int TestTyndallVolumeSettings(int, char*[])
   plain->SetGradientOpacity(gradient);
   Check(scene.Read() == 0, "gradient opacity in composite: drawn, no warning");
   Check(scene.Reader.GetMedium().GetGradientOpacity(), "gradient opacity in composite: read");
+  // VTK 9.1 ignores it in the average intensity and additive modes too.
+  for (int mode : { vtkVolumeMapper::AVERAGE_INTENSITY_BLEND, vtkVolumeMapper::ADDITIVE_BLEND })
+  {
+    mapper->SetBlendMode(mode);
+    Check(scene.Read() == 0, "gradient opacity in the average or additive mode: no warning");
+  }
   mapper->SetBlendModeToMaximumIntensity();
   CheckSetting(
     scene, "gradient opacity in the maximum intensity blend mode", [] {},
@@ -224,7 +247,7 @@ int TestTyndallVolumeSettings(int, char*[])
   // renderer.
 
   // Two at once: one warning naming both; a change of the set warns again.
-  mapper->SetBlendModeToMaximumIntensity();
+  mapper->SetBlendModeToSlice();
   plain->ShadeOn();
   plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
   Check(scene.Read("gradient shading") == 1 &&
@@ -236,7 +259,9 @@ int TestTyndallVolumeSettings(int, char*[])
       scene.Log->Messages.front().find("2-D transfer functions") == std::string::npos,
     "one of them back to its default: warned again, naming the other");
   plain->ShadeOff();
-  // Shading in the slice (drawn as composite) and isosurface blend modes is drawn.
+  plain->SetSliceFunction(nullptr);
+  // Shading in the slice without a plane (drawn as composite) and isosurface
+  // blend modes is drawn.
   mapper->SetBlendModeToSlice();
   plain->ShadeOn();
   Check(scene.Read("gradient shading") == 0, "gradient shading in the slice mode: drawn");
@@ -249,10 +274,14 @@ int TestTyndallVolumeSettings(int, char*[])
   // once, not every frame.
   vtkNew<vtkVolume> other;
   other->SetMapper(mapper);
-  vtkNew<vtkVolumeProperty> shaded;
-  shaded->DeepCopy(plain);
-  shaded->ShadeOn();
-  other->SetProperty(shaded);
+  vtkNew<vtkVolumeProperty> otherProperty; // (its gradient opacity is what is said)
+  otherProperty->DeepCopy(plain);
+  vtkNew<vtkPiecewiseFunction> ramp;
+  ramp->AddPoint(0.0, 0.0);
+  ramp->AddPoint(10.0, 1.0);
+  otherProperty->SetGradientOpacity(ramp);
+  otherProperty->DisableGradientOpacityOff();
+  other->SetProperty(otherProperty);
   scene.Renderer->AddVolume(other);
   mapper->SetBlendModeToMaximumIntensity();
   int said = 0;
@@ -263,7 +292,7 @@ int TestTyndallVolumeSettings(int, char*[])
     Check(scene.Reader.Update(scene.Renderer, other, scene.Reporter), "the other volume is read");
     said += static_cast<int>(scene.Log->Messages.size());
   }
-  Check(said == 1, "two volumes of one mapper: the shaded one said once over three frames");
+  Check(said == 1, "two volumes of one mapper: the other's setting said once over three frames");
   scene.Renderer->RemoveVolume(other);
   mapper->SetBlendModeToComposite();
 
@@ -334,5 +363,39 @@ int TestTyndallVolumeSettings(int, char*[])
   Check(
     tyndall.Read("with procedural detail") == 1 && !tyndall.Reader.GetMedium().GetGradientOpacity(),
     "gradient opacity with procedural detail: named, not read");
+
+  // 6. Several components in a projection are drawn (vtkTyndallProjection);
+  // where VTK 9.1's shader draws other than it means, named.
+  vtkNew<vtkVolumeProperty> componentProperty;
+  Scene components(componentProperty);
+  for (const int count : { 3, 2 })
+  {
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfComponents(count);
+    values->SetNumberOfTuples(components.Image->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < count; ++c)
+      {
+        values->SetComponent(i, c, static_cast<float>((i + c) % 7));
+      }
+    }
+    components.Image->GetPointData()->SetScalars(values);
+    componentProperty->SetIndependentComponents(count == 3);
+    const std::string named = count == 3 ? "minimum intensity of independent components"
+                                         : "maximum intensity of 2 dependent components";
+    const auto mode = [&](int blend) { components.Mapper->SetBlendMode(blend); };
+    CheckSetting(
+      components, named,
+      [&]()
+      {
+        mode(count == 3 ? vtkVolumeMapper::MINIMUM_INTENSITY_BLEND
+                        : vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND);
+      },
+      [&]() { mode(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND); });
+    Check(
+      components.Read() == 0 && components.Reader.GetMedium().GetComponents().GetCount() == count,
+      std::to_string(count) + " components in the average intensity: drawn, no warning");
+  }
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -374,17 +374,26 @@ vec4 tyndallComponentSigma = vec4(0.0); // each component's extinction, the dens
 uniform sampler2D componentTexture;
 #endif
 
-// Table t's (colour, extinction) at its coordinate.
-vec4 tyndallComponentTable(int t, float coord)
+// Row `row` of table t at its coordinate: 0 its (colour, extinction), 1
+// its (emission, opacity function); componentTexture holds both rows of
+// each table from 1 on.
+vec4 tyndallComponentRow(int t, float coord, int row)
 {
 #if TYNDALL_COMPONENT_MODE != TYNDALL_COMPONENTS_RGBA
   if (t > 0)
   {
-    int rows = TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_LA ? 1 : TYNDALL_COMPONENTS - 1;
-    return texture(componentTexture, vec2(coord, (float(t) - 0.5) / float(rows)));
+    int rows = 2 * (TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_LA ? 1 : TYNDALL_COMPONENTS - 1);
+    return texture(componentTexture, vec2(coord, (float(2 * (t - 1) + row) + 0.5) / float(rows)));
   }
 #endif
-  return texture(transferTexture, vec2(coord, TYNDALL_TABLE_ALBEDO_ROW));
+  return texture(transferTexture,
+    vec2(coord, row == 0 ? TYNDALL_TABLE_ALBEDO_ROW : TYNDALL_TABLE_EMISSION_ROW));
+}
+
+// Table t's (colour, extinction) at its coordinate.
+vec4 tyndallComponentTable(int t, float coord)
+{
+  return tyndallComponentRow(t, coord, 0);
 }
 
 // The extinction (table units), colour and table 0's coordinate of the
@@ -505,12 +514,11 @@ float tyndallExtinction(vec3 x)
   return tyndallMedium(x, color, tableCoord);
 }
 
-// The scalar at the world point x, whose texture coordinate is `texel`, for
-// VTK's blend modes that read it (the projections, the isosurfaces): false
-// where x is clipped away or its data are missing (NaN).
-bool tyndallKeptScalar(vec3 x, vec3 texel, out float value)
+// Whether the world point x, whose texture coordinate is `texel`, is kept
+// for VTK's blend modes that read the scalars (the projections, the
+// isosurfaces): false where x is clipped away or its data are missing (NaN).
+bool tyndallKept(vec3 x, vec3 texel)
 {
-  value = 0.0;
 #if TYNDALL_CLIP
   if (tyndallClipped(x))
   {
@@ -523,9 +531,34 @@ bool tyndallKeptScalar(vec3 x, vec3 texel, out float value)
     return false;
   }
 #endif
+  return true;
+}
+
+// The scalar there, where tyndallKept().
+bool tyndallKeptScalar(vec3 x, vec3 texel, out float value)
+{
+  value = 0.0;
+  if (!tyndallKept(x, texel))
+  {
+    return false;
+  }
   value = tyndallVolumeAt(texel).r * volumeValueMap.x + volumeValueMap.y;
   return true;
 }
+
+#if TYNDALL_COMPONENTS > 1
+// Every component there, where tyndallKept() (each interpolated on its own).
+bool tyndallKeptComponents(vec3 x, vec3 texel, out vec4 values)
+{
+  values = vec4(0.0);
+  if (!tyndallKept(x, texel))
+  {
+    return false;
+  }
+  values = tyndallVolumeAt(texel) * volumeValueMap.x + volumeValueMap.y;
+  return true;
+}
+#endif
 
 // The opacity function at a scalar value, as VTK reads it (not corrected
 // for a step: the table's emission row holds it in a).

@@ -12,6 +12,162 @@ uniform vec2 valueToUnit;    // u = value * x + y: the scalar on the data's fini
 uniform vec2 averageRange;   // average intensity: the values counted
 uniform float additiveScale; // additive: 1 / the property's unit distance
 
+#if TYNDALL_COMPONENTS > 1
+// Several components (vtkTyndallProjection::Ray's AddComponents() and
+// ComponentPixel() are the CPU twins), read at each sample together.
+#define TyndallSample vec4
+#define tyndallKeptSample tyndallKeptComponents
+uniform vec4 componentAdditiveScale; // additive: 1 / each component's unit distance
+                                     // (dependent: the opacity component's, VTK's)
+
+// What a ray has gathered: independent components each their extremum, sum
+// and count; dependent ones the whole sample kept (Value), the sum and the
+// count in x.
+struct TyndallProjection
+{
+  vec4 Value;
+  vec4 Sum;
+  vec4 Count;
+};
+
+// Table t's opacity function at its component's value v.
+float tyndallComponentOpacity(int t, float v)
+{
+  return tyndallComponentRow(t, v * componentToTable[0][t] + componentToTable[1][t], 1).a;
+}
+
+// Component c's value v on its finite range.
+float tyndallComponentUnit(int c, float v)
+{
+  return v * componentUnit[0][c] + componentUnit[1][c];
+}
+
+#if TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_INDEPENDENT
+void tyndallProject(inout TyndallProjection p, vec4 values, float dt)
+{
+  for (int i = 0; i < TYNDALL_COMPONENTS; ++i)
+  {
+    float v = values[i];
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE
+    p.Value[i] = v;
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_MAXIMUM
+    p.Value[i] = p.Count.x > 0.0 ? max(p.Value[i], v) : v;
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_MINIMUM
+    p.Value[i] = p.Count.x > 0.0 ? min(p.Value[i], v) : v;
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_AVERAGE
+    if (v >= averageRange.x && v <= averageRange.y)
+    {
+      p.Sum[i] += tyndallComponentOpacity(i, v) * tyndallComponentUnit(i, v);
+      p.Count[i] += 1.0;
+    }
+#else
+    p.Sum[i] += tyndallComponentOpacity(i, v) * dt * componentAdditiveScale[i] * tyndallComponentUnit(i, v);
+#endif
+  }
+#if TYNDALL_PROJECTION != TYNDALL_PROJECTION_AVERAGE
+  p.Count += vec4(1.0);
+#endif
+}
+
+bool tyndallProjectionPixel(TyndallProjection p, out vec4 pixel)
+{
+  pixel = vec4(0.0);
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_AVERAGE || TYNDALL_PROJECTION == TYNDALL_PROJECTION_ADDITIVE
+  float grey = 0.0;
+  for (int i = 0; i < TYNDALL_COMPONENTS; ++i)
+  {
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_AVERAGE
+    grey += p.Count[i] > 0.0 ? componentWeights[i] * p.Sum[i] / p.Count[i] : 0.0;
+#else
+    grey += componentWeights[i] * p.Sum[i];
+#endif
+  }
+  pixel = vec4(vec3(clamp(grey, 0.0, 1.0)), 1.0);
+#else
+  if (p.Count.x == 0.0)
+  {
+    return false;
+  }
+  for (int i = 0; i < TYNDALL_COMPONENTS; ++i)
+  {
+    float coord = p.Value[i] * componentToTable[0][i] + componentToTable[1][i];
+    float a = tyndallComponentRow(i, coord, 1).a;
+    pixel += componentWeights[i] * a * vec4(tyndallComponentRow(i, coord, 0).rgb, 1.0);
+  }
+  pixel = clamp(pixel, 0.0, 1.0);
+#endif
+  return true;
+}
+#else
+// Dependent: the opacity component is the last; its table is table 1 of
+// two components (table 0 is the colour's), table 0 of RGBA.
+#if TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_LA
+#define TYNDALL_OPACITY_COMPONENT 1
+#define TYNDALL_OPACITY_TABLE 1
+#else
+#define TYNDALL_OPACITY_COMPONENT 3
+#define TYNDALL_OPACITY_TABLE 0
+#endif
+
+void tyndallProject(inout TyndallProjection p, vec4 values, float dt)
+{
+  float opacity = values[TYNDALL_OPACITY_COMPONENT];
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE
+  p.Value = values;
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_MAXIMUM
+  if (p.Count.x == 0.0 || opacity > p.Value[TYNDALL_OPACITY_COMPONENT])
+  {
+    p.Value = values;
+  }
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_MINIMUM
+  if (p.Count.x == 0.0 || opacity < p.Value[TYNDALL_OPACITY_COMPONENT])
+  {
+    p.Value = values;
+  }
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_AVERAGE
+  if (values.x < averageRange.x || values.x > averageRange.y)
+  {
+    return; // not counted
+  }
+  p.Sum.x += tyndallComponentOpacity(TYNDALL_OPACITY_TABLE, opacity) * tyndallComponentUnit(0, values.x);
+#else
+  p.Sum.x += tyndallComponentOpacity(TYNDALL_OPACITY_TABLE, opacity) * dt *
+    componentAdditiveScale[TYNDALL_OPACITY_COMPONENT] *
+    tyndallComponentUnit(0, values.x);
+#endif
+  p.Count.x += 1.0;
+}
+
+bool tyndallProjectionPixel(TyndallProjection p, out vec4 pixel)
+{
+  pixel = vec4(0.0);
+#if TYNDALL_PROJECTION != TYNDALL_PROJECTION_ADDITIVE
+  if (p.Count.x == 0.0)
+  {
+    return false;
+  }
+#endif
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_AVERAGE
+  pixel = vec4(vec3(clamp(p.Sum.x / p.Count.x, 0.0, 1.0)), 1.0);
+#elif TYNDALL_PROJECTION == TYNDALL_PROJECTION_ADDITIVE
+  pixel = vec4(vec3(clamp(p.Sum.x, 0.0, 1.0)), 1.0);
+#else
+  // The kept sample classified as the composite mode does.
+  float a = tyndallComponentOpacity(TYNDALL_OPACITY_TABLE, p.Value[TYNDALL_OPACITY_COMPONENT]);
+#if TYNDALL_COMPONENT_MODE == TYNDALL_COMPONENTS_LA
+  vec3 color = tyndallComponentRow(0, p.Value.x * componentToTable[0].x + componentToTable[1].x, 0).rgb;
+#else
+  vec3 color = clamp(p.Value.rgb * componentUnit[0].rgb + componentUnit[1].rgb, 0.0, 1.0);
+#endif
+  pixel = vec4(color * a, a);
+#endif
+  return true;
+}
+#endif
+#else
+#define TyndallSample float
+#define tyndallKeptSample tyndallKeptScalar
+
 // What a ray has gathered: the extremum, or the sum and the samples counted.
 struct TyndallProjection
 {
@@ -65,6 +221,7 @@ bool tyndallProjectionPixel(TyndallProjection p, out vec4 pixel)
 #endif
   return true;
 }
+#endif
 
 #if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE
 uniform vec4 slicePlane; // the slice: n . x + d = 0 (world), as (n, d)
@@ -74,16 +231,20 @@ uniform vec4 slicePlane; // the slice: n . x + d = 0 (world), as (n, d)
 // the slice the one where it meets the plane.
 TyndallProjection tyndallGather(vec3 p0, vec3 w, float tNear, float tFar)
 {
+#if TYNDALL_COMPONENTS > 1
+  TyndallProjection gathered = TyndallProjection(vec4(0.0), vec4(0.0), vec4(0.0));
+#else
   TyndallProjection gathered = TyndallProjection(0.0, 0.0, 0);
+#endif
   // The ray in texture coordinates: texel(t) = texel0 + t dTexel.
   vec3 texel0 = (worldToVolume * vec4(p0, 1.0)).xyz * volumeTexScale + volumeTexShift;
   vec3 dTexel = (worldToVolume * vec4(w, 0.0)).xyz * volumeTexScale;
-  float value;
+  TyndallSample value;
 #if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE
   float denominator = dot(slicePlane.xyz, w);
   float ts = abs(denominator) > 1e-12 ? -(dot(slicePlane.xyz, p0) + slicePlane.w) / denominator
                                       : -1e30;
-  if (ts >= tNear && ts <= tFar && tyndallKeptScalar(p0 + ts * w, texel0 + ts * dTexel, value))
+  if (ts >= tNear && ts <= tFar && tyndallKeptSample(p0 + ts * w, texel0 + ts * dTexel, value))
   {
     tyndallProject(gathered, value, 0.0);
   }
@@ -101,7 +262,7 @@ TyndallProjection tyndallGather(vec3 p0, vec3 w, float tNear, float tFar)
     }
     float dt = min(stepLength, tFar - t0);
     float ts = t0 + dt;
-    if (tyndallKeptScalar(p0 + ts * w, texel0 + ts * dTexel, value))
+    if (tyndallKeptSample(p0 + ts * w, texel0 + ts * dTexel, value))
     {
       tyndallProject(gathered, value, dt);
     }
