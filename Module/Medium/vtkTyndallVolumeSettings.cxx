@@ -153,7 +153,8 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
     projection.GetMode() == vtkTyndallProjection::MINIMUM)
   {
     notDrawn.push_back("VTK 9.1's minimum intensity of independent components (it keeps each "
-                       "component's maximum, its opacity in blue; Tyndall draws their minimum)");
+                       "component's maximum and adds w a^2 to blue at alpha 0; Tyndall draws "
+                       "their minimum)");
   }
   if (count == 2 && !property->GetIndependentComponents() &&
     (projection.GetMode() == vtkTyndallProjection::MAXIMUM ||
@@ -181,16 +182,18 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
   // (the others multiply their pixel's opacity by it, at the gradient where
   // the ray leaves the volume in the maximum and minimum).
   const int mode = projection.GetMode();
-  if ((mode == vtkTyndallProjection::MAXIMUM || mode == vtkTyndallProjection::MINIMUM ||
-        mode == vtkTyndallProjection::SLICE) &&
-    HasGradientOpacity(property))
+  const bool summed =
+    mode == vtkTyndallProjection::AVERAGE || mode == vtkTyndallProjection::ADDITIVE;
+  const bool projectionNamed = projection.Enabled() && !summed && HasGradientOpacity(property);
+  if (projectionNamed)
   {
     notDrawn.push_back(std::string("gradient opacity in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
   }
-  // Gradient opacity is not read with several components (vtkTyndallComponents).
+  // Gradient opacity is not read with several components (vtkTyndallComponents;
+  // named once, and not where VTK ignores it too).
   const int components = mapper ? ScalarComponents(mapper, property) : 0;
-  if (components > 1 && AnyGradientOpacity(property, components))
+  if (components > 1 && !summed && !projectionNamed && AnyGradientOpacity(property, components))
   {
     notDrawn.push_back("gradient opacity with several components (ignored)");
   }

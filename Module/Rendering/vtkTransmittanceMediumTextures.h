@@ -113,7 +113,8 @@ public:
   vtkTextureObject* GetTransfer2DTexture() const { return this->Transfer2DTexture; }
   /**
    * Several components' tables 1 .. (vtkTyndallComponents::GetTableCount();
-   * table 0 is GetTransferTexture()): each one row, the table's albedo row;
+   * table 0 is GetTransferTexture()): two rows each, the table's albedo row
+   * (colour, extinction) and its emission row (emission, opacity function);
    * null for fewer than 2 tables.
    */
   vtkTextureObject* GetComponentTexture() const { return this->ComponentTexture; }

@@ -434,6 +434,15 @@ vtkSmartPointer<vtkImageData> MakeIndependent()
     });
 }
 
+// MakeIndependent's first two balls (two independent components).
+vtkSmartPointer<vtkImageData> MakeTwoIndependent()
+{
+  vtkSmartPointer<vtkImageData> three = MakeIndependent();
+  return MakeComponents(VTK_FLOAT, 2,
+    [&three](int c, int i, int j, int k, double)
+    { return three->GetScalarComponentAsDouble(i - 31, j - 31, k - 31, c); });
+}
+
 // MakeIndependent's balls inverted (0.33 outside, 0 at their middles): what
 // a minimum intensity shows.
 vtkSmartPointer<vtkImageData> MakeIndependentHollows()
@@ -732,15 +741,47 @@ void IndependentProperty(vtkVolumeProperty* property, const double*)
 }
 
 // IndependentProperty for the additive blend mode (which sums the opacity
-// per unit distance): unit distances of 40 voxels, so that the sums stay
-// below 1.
+// per unit distance): unit distances of 40, 20 and 60 voxels, so that the
+// sums stay below 1 and each component's own is read.
 void FaintIndependentProperty(vtkVolumeProperty* property, const double* range)
 {
   IndependentProperty(property, range);
+  const double units[3] = { 40.0, 20.0, 60.0 };
   for (int c = 0; c < 3; ++c)
   {
-    property->SetScalarOpacityUnitDistance(c, 40.0);
+    property->SetScalarOpacityUnitDistance(c, units[c]);
   }
+}
+
+// Four independent components (the RGBA data's): each its own colour, the
+// opacity from 0 to 0.2 over 0 .. 255.
+void FourIndependentProperty(vtkVolumeProperty* property, const double*)
+{
+  const double colors[4][3] = { { 1.0, 0.2, 0.1 }, { 0.2, 1.0, 0.2 }, { 0.2, 0.3, 1.0 },
+    { 1.0, 1.0, 0.3 } };
+  property->IndependentComponentsOn();
+  for (int c = 0; c < 4; ++c)
+  {
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+    color->AddRGBPoint(255.0, colors[c][0], colors[c][1], colors[c][2]);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(255.0, 0.2);
+    property->SetColor(c, color);
+    property->SetScalarOpacity(c, opacity);
+    property->SetComponentWeight(c, 0.25 * (c + 1));
+  }
+}
+
+// The RGBA scene's property with a tilted plane as the slice.
+void RGBASliceProperty(vtkVolumeProperty* property, const double* range)
+{
+  RGBAProperty(property, range);
+  vtkNew<vtkPlane> slice;
+  slice->SetOrigin(1.0, 0.0, 0.0);
+  slice->SetNormal(0.707107, 0.0, 0.707107);
+  property->SetSliceFunction(slice);
 }
 
 // IndependentProperty with weights far apart (1, 0.2, 0.5): a maximum
@@ -1124,6 +1165,28 @@ std::vector<Scene> Scenes()
     // Several components in the projections (vtkTyndallProjection).
     { "ComponentBlend-IndependentMaximum", MakeIndependent, WeightedIndependentProperty,
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
+    { "ComponentBlend-IndependentAverageRange", MakeIndependent, IndependentProperty,
+      [](vtkVolumeMapper* m)
+      {
+        m->SetBlendModeToAverageIntensity();
+        m->SetAverageIPScalarRange(0.1, 0.3);
+      },
+      Tilted, true },
+    { "ComponentBlend-TwoIndependentMaximum", MakeTwoIndependent, IndependentProperty,
+      Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
+    { "ComponentBlend-FourIndependentMaximum", MakeRGBA, FourIndependentProperty,
+      Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true },
+    { "ComponentBlend-RGBAAverageRange", MakeRGBA, RGBAProperty,
+      [](vtkVolumeMapper* m)
+      {
+        m->SetBlendModeToAverageIntensity();
+        m->SetAverageIPScalarRange(60.0, 200.0);
+      },
+      Tilted, true },
+    { "ComponentBlend-RGBAAdditive", MakeRGBA, RGBAProperty, Blend(M::ADDITIVE_BLEND), Tilted,
+      true },
+    { "ComponentBlend-RGBASlice", MakeRGBA, RGBASliceProperty, Blend(M::SLICE_BLEND), Tilted,
+      true },
     { "ComponentBlend-IndependentAverage", MakeIndependent, IndependentProperty,
       Blend(M::AVERAGE_INTENSITY_BLEND), Tilted, true },
     { "ComponentBlend-IndependentAdditive", MakeIndependent, FaintIndependentProperty,
@@ -1145,6 +1208,9 @@ std::vector<Scene> Scenes()
       0.0, 0.0, false },
     { "ComponentBlend-TwoDependentMaximum", MakeTwoDependent, TwoDependentProperty,
       Blend(M::MAXIMUM_INTENSITY_BLEND), Tilted, true, 35.0, false, false, nullptr, false, false,
+      0.0, 0.0, false },
+    { "ComponentBlend-TwoDependentMinimum", MakeTwoDependent, TwoDependentProperty,
+      Blend(M::MINIMUM_INTENSITY_BLEND), Tilted, true, 35.0, false, false, nullptr, false, false,
       0.0, 0.0, false },
     { "ComponentBlend-IndependentSlice", MakeIndependent, IndependentSliceProperty,
       Blend(M::SLICE_BLEND), Tilted, true, 35.0, false, false, nullptr, false, false, 0.0, 0.0,
@@ -1187,7 +1253,7 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   if (!data)
   {
     std::cout << std::left << std::setw(36) << scene.Name
-              << " skipped: ../shared/data/volumes/headsq is not there\n";
+              << " skipped: ../shared/data/volumes/headsq is not there";
     return true;
   }
   double range[2];
@@ -1288,7 +1354,20 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
     ok = ok && scene.Reference; // (a scene must be compared with something)
     std::cout << " (not as VTK 9.1 draws it)";
   }
-  if (scene.Reference)
+  // TYNDALL_VTK_SCENES_QUICK (the sanitizer suite): a shaded or medium
+  // scene's CPU reference, with its shadows, runs at 32 x 32 and is not
+  // compared (at the test's size with the GPU's brute-force shadows beside
+  // it, most of the test's time: under the sanitizers 4x the Release time).
+  const bool shadowed = scene.Shaded || scene.Medium;
+  if (scene.Reference && shadowed && std::getenv("TYNDALL_VTK_SCENES_QUICK"))
+  {
+    const double* spacing = data->GetSpacing();
+    vtkNew<vtkSingleScatteringReference> reference;
+    reference->SetStepSize(0.25 * std::min({ spacing[0], spacing[1], spacing[2] }));
+    ok = ok && reference->Render(renderer, volume, 32, 32);
+    std::cout << ", the CPU reference run at 32 x 32, not compared (TYNDALL_VTK_SCENES_QUICK)";
+  }
+  else if (scene.Reference)
   {
     // The oracle's step (a quarter voxel) on both: the GPU's own default is
     // VTK's one voxel, whose samples land on a crop's edge differently.
@@ -1340,7 +1419,7 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
       }
     }
   }
-  std::cout << (ok ? "" : "   FAILED") << "\n";
+  std::cout << (ok ? "" : "   FAILED");
   window->RemoveRenderer(renderer);
   return ok;
 }
@@ -1360,9 +1439,8 @@ int TestTransmittanceMapperVTKScenes(int argc, char* argv[])
   int failed = 0, compared = 0;
   // TYNDALL_VTK_SCENES, when set: only the scenes whose names contain it.
   // TYNDALL_VTK_SCENES_STRIDE=n: the first of every n scenes of each group
-  // (the name before its '-'): the sanitizer suite's share, every group's
-  // code still run under the sanitizers (their time is llvmpipe's, which
-  // they do not see).
+  // (the name before its '-'), for a quick look. TYNDALL_VTK_SCENES_QUICK:
+  // the sanitizer suite's (RunScene()).
   const char* only = std::getenv("TYNDALL_VTK_SCENES");
   const char* strideText = std::getenv("TYNDALL_VTK_SCENES_STRIDE");
   const int stride = strideText ? std::max(1, std::atoi(strideText)) : 1;

@@ -21,7 +21,9 @@
 //    reads): each block's majorant bounds the mixture at every sample it
 //    covers, for VTK's mixing and the additive one, and is 0 only where the
 //    mixture is;
-// 6. VTK 9.2's volumetric scattering weight (the blending's).
+// 6. VTK 9.2's volumetric scattering weight (the blending's);
+// 7. the projections of several components (vtkTyndallProjection::Ray)
+//    against the rules worked by hand.
 #include "vtkColorTransferFunction.h"
 #include "vtkContourValues.h"
 #include "vtkDoubleArray.h"
@@ -470,6 +472,108 @@ void TestBlendWeight()
     "continuous at 1");
   Check(near(vtkTyndallShading::Weight(1.5, 0.0, a), 1.0), "no gradient: volumetric for b >= 1");
 }
+
+// The projections of several components (vtkTyndallProjection::Ray, the CPU
+// twin of the shader's) against the rules worked by hand: component 0's
+// opacity function 0.05 v (red), component 1's 0.2 (green), both over
+// [0, 10], weights 1 and 0.5, unit distances 1 and 2; three samples.
+void TestProjections()
+{
+  vtkNew<vtkVolumeProperty> property;
+  vtkNew<vtkPiecewiseFunction> ramp, flat;
+  ramp->AddPoint(0.0, 0.0);
+  ramp->AddPoint(10.0, 0.5);
+  flat->AddPoint(0.0, 0.2);
+  flat->AddPoint(10.0, 0.2);
+  vtkNew<vtkColorTransferFunction> red, green;
+  red->AddRGBPoint(0.0, 1.0, 0.0, 0.0);
+  red->AddRGBPoint(10.0, 1.0, 0.0, 0.0);
+  green->AddRGBPoint(0.0, 0.0, 1.0, 0.0);
+  green->AddRGBPoint(10.0, 0.0, 1.0, 0.0);
+  property->SetScalarOpacity(0, ramp);
+  property->SetScalarOpacity(1, flat);
+  property->SetColor(0, red);
+  property->SetColor(1, green);
+  property->SetComponentWeight(1, 0.5);
+  property->SetScalarOpacityUnitDistance(1, 2.0);
+  const double range[2] = { 0.0, 10.0 };
+  const double samples[3][N] = { { 2.0, 5.0 }, { 7.0, 1.0 }, { 4.0, 8.0 } };
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetAverageIPScalarRange(1.5, 6.0);
+  // Draws the three samples (steps of 0.5) in `mode` with the tables and
+  // components `property` has for 2 components (`independent` or not).
+  const auto draw = [&](int mode, bool independent, double rgba[4])
+  {
+    property->SetIndependentComponents(independent);
+    mapper->SetBlendMode(mode);
+    vtkTyndallComponents components;
+    std::string error;
+    Check(components.Read(property, 2, false, error), "two components read");
+    vtkTyndallTransferTable tables[2];
+    vtkTyndallProjection::Classes classes;
+    classes.Components = &components;
+    for (int t = 0; t < components.GetTableCount(); ++t)
+    {
+      Check(tables[t].Build(property, nullptr, range[0], range[1], error, false,
+              components.TableFunction(t), components.TableComponent(t)),
+        "a table built");
+      classes.Tables[t] = &tables[t];
+    }
+    classes.Ranges[0] = classes.Ranges[1] = range;
+    vtkTyndallProjection projection;
+    projection.Read(mapper, property);
+    vtkTyndallProjection::Ray ray(projection, classes);
+    for (const double* v : samples)
+    {
+      ray.AddComponents(v, 0.5);
+    }
+    return ray.Pixel(rgba);
+  };
+  const auto check = [](const double rgba[4], const double expected[4], const std::string& what)
+  {
+    double worst = 0.0;
+    for (int c = 0; c < 4; ++c)
+    {
+      worst = std::max(worst, std::abs(rgba[c] - expected[c]));
+    }
+    std::cout << what << ": (" << rgba[0] << ", " << rgba[1] << ", " << rgba[2] << ", " << rgba[3]
+              << "), off by " << worst << "\n";
+    Check(worst < 1e-6, what);
+  };
+  using M = vtkVolumeMapper;
+  double rgba[4];
+  // Independent: each component its own extremum (7 and 5; 2 and 1).
+  const double maximum[4] = { 0.35, 0.1, 0.0, 0.45 };
+  Check(draw(M::MAXIMUM_INTENSITY_BLEND, true, rgba), "independent maximum drawn");
+  check(rgba, maximum, "independent maximum: sum w a c, sum w a");
+  const double minimum[4] = { 0.1, 0.1, 0.0, 0.2 };
+  Check(draw(M::MINIMUM_INTENSITY_BLEND, true, rgba), "independent minimum drawn");
+  check(rgba, minimum, "independent minimum");
+  // Average over [1.5, 6]: component 0 counts 2 and 4 (mean of 0.1 0.2 and
+  // 0.2 0.4: 0.05), component 1 counts 5 alone (0.2 0.5); 0.05 + 0.5 0.1.
+  const double average[4] = { 0.1, 0.1, 0.1, 1.0 };
+  Check(draw(M::AVERAGE_INTENSITY_BLEND, true, rgba), "independent average drawn");
+  check(rgba, average, "independent average: sum w mean(a u) per component");
+  // Additive: component 0 (0.02 + 0.245 + 0.08) 0.5 / 1, component 1
+  // 0.2 (0.5 + 0.1 + 0.8) 0.5 / 2 = 0.07; 0.1725 + 0.5 0.07.
+  const double additive[4] = { 0.2075, 0.2075, 0.2075, 1.0 };
+  Check(draw(M::ADDITIVE_BLEND, true, rgba), "independent additive drawn");
+  check(rgba, additive, "independent additive: sum w sum(a u dt / d)");
+  // Dependent (colour function 0 at component 0, opacity function 0 at
+  // component 1): the sample of the largest (4, 8) or smallest (7, 1)
+  // component 1, red at opacity 0.4 or 0.05.
+  const double dependentMaximum[4] = { 0.4, 0.0, 0.0, 0.4 };
+  Check(draw(M::MAXIMUM_INTENSITY_BLEND, false, rgba), "dependent maximum drawn");
+  check(rgba, dependentMaximum, "dependent maximum: the sample of the largest opacity component");
+  const double dependentMinimum[4] = { 0.05, 0.0, 0.0, 0.05 };
+  Check(draw(M::MINIMUM_INTENSITY_BLEND, false, rgba), "dependent minimum drawn");
+  check(rgba, dependentMinimum, "dependent minimum");
+  // Dependent additive: a(component 1) u_0 dt / d_1 summed:
+  // (0.25 0.2 + 0.05 0.7 + 0.4 0.4) 0.5 / 2.
+  const double dependentAdditive[4] = { 0.06125, 0.06125, 0.06125, 1.0 };
+  Check(draw(M::ADDITIVE_BLEND, false, rgba), "dependent additive drawn");
+  check(rgba, dependentAdditive, "dependent additive: the opacity component's unit distance");
+}
 }
 
 int TestTyndallComponents(int, char*[])
@@ -479,5 +583,6 @@ int TestTyndallComponents(int, char*[])
   TestGrid();
   TestMajorants();
   TestBlendWeight();
+  TestProjections();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

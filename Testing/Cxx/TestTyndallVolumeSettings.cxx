@@ -396,6 +396,33 @@ int TestTyndallVolumeSettings(int, char*[])
     Check(
       components.Read() == 0 && components.Reader.GetMedium().GetComponents().GetCount() == count,
       std::to_string(count) + " components in the average intensity: drawn, no warning");
+    if (count == 3)
+    {
+      // Gradient opacity: ignored by VTK 9.1 too in the average intensity
+      // (no warning); in the maximum named once.
+      vtkNew<vtkPiecewiseFunction> fade;
+      fade->AddPoint(0.0, 0.0);
+      fade->AddPoint(10.0, 1.0);
+      componentProperty->SetGradientOpacity(0, fade);
+      Check(components.Read("gradient opacity") == 0,
+        "gradient opacity of components in the average intensity: as VTK's, no warning");
+      mode(vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND);
+      components.Read();
+      const std::string said =
+        components.Log->Messages.empty() ? "" : components.Log->Messages.front();
+      Check(said.find("gradient opacity") != std::string::npos &&
+          said.find("gradient opacity") == said.rfind("gradient opacity"),
+        "gradient opacity of components in the maximum intensity: named once (" + said + ")");
+      componentProperty->DisableGradientOpacityOn(0);
+      mode(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND);
+    }
+    if (count == 2)
+    {
+      CheckSetting(
+        components, "minimum intensity of 2 dependent components",
+        [&]() { mode(vtkVolumeMapper::MINIMUM_INTENSITY_BLEND); },
+        [&]() { mode(vtkVolumeMapper::ADDITIVE_BLEND); });
+    }
   }
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

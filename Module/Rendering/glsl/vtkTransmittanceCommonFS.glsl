@@ -358,8 +358,9 @@ float tyndallLabelMix(vec3 texel, float value, float sigma, inout vec3 color)
 #if TYNDALL_COMPONENTS > 1
 // Several components (vtkTyndallComponents, whose Mix() is the CPU twin):
 // each interpolated on its own (the volume texture's channels), table t
-// read at its component's value (table 0: transferTexture; tables 1..: a
-// row each of componentTexture), then mixed into one extinction and colour.
+// read at its component's value (table 0: transferTexture; tables 1..: two
+// rows each of componentTexture, tyndallComponentRow()), then mixed into one
+// extinction and colour.
 uniform vec4 componentToTable[2]; // table t's coordinate: value * [0][t] + [1][t]
 uniform vec4 componentUnit[2];    // component c on its finite range: value * [0][c] + [1][c]
 uniform vec4 componentWeights;
