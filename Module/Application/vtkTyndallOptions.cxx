@@ -231,6 +231,10 @@ const Spec kOptions[] = {
     "and light)" },
   { "no-cache", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "no transmittance cache: every camera sample reads the maps (full map resolution, slower)" },
+  { "bricking", "", Kind::Choice, 0, 0, false, "off|on|auto", "M", "auto", "Scattering", Both,
+    "the volume's scalars on the GPU as the 8^3 bricks that vary, bricks of one value shared "
+    "(sparse data: an OpenVDB cache, air around a CT): auto when that takes at most half the "
+    "dense texture's bytes; same picture" },
   { "detail", "", Kind::Flag, 0, 0, false, "", "", "", "Procedural detail", Both,
     "multiply the medium's extinction by cosine noise evaluated in the shader, never voxelised "
     "(the volume becomes the coarse shape); light transmittance through it is exact with "

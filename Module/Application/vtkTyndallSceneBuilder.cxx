@@ -936,6 +936,10 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
   mapper->SetEmptySpaceSkipping(!o->GetFlag("no-skip"));
   mapper->SetTransmittanceCache(!o->GetFlag("no-cache"));
   mapper->SetTransmittanceCacheSize(static_cast<int>(o->GetNumber("cache-size")));
+  static_assert(vtkTransmittanceVolumeMapper::BRICKING_OFF == 0 &&
+      vtkTransmittanceVolumeMapper::BRICKING_AUTO == 2,
+    "--bricking's choices are the mapper's order");
+  mapper->SetVolumeBricking(o->GetChoice("bricking"));
   mapper->SetDetailSamplesPerPixel(static_cast<int>(o->GetNumber("detail-samples")));
 }
 

@@ -378,6 +378,7 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
   for (const Guest& guest : this->Guests)
   {
     variant.VolumeTiled = variant.VolumeTiled || guest.Textures->GetTiling().IsTiled();
+    variant.VolumeBricked = variant.VolumeBricked || guest.Textures->GetBricks().IsBricked();
   }
   variant.MapBeyondMedium = this->Integrator.HasMapBounds;
   variant.OpacityCoversRadiance = this->Integrator.OpacityCoversRadiance;
@@ -529,6 +530,24 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   program->SetUniform3fv("guestTiling", n, tiling);
   program->SetUniform3fv("guestDims", n, dims);
   program->SetUniform3fv("guestTextureDims", n, textureDims);
+  // Read by the bricked variant only (a guest's bricks or this volume's):
+  // an unbricked guest's indirection is its own volume (a valid 3-D
+  // texture on a unit of its own, never read).
+  int bricks[kMaxGuests] = {}, bricked[kMaxGuests] = {};
+  float brickCounts[kMaxGuests][3] = {}, atlasDims[kMaxGuests][3] = {};
+  for (int g = 0; g < n; ++g)
+  {
+    const vtkTransmittanceMediumTextures& textures = *this->Guests[g].Textures;
+    vtkTextureObject* indirection = textures.GetBrickTexture();
+    bricked[g] = textures.GetBricks().IsBricked() && indirection ? 1 : 0;
+    bricks[g] = (bricked[g] ? indirection : textures.GetVolumeTexture())->GetTextureUnit();
+    float unused[3];
+    textures.GetBricks().GetUniforms(unused, brickCounts[g], atlasDims[g]);
+  }
+  program->SetUniform1iv("guestBricks", n, bricks);
+  program->SetUniform1iv("guestBricked", n, bricked);
+  program->SetUniform3fv("guestBrickCounts", n, brickCounts);
+  program->SetUniform3fv("guestAtlasDims", n, atlasDims);
   if (this->HasCameraGuests())
   {
     program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only

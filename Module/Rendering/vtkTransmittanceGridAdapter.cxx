@@ -28,6 +28,7 @@ void vtkTransmittanceGridAdapter::DeclareSwitches(const vtkTyndallMedium& medium
   const vtkTyndallGridMedium& grid = this->GetGrid(medium);
   variant.MissingData = textures.GetValidityTexture() != nullptr;
   variant.VolumeTiled = textures.GetTiling().IsTiled();
+  variant.VolumeBricked = textures.GetBricks().IsBricked();
   variant.Clip = grid.GetClip() != nullptr;
   variant.Chromatic = grid.GetParameters().GetChromatic();
   variant.GradientOpacity = grid.GetGradientOpacity();
@@ -74,6 +75,17 @@ void vtkTransmittanceGridAdapter::SetUniforms(vtkShaderProgram* program,
   program->SetUniform3f("volumeTiling", tiling);
   program->SetUniform3f("volumeDims", dims);
   program->SetUniform3f("volumeTextureDims", textureDims);
+  // Read by the bricked variant only (this volume's bricks or a guest's):
+  // without bricks the indirection is the volume (never read).
+  vtkTextureObject* indirection = textures.GetBrickTexture();
+  const bool bricked = textures.GetBricks().IsBricked() && indirection;
+  float unused[3], brickCounts[3], atlasDims[3];
+  textures.GetBricks().GetUniforms(unused, brickCounts, atlasDims);
+  program->SetUniformi(
+    "brickTexture", (bricked ? indirection : textures.GetVolumeTexture())->GetTextureUnit());
+  program->SetUniformi("volumeBricked", bricked ? 1 : 0);
+  program->SetUniform3f("brickCounts", brickCounts);
+  program->SetUniform3f("brickAtlasDims", atlasDims);
   if (vtkTextureObject* validity = textures.GetValidityTexture())
   {
     // Declared only by the missing-data variant.

@@ -179,17 +179,21 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
 {
   const bool sameMedium = this->UploadedMedium == &medium && this->VolumeTexture &&
     this->VolumeTexture->GetContext() == window &&
-    this->UploadedMaximumSize == this->MaximumTextureSize;
+    this->UploadedMaximumSize == this->MaximumTextureSize &&
+    this->UploadedBricking == this->Bricking &&
+    this->UploadedScattering == (extras.Scattering != nullptr);
   const bool newScalars = !sameMedium || medium.GetScalarsTime() > this->ScalarsTime;
   if (newScalars)
   {
     this->ScalarsTime = 0;
+    this->UploadedScattering = extras.Scattering != nullptr;
     if (!this->UploadScalars(window, medium, reporter))
     {
       return false;
     }
     this->ScalarsTime = medium.GetScalarsTime();
     this->UploadedMaximumSize = this->MaximumTextureSize;
+    this->UploadedBricking = this->Bricking;
   }
   // The scalars' interpolation (vtkTyndallGridMedium::GetNearest()): the
   // volume's and its validity's filter, sent when the textures are bound.
@@ -294,6 +298,11 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
     }
   }
   this->Factor = factor;
+  this->UploadSize = maxSize;
+  // Bricks (vtkTransmittanceVolumeBricks) replace the scalars' texture
+  // alone: not where another texture shares its layout.
+  this->BricksAllowed = factor == 1 && !this->Tiling.IsTiled() && !medium.GetLabelMap().Enabled() &&
+    !medium.GetEmissionFromArray() && !this->UploadedScattering;
   if (factor > 1)
   {
     vtkWarningWithObjectMacro(reporter,
@@ -304,9 +313,11 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   vtkDataArray* scalars = medium.GetScalars();
   // Asked of the GL before any copy or pass over the data: a volume the
   // GPU cannot hold fails at once (a 1024^3 float volume: before its 4 GiB
-  // float copy).
-  if (!this->VolumeFits(
-        window, scalars->GetNumberOfComponents(), StoredType(scalars->GetDataType()), reporter))
+  // float copy), unless it may go as bricks (then planned over the values).
+  const bool bricks = this->BricksAllowed && this->Bricking != BRICKING_OFF;
+  this->DenseFits = this->VolumeFits(window, scalars->GetNumberOfComponents(),
+    StoredType(scalars->GetDataType()), bricks ? nullptr : reporter);
+  if (!this->DenseFits && !bricks)
   {
     return false;
   }
@@ -437,7 +448,10 @@ bool vtkTransmittanceMediumTextures::VolumeFits(
   {
     return true;
   }
-  this->ReportTooLarge(components, type, " (asked before uploading it)", reporter);
+  if (reporter)
+  {
+    this->ReportTooLarge(components, type, " (asked before uploading it)", reporter);
+  }
   return false;
 }
 
@@ -475,6 +489,24 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
   // The format of these scalars (vtkTextureObject keeps the last upload's
   // format and type otherwise: another type's data read as the old one).
   this->VolumeTexture->ResetFormatAndType();
+  // (Bricks whatever they save where the dense texture does not fit.)
+  if (!valid && this->BricksAllowed && this->Bricking != BRICKING_OFF &&
+    this->Bricks.Plan(this->Dimensions, components, vtkDataArray::GetDataTypeSize(type), values,
+      this->UploadSize, this->Bricking == BRICKING_ON || !this->DenseFits ? 1.0 : 0.5))
+  {
+    Release(this->ValidityTexture, window);
+    return this->UploadBricks(window, components, type, values, reporter);
+  }
+  this->Bricks.Clear();
+  if (!this->DenseFits)
+  {
+    this->ReportTooLarge(
+      components, type, " (asked before uploading it; no bricks it could take)", reporter);
+    Release(this->BrickTexture, window);
+    Release(this->VolumeTexture, window);
+    return false;
+  }
+  Release(this->BrickTexture, window);
   if (!this->Tiling.Upload(this->VolumeTexture, components, type, values) ||
     !Allocated(this->VolumeTexture))
   {
@@ -503,6 +535,48 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadBricks(
+  vtkOpenGLRenderWindow* window, int components, int type, void* values, vtkObject* reporter)
+{
+  if (!this->BrickTexture)
+  {
+    this->BrickTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTransmittanceOffscreenDraw::SetClamped(this->BrickTexture, window, false); // read nearest
+  this->BrickTexture->ResetFormatAndType();
+  if (!this->Bricks.Upload(this->VolumeTexture, this->BrickTexture, type, values) ||
+    !Allocated(this->VolumeTexture) || !Allocated(this->BrickTexture))
+  {
+    const int* atlas = this->Bricks.GetAtlasDimensions();
+    vtkErrorWithObjectMacro(
+      reporter, << "The GPU could not create the volume's bricks (an atlas of " << atlas[0] << " x "
+                << atlas[1] << " x " << atlas[2] << ", " << components << " x "
+                << vtkImageScalarTypeNameMacro(type) << ")" << FreeMemoryNote() << ".");
+    this->Bricks.Clear();
+    Release(this->BrickTexture, window);
+    Release(this->VolumeTexture, window);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkTransmittanceMediumTextures::GetVolumeTextureBytes() const
+{
+  if (!this->VolumeTexture)
+  {
+    return 0;
+  }
+  if (this->Bricks.IsBricked())
+  {
+    return this->Bricks.GetAtlasBytes() + this->Bricks.GetIndirectionBytes();
+  }
+  const int* dims = this->Tiling.GetTextureDimensions();
+  return static_cast<size_t>(dims[0]) * dims[1] * dims[2] * this->VolumeTexture->GetComponents() *
+    static_cast<size_t>(vtkDataArray::GetDataTypeSize(this->VolumeTexture->GetVTKDataType()));
 }
 
 //------------------------------------------------------------------------------
@@ -806,16 +880,19 @@ bool vtkTransmittanceMediumTextures::UpdateDetail(
 //------------------------------------------------------------------------------
 void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture : { this->VolumeTexture.Get(), this->ValidityTexture.Get(),
-         this->TransferTexture.Get(), this->Transfer2DTexture.Get(), this->BlockTexture.Get(),
-         this->ComponentTexture.Get(), this->DetailTexture.Get(), this->EmissionTexture.Get(),
-         this->ScatteringTexture.Get(), this->LabelTexture.Get(), this->LabelRowsTexture.Get() })
+  for (vtkTextureObject* texture :
+    { this->VolumeTexture.Get(), this->ValidityTexture.Get(), this->TransferTexture.Get(),
+      this->Transfer2DTexture.Get(), this->BlockTexture.Get(), this->ComponentTexture.Get(),
+      this->DetailTexture.Get(), this->EmissionTexture.Get(), this->ScatteringTexture.Get(),
+      this->LabelTexture.Get(), this->LabelRowsTexture.Get(), this->BrickTexture.Get() })
   {
     if (texture)
     {
       texture->ReleaseGraphicsResources(window);
     }
   }
+  this->BrickTexture = nullptr;
+  this->Bricks.Clear();
   this->VolumeTexture = nullptr;
   this->ValidityTexture = nullptr;
   this->TransferTexture = nullptr;
@@ -840,6 +917,8 @@ void vtkTransmittanceMediumTextures::PrintSelf(ostream& os, vtkIndent indent)
      << this->Dimensions[2] << "\n";
   os << indent << "Downsampling: " << this->Factor << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  os << indent << "Bricking: " << this->Bricking << " (bricked: " << this->Bricks.IsBricked()
+     << ", " << this->Bricks.GetSlots() << " slots)\n";
   os << indent << "Tiles: " << this->Tiling.GetTiles() << " (" << this->Tiling.GetTilesX()
      << " across, " << this->Tiling.GetSlicesPerTile() << " slices apart)\n";
   const int* blocks = this->Majorants.GetBlockCounts();

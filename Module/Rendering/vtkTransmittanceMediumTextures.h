@@ -36,6 +36,7 @@
 #include "vtkSmartPointer.h"              // For vtkSmartPointer
 #include "vtkTextureObject.h"             // For the inline getters
 #include "vtkTimeStamp.h"                 // For vtkTimeStamp
+#include "vtkTransmittanceVolumeBricks.h" // For vtkTransmittanceVolumeBricks
 #include "vtkTransmittanceVolumeTiling.h" // For vtkTransmittanceVolumeTiling
 #include "vtkTyndallMajorantGrid.h"       // For vtkTyndallMajorantGrid
 
@@ -87,6 +88,32 @@ public:
 
   /// The volume's layout in its textures (the scalars, validity, labels, emission).
   const vtkTransmittanceVolumeTiling& GetTiling() const { return this->Tiling; }
+
+  ///@{
+  /**
+   * Whether the scalars may be stored as the bricks that vary
+   * (vtkTransmittanceVolumeBricks; the mapper's
+   * vtkTransmittanceVolumeMapper::SetVolumeBricking()): BRICKING_OFF never,
+   * BRICKING_ON whenever the volume allows it, BRICKING_AUTO (the default)
+   * when the bricks take at most half the dense texture's bytes. A volume
+   * with another texture at its resolution (validity, labels, an emission
+   * array, a coloured particle cloud's colours), tiled or downsampled, is
+   * dense. A change uploads the volume again.
+   */
+  enum Brickings
+  {
+    BRICKING_OFF,
+    BRICKING_ON,
+    BRICKING_AUTO
+  };
+  void SetBricking(int bricking) { this->Bricking = bricking; }
+  int GetBricking() const { return this->Bricking; }
+  /// The bricks' plan (IsBricked() when the scalars are stored so) and their indirection texture.
+  const vtkTransmittanceVolumeBricks& GetBricks() const { return this->Bricks; }
+  vtkTextureObject* GetBrickTexture() const { return this->BrickTexture; }
+  /// The bytes the scalars take on the GPU: the atlas and its indirection, or the dense texture.
+  size_t GetVolumeTextureBytes() const;
+  ///@}
 
   /// Null without procedural detail.
   vtkTextureObject* GetDetailTexture() const { return this->DetailTexture; }
@@ -170,8 +197,13 @@ private:
   // texture's size when the GPU cannot hold it.
   bool CreateVolumeTexture(vtkOpenGLRenderWindow* window, int components, int type, void* values,
     unsigned char* valid, vtkObject* reporter);
+  // The scalars as bricks (Bricks planned): the atlas into VolumeTexture and
+  // the indirection into BrickTexture; false with an error.
+  bool UploadBricks(
+    vtkOpenGLRenderWindow* window, int components, int type, void* values, vtkObject* reporter);
   // Whether the GL can create the volume texture (Dimensions, `components`
-  // of `type`), asked with a proxy texture; false with ReportTooLarge().
+  // of `type`), asked with a proxy texture; false, with ReportTooLarge()
+  // through `reporter` when it is not null.
   bool VolumeFits(vtkOpenGLRenderWindow* window, int components, int type, vtkObject* reporter);
   // The error of a volume texture the GPU cannot create, naming its size
   // (`when`: what to add after the MiB).
@@ -211,6 +243,14 @@ private:
   vtkSmartPointer<vtkTextureObject> DetailTexture;
   vtkSmartPointer<vtkTextureObject> EmissionTexture;
   vtkSmartPointer<vtkTextureObject> ScatteringTexture;
+  vtkSmartPointer<vtkTextureObject> BrickTexture;
+  vtkTransmittanceVolumeBricks Bricks;
+  int Bricking = BRICKING_AUTO;
+  int UploadedBricking = BRICKING_AUTO;
+  int UploadSize = 2048; // the 3-D texture size the last upload planned for
+  bool BricksAllowed = false;
+  bool UploadedScattering = false; // a coloured particle cloud's colours beside the scalars
+  bool DenseFits = true;           // whether the GL can hold the dense volume texture
   vtkMTimeType DetailTime = 0;
   vtkMTimeType DetailExtinctionTime = 0; // the detail's extinction the maps last saw
   vtkTyndallMajorantGrid Majorants;

@@ -3,6 +3,7 @@
 #include "vtkMath.h"
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceVolumeBricks.h"
 #include "vtkTyndallClipRegion.h"
 #include "vtkTyndallComponents.h"
 #include "vtkTyndallDetailMedium.h"
@@ -59,6 +60,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("PI", vtkMath::Pi());
   define("MISSING_DATA", variant.MissingData ? 1 : 0);
   define("VOLUME_TILED", variant.VolumeTiled ? 1 : 0);
+  define("VOLUME_BRICKED", variant.VolumeBricked ? 1 : 0);
+  define("BRICK_SIZE", vtkTransmittanceVolumeBricks::BrickSize);
   define("SKIP_EMPTY", variant.SkipEmpty ? 1 : 0);
   define("CLIP", variant.Clip ? 1 : 0);
   define("MAX_CLIP_PLANES", vtkTyndallClipRegion::MaximumPlanes);

@@ -108,6 +108,12 @@ public:
      * tyndallTiledTexel().
      */
     bool VolumeTiled = false;
+    /**
+     * The volume, or a guest's, is stored as the bricks that vary
+     * (vtkTransmittanceVolumeBricks): its scalars are read through
+     * tyndallBrickedTexel().
+     */
+    bool VolumeBricked = false;
     bool SkipEmpty = false;
     bool Clip = false; // the medium is clipped or cropped (vtkTyndallClipRegion)
     /// Groups of four waves of procedural detail (vtkTyndallDetailMedium); 0: none.

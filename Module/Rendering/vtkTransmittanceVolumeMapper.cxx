@@ -377,10 +377,12 @@ public:
       this->Textures->GetTransfer2DTexture(), this->Textures->GetBlockTexture(),
       this->Textures->GetDetailTexture(), this->Textures->GetEmissionTexture(),
       this->Textures->GetScatteringTexture(), this->Textures->GetComponentTexture(),
-      this->Textures->GetLabelTexture(), this->Textures->GetLabelRowsTexture() };
+      this->Textures->GetLabelTexture(), this->Textures->GetLabelRowsTexture(),
+      this->Textures->GetBrickTexture() };
     for (const vtkTransmittanceMediumTextures* guest : this->GuestTextures)
     {
       textures.push_back(guest->GetVolumeTexture());
+      textures.push_back(guest->GetBrickTexture()); // null but for bricks
       textures.push_back(guest->GetTransferTexture());
       textures.push_back(guest->GetScatteringTexture()); // null but for a coloured cloud
     }
@@ -652,6 +654,7 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::UpdateMedium(vtkTransmittanceVo
   }
   const vtkTyndallMedium& medium = *this->Scene.GetMedia().front();
   this->Textures->SetMaximumTextureSize(self->MaximumTextureSize);
+  this->Textures->SetBricking(self->VolumeBricking);
   return vtkTransmittanceMediumAdapters::For(medium).Upload(window, medium, *this->Textures, self);
 }
 
@@ -1058,6 +1061,19 @@ int vtkTransmittanceVolumeMapper::GetLastImageReduction()
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::GetVolumeBricked()
+{
+  return this->Internals->Textures->GetVolumeTexture() &&
+    this->Internals->Textures->GetBricks().IsBricked();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkTransmittanceVolumeMapper::GetVolumeTextureBytes()
+{
+  return static_cast<vtkIdType>(this->Internals->Textures->GetVolumeTextureBytes());
+}
+
+//------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetNumberOfVolumeTextureTiles()
 {
   return this->Internals->Textures->GetVolumeTexture()
@@ -1147,6 +1163,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveAdjustment: " << (this->InteractiveAdjustment ? "On" : "Off") << "\n";
   os << indent << "MaximumImageReduction: " << this->MaximumImageReduction << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  os << indent << "VolumeBricking: " << this->VolumeBricking << "\n";
   os << indent << "DetailSamplesPerPixel: " << this->DetailSamplesPerPixel << "\n";
   os << indent << "TransmittanceCache: " << (this->TransmittanceCache ? "On" : "Off") << "\n";
   os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";

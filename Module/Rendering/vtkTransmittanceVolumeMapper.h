@@ -319,6 +319,30 @@ public:
 
   ///@{
   /**
+   * Whether the scalars go to the GPU as the bricks that vary
+   * (vtkTransmittanceVolumeBricks: bricks of 8^3 samples, those whose
+   * samples are all one value, such as OpenVDB's background, shared, the
+   * others in an atlas, one indirection texel per brick): BRICKING_OFF (0)
+   * never, BRICKING_ON (1) whenever the volume allows it, BRICKING_AUTO (2,
+   * the default) when the bricks take at most half the dense texture's
+   * bytes. The picture is the same either way (the atlas holds every
+   * sample each brick's filtering reads). A volume with NaN scalars or a
+   * mask, a label map, an emission array, a particle cloud, or one tiled or
+   * downsampled (SetMaximumTextureSize()) is dense. A change uploads the
+   * volume again.
+   */
+  enum VolumeBrickings
+  {
+    BRICKING_OFF = 0,
+    BRICKING_ON = 1,
+    BRICKING_AUTO = 2
+  };
+  vtkSetClampMacro(VolumeBricking, int, BRICKING_OFF, BRICKING_AUTO);
+  vtkGetMacro(VolumeBricking, int);
+  ///@}
+
+  ///@{
+  /**
    * Camera rays through procedural detail
    * (vtkParticipatingMediumProperty::SetDetailNoise()), in [0, 64]; default 0.
    *
@@ -396,6 +420,15 @@ public:
    * the first upload).
    */
   int GetNumberOfVolumeTextureTiles();
+
+  /**
+   * Whether the last upload stored the scalars as bricks
+   * (SetVolumeBricking()), and the bytes the scalars take on the GPU (the
+   * atlas and its indirection, or the dense texture; 0 before the first
+   * upload).
+   */
+  bool GetVolumeBricked();
+  vtkIdType GetVolumeTextureBytes();
 
   /**
    * The factor the last Render() lengthened the camera steps by (1 or 2;
@@ -542,6 +575,7 @@ protected:
   bool InteractiveAdjustment = true;
   int MaximumImageReduction = 4;
   int MaximumTextureSize = 0;
+  int VolumeBricking = BRICKING_AUTO;
   int DetailSamplesPerPixel = 0;
 
 private:

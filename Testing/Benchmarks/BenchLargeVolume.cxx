@@ -8,7 +8,15 @@
 //
 //   BenchLargeVolume [--dims X Y Z] [--type uchar|char|schar|ushort|short|float]
 //                    [--mapper tyndall|vtk] [--size N] [--output FILE.png]
+//                    [--sparse] [--bricking off|on|auto]
 //   BenchLargeVolume --compare [--voxels N] [--size N] [--output-dir DIR]
+//
+// --sparse: the blobs a tenth as wide and 0 where their level is below 1
+// (a sparse cache: about 0.5 % of the samples are not 0, OpenVDB's active
+// voxels), and Tyndall's figures add the bytes its volume texture takes on
+// the GPU (vtkTransmittanceVolumeMapper::GetVolumeTextureBytes(); bricked
+// or dense: --bricking, the mapper's SetVolumeBricking(), default auto)
+// against a dense grid of the samples that are not 0.
 //
 // The volume: four Gaussian blobs over [-1, 1]^3 (a level of 200 at a
 // blob's centre, clamped to [0, 255], mapped into each type's range: see
@@ -59,6 +67,8 @@ struct Options
   std::string Output = "BenchLargeVolume.png";
   bool Compare = false;
   std::string OutputDir = ".";
+  bool Sparse = false;
+  int Bricking = vtkTransmittanceVolumeMapper::BRICKING_AUTO;
 };
 
 // Peak resident memory of this process in MiB.
@@ -73,10 +83,14 @@ double PeakResidentMiB()
 // a product of three per-axis tables) clamped to [0, 255], as T: level *
 // scale + offset (within T: see Types).
 template <typename T>
-void FillBlobs(T* out, const int dims[3], double scale, double offset)
+void FillBlobs(T* out, const int dims[3], double scale, double offset, bool sparse)
 {
-  const double blobs[4][4] = { { -0.4, -0.3, -0.2, 0.5 }, { 0.35, 0.3, 0.1, 0.45 },
+  double blobs[4][4] = { { -0.4, -0.3, -0.2, 0.5 }, { 0.35, 0.3, 0.1, 0.45 },
     { 0.0, 0.1, 0.45, 0.4 }, { 0.2, -0.45, -0.4, 0.35 } };
+  for (auto& blob : blobs)
+  {
+    blob[3] *= sparse ? 0.1 : 1.0;
+  }
   std::vector<float> axis[4][3];
   for (int b = 0; b < 4; ++b)
   {
@@ -106,7 +120,8 @@ void FillBlobs(T* out, const int dims[3], double scale, double offset)
             {
               v += axis[b][0][x] * axis[b][1][y] * axis[b][2][z];
             }
-            const double level = std::min(std::max(200.0 * v, 0.0), 255.0);
+            double level = std::min(std::max(200.0 * v, 0.0), 255.0);
+            level = sparse && level < 1.0 ? 0.0 : level;
             slice[static_cast<size_t>(y) * dims[0] + x] = static_cast<T>(level * scale + offset);
           }
         }
@@ -151,7 +166,8 @@ vtkSmartPointer<vtkImageData> MakeVolume(const Options& o, const Type& type)
   void* data = image->GetScalarPointer();
   switch (type.Id)
   {
-    vtkTemplateMacro(FillBlobs(static_cast<VTK_TT*>(data), o.Dims, type.Scale, type.Offset));
+    vtkTemplateMacro(
+      FillBlobs(static_cast<VTK_TT*>(data), o.Dims, type.Scale, type.Offset, o.Sparse));
   }
   return image;
 }
@@ -198,6 +214,11 @@ int RenderOne(const Options& o)
   vtkNew<vtkTyndallErrorObserver> errors;
   errors->Watch(mapper);
   mapper->SetInputData(data);
+  auto* tyndall = vtkTransmittanceVolumeMapper::SafeDownCast(mapper);
+  if (tyndall)
+  {
+    tyndall->SetVolumeBricking(o.Bricking);
+  }
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);
@@ -231,6 +252,23 @@ int RenderOne(const Options& o)
               "resident %8.1f MiB  %s%s\n",
     o.Mapper.c_str(), o.Dims[0], o.Dims[1], o.Dims[2], o.Type.c_str(), mib, times[0], times[1],
     PeakResidentMiB(), o.Output.c_str(), errors->HasErrors() ? "  (error)" : "");
+  if (tyndall && o.Sparse)
+  {
+    // The samples that are not 0 (the blobs' level of 0 is `Offset`).
+    vtkDataArray* scalars = data->GetPointData()->GetScalars();
+    vtkIdType active = 0;
+    for (vtkIdType n = 0; n < scalars->GetNumberOfTuples(); ++n)
+    {
+      active += scalars->GetTuple1(n) != type->Offset ? 1 : 0;
+    }
+    const double texture = tyndall->GetVolumeTextureBytes() / (1024.0 * 1024.0);
+    const double activeMiB = active * scalars->GetDataTypeSize() / (1024.0 * 1024.0);
+    std::printf(
+      "         GPU volume texture %.1f MiB (%s), %lld samples not 0 (%.3f %% of the box; "
+      "a dense grid of them %.1f MiB): %.2fx\n",
+      texture, tyndall->GetVolumeBricked() ? "bricked" : "dense", static_cast<long long>(active),
+      100.0 * active / scalars->GetNumberOfTuples(), activeMiB, texture / activeMiB);
+  }
   // The figures for --compare, beside the picture.
   if (FILE* figures = std::fopen((o.Output + ".txt").c_str(), "w"))
   {
@@ -357,12 +395,23 @@ int main(int argc, char* argv[])
     {
       o.Compare = true;
     }
+    else if (a == "--sparse")
+    {
+      o.Sparse = true;
+    }
+    else if (a == "--bricking" && i + 1 < argc)
+    {
+      const std::string m = argv[++i];
+      o.Bricking = m == "off" ? vtkTransmittanceVolumeMapper::BRICKING_OFF
+                              : (m == "on" ? vtkTransmittanceVolumeMapper::BRICKING_ON
+                                           : vtkTransmittanceVolumeMapper::BRICKING_AUTO);
+    }
     else
     {
       std::printf(
         "Usage: BenchLargeVolume [--dims X Y Z | --voxels N] [--type "
         "uchar|char|schar|ushort|short|float] [--mapper tyndall|vtk] [--size N] [--output "
-        "FILE.png] [--compare [--output-dir DIR]]\n");
+        "FILE.png] [--sparse] [--bricking off|on|auto] [--compare [--output-dir DIR]]\n");
       return EXIT_FAILURE;
     }
   }

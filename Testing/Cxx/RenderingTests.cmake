@@ -30,6 +30,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperDepthPeeling.cxx
   TestTransmittanceMapperDataTypes.cxx
   TestTransmittanceMapperTiling.cxx
+  TestTransmittanceMapperBricks.cxx
   TestTransmittanceMapReducer.cxx)
 # VTK's scenes against VTK's mapper (no baseline; -T: where their pictures go).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests

@@ -140,10 +140,12 @@ int TestTransmittanceMapperBadInput(int, char*[])
       values->SetComponent(i, 1, std::numeric_limits<float>::quiet_NaN());
     }
     expectError(image, "no finite value in component 1", "a component of NaN only");
-    // Several components in a blend mode they are not drawn in.
-    mapper->SetBlendModeToMaximumIntensity();
-    expectError(MakeImage(8, 8, 8, 2, 1.0), "maximum intensity blend mode",
-      "two components, maximum intensity");
+    // Several components in the blend mode they are not drawn in (the
+    // projections draw them: vtkTyndallProjection).
+    mapper->SetBlendModeToIsoSurface();
+    volume->GetProperty()->GetIsoSurfaceValues()->SetValue(0, 0.5);
+    expectError(MakeImage(8, 8, 8, 2, 1.0), "isosurface blend mode", "two components, isosurfaces");
+    volume->GetProperty()->GetIsoSurfaceValues()->SetNumberOfContours(0);
     mapper->SetBlendModeToComposite();
   }
   expectError(MakeImage(8, 8, 1, 1, 1.0), "at least 2", "one voxel thick");

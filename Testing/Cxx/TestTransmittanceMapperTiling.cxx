@@ -36,6 +36,7 @@
 
 #include "TyndallTestCheck.h"
 #include "TyndallTestImage.h"
+#include "TyndallTestSampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,31 +51,6 @@ using tyndall_test::Check;
 
 constexpr int NX = 20, NY = 18, NZ = 131;
 constexpr int TileLimit = 48; // 3 tiles 44 slices apart (the last 43 slices), 2 x 2 places
-
-// Trilinear sample of `values` (dims, x fastest) at texture coordinate t,
-// clamp-to-edge: what the GPU's linear filter does.
-double Trilinear(const std::vector<double>& values, const int dims[3], const double t[3])
-{
-  int i0[3], i1[3];
-  double w[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const double v = t[a] * dims[a] - 0.5;
-    const double f = std::floor(v);
-    w[a] = v - f;
-    i0[a] = std::min(std::max(static_cast<int>(f), 0), dims[a] - 1);
-    i1[a] = std::min(std::max(static_cast<int>(f) + 1, 0), dims[a] - 1);
-  }
-  double sum = 0.0;
-  for (int c = 0; c < 8; ++c)
-  {
-    const int i = (c & 1) ? i1[0] : i0[0], j = (c & 2) ? i1[1] : i0[1], k = (c & 4) ? i1[2] : i0[2];
-    const double weight =
-      ((c & 1) ? w[0] : 1.0 - w[0]) * ((c & 2) ? w[1] : 1.0 - w[1]) * ((c & 4) ? w[2] : 1.0 - w[2]);
-    sum += weight * values[(static_cast<size_t>(k) * dims[1] + j) * dims[0] + i];
-  }
-  return sum;
-}
 
 // Pixels more than 10 levels from the background's colour.
 int CountDrawn(vtkImageData* image, const double background[3])
@@ -166,7 +142,9 @@ void CheckLayout()
     }
     double texel[3];
     tiling.MapCoordinate(t, texel);
-    worst = std::max(worst, std::abs(Trilinear(values, dims, t) - Trilinear(tiled, size, texel)));
+    worst = std::max(worst,
+      std::abs(tyndall_test::TextureSample(values, dims, t) -
+        tyndall_test::TextureSample(tiled, size, texel)));
   }
   std::cout << "tiled against whole samples: largest difference " << worst << "\n";
   Check(worst < 1.0e-9, "the tiled layout samples as the volume (MapCoordinate())");

@@ -55,29 +55,58 @@ vec3 tyndallTiledTexel(vec3 t, vec3 dims, vec3 tiling, vec3 textureDims)
   return (vec3(origin + v.xy, v.z - k * tiling.y) + 0.5) / textureDims;
 }
 
+#if TYNDALL_VOLUME_BRICKED
+// A volume stored as the bricks that vary (vtkTransmittanceVolumeBricks,
+// whose MapCoordinate() is this function's CPU twin): the sample coordinate
+// v = t dims - 0.5 clamped to the samples (clamp-to-edge), its brick b
+// (TYNDALL_BRICK_SIZE samples a side; the last holds the volume's end), the
+// brick's slot in the atlas from the indirection texture (16-bit, one texel
+// per brick), and the texel v - b TYNDALL_BRICK_SIZE in the slot, whose
+// TYNDALL_BRICK_SIZE + 1 texels a side hold every sample its filtering reads.
+vec3 tyndallBrickedTexel(sampler3D bricks, vec3 t, vec3 dims, vec3 counts, vec3 atlasDims)
+{
+  float size = float(TYNDALL_BRICK_SIZE);
+  vec3 v = clamp(t * dims - 0.5, vec3(0.0), dims - 1.0);
+  vec3 b = min(floor(v / size), counts - 1.0);
+  vec3 slot = floor(texelFetch(bricks, ivec3(b), 0).xyz * 65535.0 + 0.5);
+  return (slot * (size + 1.0) + (v - b * size) + 0.5) / atlasDims;
+}
+uniform sampler3D brickTexture; // the indirection (the volume itself when not bricked)
+uniform int volumeBricked;      // 0: this volume is dense (a guest's are bricked)
+uniform vec3 brickCounts;
+uniform vec3 brickAtlasDims;
+#endif
+
+#if TYNDALL_VOLUME_TILED || TYNDALL_VOLUME_BRICKED
+uniform vec3 volumeDims;
+#endif
 #if TYNDALL_VOLUME_TILED
 uniform vec3 volumeTiling;
-uniform vec3 volumeDims;
 uniform vec3 volumeTextureDims;
+#endif
 vec3 tyndallVolumeTexel(vec3 t)
 {
-  return tyndallTiledTexel(t, volumeDims, volumeTiling, volumeTextureDims);
+  // (One tile, not bricked: the texture is the volume, clamp-to-edge.)
+#if TYNDALL_VOLUME_TILED
+  t = tyndallTiledTexel(t, volumeDims, volumeTiling, volumeTextureDims);
+#endif
+#if TYNDALL_VOLUME_BRICKED
+  if (volumeBricked > 0)
+  {
+    t = tyndallBrickedTexel(brickTexture, t, volumeDims, brickCounts, brickAtlasDims);
+  }
+#endif
+  return t;
 }
 // One sample's step in volume texture coordinates.
 vec3 tyndallVolumeTexelSize()
 {
+#if TYNDALL_VOLUME_TILED || TYNDALL_VOLUME_BRICKED
   return 1.0 / volumeDims;
-}
 #else
-vec3 tyndallVolumeTexel(vec3 t)
-{
-  return t; // one tile: the texture is the volume (clamp-to-edge)
-}
-vec3 tyndallVolumeTexelSize()
-{
   return 1.0 / vec3(textureSize(volumeTexture, 0));
-}
 #endif
+}
 
 // The scalars' texels at the volume texture coordinate t.
 vec4 tyndallVolumeAt(vec3 t)
@@ -671,38 +700,62 @@ uniform vec3 guestTexScale[TYNDALL_GUESTS];
 uniform vec3 guestTexShift[TYNDALL_GUESTS];
 uniform vec2 guestScalarToTable[TYNDALL_GUESTS];
 uniform float guestDensity[TYNDALL_GUESTS];
+#if TYNDALL_VOLUME_TILED || TYNDALL_VOLUME_BRICKED
+uniform vec3 guestDims[TYNDALL_GUESTS];
+#endif
 #if TYNDALL_VOLUME_TILED
 // Each guest's tiles (tyndallTiledTexel(); one tile when its volume fits).
 uniform vec3 guestTiling[TYNDALL_GUESTS];
-uniform vec3 guestDims[TYNDALL_GUESTS];
 uniform vec3 guestTextureDims[TYNDALL_GUESTS];
+#endif
+#if TYNDALL_VOLUME_BRICKED
+// Each guest's bricks (tyndallBrickedTexel(); guestBricked 0 for a dense one).
+uniform sampler3D guestBricks[TYNDALL_GUESTS];
+uniform int guestBricked[TYNDALL_GUESTS];
+uniform vec3 guestBrickCounts[TYNDALL_GUESTS];
+uniform vec3 guestAtlasDims[TYNDALL_GUESTS];
+// The guest's indirection as a function's argument (samplers are indexed by
+// constants only), and the parameter that takes it.
+#define TYNDALL_GUEST_BRICKS(g) guestBricks[g],
+#define TYNDALL_GUEST_BRICKS_PARAMETER sampler3D bricks,
+#define TYNDALL_GUEST_BRICKS_ARGUMENT bricks,
+#else
+#define TYNDALL_GUEST_BRICKS(g)
+#define TYNDALL_GUEST_BRICKS_PARAMETER
+#define TYNDALL_GUEST_BRICKS_ARGUMENT
 #endif
 
 // Guest g's texture coordinate of its box coordinate q.
-vec3 tyndallGuestTexel(int g, vec3 q)
+vec3 tyndallGuestTexel(TYNDALL_GUEST_BRICKS_PARAMETER int g, vec3 q)
 {
   vec3 t = q * guestTexScale[g] + guestTexShift[g];
 #if TYNDALL_VOLUME_TILED
   t = tyndallTiledTexel(t, guestDims[g], guestTiling[g], guestTextureDims[g]);
 #endif
+#if TYNDALL_VOLUME_BRICKED
+  if (guestBricked[g] > 0)
+  {
+    t = tyndallBrickedTexel(bricks, t, guestDims[g], guestBrickCounts[g], guestAtlasDims[g]);
+  }
+#endif
   return t;
 }
 
-float tyndallGuestExtinction(sampler3D volume, sampler2D table, int g, vec3 x)
+float tyndallGuestExtinction(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER sampler2D table, int g, vec3 x)
 {
   vec3 q = (guestWorldToBox[g] * vec4(x, 1.0)).xyz;
   if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0))))
   {
     return 0.0;
   }
-  float value = texture(volume, tyndallGuestTexel(g, q)).r;
+  float value = texture(volume, tyndallGuestTexel(TYNDALL_GUEST_BRICKS_ARGUMENT g, q)).r;
   vec2 toTable = guestScalarToTable[g];
   return guestDensity[g] *
     texture(table, vec2(value * toTable.x + toTable.y, TYNDALL_TABLE_ALBEDO_ROW)).a;
 }
 
 // Samplers are indexed by constants only (GLSL 1.50): one term per guest.
-#define TYNDALL_GUEST_EXTINCTION(g) +tyndallGuestExtinction(guestVolume[g], guestTransfer[g], g, x)
+#define TYNDALL_GUEST_EXTINCTION(g) +tyndallGuestExtinction(guestVolume[g], TYNDALL_GUEST_BRICKS(g) guestTransfer[g], g, x)
 #endif
 
 // The extinction the light sees at the world point x, the middle of a step

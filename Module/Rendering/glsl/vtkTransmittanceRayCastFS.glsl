@@ -527,7 +527,7 @@ uniform float guestColored[TYNDALL_GUESTS];
 // Guest g's extinction at x (0 outside its box or when the camera rays do
 // not sample it); adds its colour and emission, weighted by it, to `color`
 // and `emission`.
-float tyndallGuestCameraSample(sampler3D volume, sampler2D table,
+float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER sampler2D table,
 #if TYNDALL_GUEST_COLORS
   sampler3D scattering,
 #endif
@@ -538,7 +538,7 @@ float tyndallGuestCameraSample(sampler3D volume, sampler2D table,
   {
     return 0.0;
   }
-  vec3 texel = tyndallGuestTexel(g, q);
+  vec3 texel = tyndallGuestTexel(TYNDALL_GUEST_BRICKS_ARGUMENT g, q);
   float value = texture(volume, texel).r;
   vec2 toTable = guestScalarToTable[g];
   float coord = value * toTable.x + toTable.y;
@@ -559,7 +559,7 @@ float tyndallGuestCameraSample(sampler3D volume, sampler2D table,
 }
 
 // Samplers are indexed by constants only (GLSL 1.50): one statement per guest.
-#define TYNDALL_GUEST_CAMERA_SAMPLE(g) sigma += tyndallGuestCameraSample(guestVolume[g], guestTransfer[g], TYNDALL_GUEST_SCATTERING(g) g, x, color, emission);
+#define TYNDALL_GUEST_CAMERA_SAMPLE(g) sigma += tyndallGuestCameraSample(guestVolume[g], TYNDALL_GUEST_BRICKS(g) guestTransfer[g], TYNDALL_GUEST_SCATTERING(g) g, x, color, emission);
 
 // What the camera rays see at x: the extinction of this medium (empty
 // outside its box) plus its camera guests', returned; their colours and
