@@ -47,6 +47,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 120
   Tyndall::RenderingCxx-TestTransmittanceMapperScenes 10
   Tyndall::RenderingCxx-TestTransmittanceMapperDataTypes 12
+  Tyndall::RenderingCxx-TestTransmittanceMapperBricks 8
   TyndallParaView-GUI 10
   Tyndall::ReferenceCxx-TestVolumetricPathTracer 9
   Tyndall::ReferenceCxx-TestVolumetricPathTracerScenes 13

@@ -177,20 +177,38 @@ vtkTransmittanceMediumTextures::~vtkTransmittanceMediumTextures() = default;
 bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
   const vtkTyndallGridMedium& medium, const Extras& extras, vtkObject* reporter)
 {
+  // What keeps the scalars dense (another texture at their resolution):
+  // a change of it uploads them again.
+  const bool blocked = !medium.GetLabelMap().GetLabels().empty() ||
+    !medium.GetEmissionValues().empty() || medium.HasMissingData() || extras.Scattering;
   const bool sameMedium = this->UploadedMedium == &medium && this->VolumeTexture &&
     this->VolumeTexture->GetContext() == window &&
     this->UploadedMaximumSize == this->MaximumTextureSize &&
-    this->UploadedBricking == this->Bricking &&
-    this->UploadedScattering == (extras.Scattering != nullptr);
+    this->UploadedBricking == this->Bricking && this->UploadedBlocked == blocked;
   const bool newScalars = !sameMedium || medium.GetScalarsTime() > this->ScalarsTime;
   if (newScalars)
   {
+    // A volume that failed after its copy and plan (too large dense, no
+    // bricks it could take) is not tried again until something changes.
+    const bool failedBefore = this->FailedMedium == &medium &&
+      this->FailedScalarsTime == medium.GetScalarsTime() &&
+      this->FailedBricking == this->Bricking &&
+      this->FailedMaximumSize == this->MaximumTextureSize && this->FailedBlocked == blocked;
     this->ScalarsTime = 0;
-    this->UploadedScattering = extras.Scattering != nullptr;
-    if (!this->UploadScalars(window, medium, reporter))
+    this->UploadedBlocked = blocked;
+    if (failedBefore || !this->UploadScalars(window, medium, reporter))
     {
+      if (!this->DenseFits)
+      {
+        this->FailedMedium = &medium;
+        this->FailedScalarsTime = medium.GetScalarsTime();
+        this->FailedBricking = this->Bricking;
+        this->FailedMaximumSize = this->MaximumTextureSize;
+        this->FailedBlocked = blocked;
+      }
       return false;
     }
+    this->FailedMedium = nullptr;
     this->ScalarsTime = medium.GetScalarsTime();
     this->UploadedMaximumSize = this->MaximumTextureSize;
     this->UploadedBricking = this->Bricking;
@@ -301,8 +319,8 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   this->UploadSize = maxSize;
   // Bricks (vtkTransmittanceVolumeBricks) replace the scalars' texture
   // alone: not where another texture shares its layout.
-  this->BricksAllowed = factor == 1 && !this->Tiling.IsTiled() && !medium.GetLabelMap().Enabled() &&
-    !medium.GetEmissionFromArray() && !this->UploadedScattering;
+  this->BricksAllowed = factor == 1 && !this->Tiling.IsTiled() && !this->UploadedBlocked;
+  this->Bricks.Clear(); // (until this upload plans them)
   if (factor > 1)
   {
     vtkWarningWithObjectMacro(reporter,
@@ -503,6 +521,7 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
     this->ReportTooLarge(
       components, type, " (asked before uploading it; no bricks it could take)", reporter);
     Release(this->BrickTexture, window);
+    Release(this->ValidityTexture, window);
     Release(this->VolumeTexture, window);
     return false;
   }
@@ -893,6 +912,7 @@ void vtkTransmittanceMediumTextures::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->BrickTexture = nullptr;
   this->Bricks.Clear();
+  this->FailedMedium = nullptr;
   this->VolumeTexture = nullptr;
   this->ValidityTexture = nullptr;
   this->TransferTexture = nullptr;

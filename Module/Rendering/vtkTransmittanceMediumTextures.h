@@ -94,11 +94,12 @@ public:
    * Whether the scalars may be stored as the bricks that vary
    * (vtkTransmittanceVolumeBricks; the mapper's
    * vtkTransmittanceVolumeMapper::SetVolumeBricking()): BRICKING_OFF never,
-   * BRICKING_ON whenever the volume allows it, BRICKING_AUTO (the default)
-   * when the bricks take at most half the dense texture's bytes. A volume
-   * with another texture at its resolution (validity, labels, an emission
-   * array, a coloured particle cloud's colours), tiled or downsampled, is
-   * dense. A change uploads the volume again.
+   * BRICKING_ON when the bricks take no more than the dense texture's
+   * bytes, BRICKING_AUTO (the default) when they take at most half of them;
+   * both whenever the dense texture does not fit. A volume with another
+   * texture at its resolution (validity, labels, an emission array, a
+   * coloured particle cloud's colours), tiled or downsampled, is dense. A
+   * change of those or of the setting uploads the volume again.
    */
   enum Brickings
   {
@@ -249,8 +250,14 @@ private:
   int UploadedBricking = BRICKING_AUTO;
   int UploadSize = 2048; // the 3-D texture size the last upload planned for
   bool BricksAllowed = false;
-  bool UploadedScattering = false; // a coloured particle cloud's colours beside the scalars
-  bool DenseFits = true;           // whether the GL can hold the dense volume texture
+  bool UploadedBlocked = false; // another texture at the scalars' resolution (no bricks)
+  bool DenseFits = true;        // whether the GL can hold the dense volume texture
+  // The last upload that failed after its copy and plan (DenseFits false).
+  const vtkTyndallGridMedium* FailedMedium = nullptr;
+  vtkMTimeType FailedScalarsTime = 0;
+  int FailedBricking = -1;
+  int FailedMaximumSize = -1;
+  bool FailedBlocked = false;
   vtkMTimeType DetailTime = 0;
   vtkMTimeType DetailExtinctionTime = 0; // the detail's extinction the maps last saw
   vtkTyndallMajorantGrid Majorants;

@@ -85,52 +85,64 @@ bool vtkTransmittanceVolumeBricks::Plan(const int dims[3], int components, int v
   std::map<std::string, int> constants; // a constant's bytes -> its slot
   const int* n = dims;
   const int* nb = this->BrickCounts;
-  size_t b = 0;
-  for (int bz = 0; bz < nb[2]; ++bz)
+  try
   {
-    for (int by = 0; by < nb[1]; ++by)
+    size_t b = 0;
+    for (int bz = 0; bz < nb[2]; ++bz)
     {
-      for (int bx = 0; bx < nb[0]; ++bx, ++b)
+      for (int by = 0; by < nb[1]; ++by)
       {
-        const unsigned char* first =
-          at(Sample(bx, 0, n[0]), Sample(by, 0, n[1]), Sample(bz, 0, n[2]));
-        bool constant = true;
-        for (int k = 0; constant && k < Side; ++k)
+        for (int bx = 0; bx < nb[0]; ++bx, ++b)
         {
-          for (int j = 0; constant && j < Side; ++j)
+          const unsigned char* first =
+            at(Sample(bx, 0, n[0]), Sample(by, 0, n[1]), Sample(bz, 0, n[2]));
+          bool constant = true;
+          for (int k = 0; constant && k < Side; ++k)
           {
-            const unsigned char* row = at(0, Sample(by, j, n[1]), Sample(bz, k, n[2]));
-            for (int i = 0; constant && i < Side; ++i)
+            for (int j = 0; constant && j < Side; ++j)
             {
-              constant = std::memcmp(row + Sample(bx, i, n[0]) * tuple, first, tuple) == 0;
+              const unsigned char* row = at(0, Sample(by, j, n[1]), Sample(bz, k, n[2]));
+              for (int i = 0; constant && i < Side; ++i)
+              {
+                constant = std::memcmp(row + Sample(bx, i, n[0]) * tuple, first, tuple) == 0;
+              }
             }
           }
-        }
-        if (constant)
-        {
-          const std::string key(reinterpret_cast<const char*>(first), tuple);
-          const auto found = constants.find(key);
-          if (found != constants.end())
+          if (constant)
           {
-            this->BrickSlot[b] = found->second;
-            continue;
+            const std::string key(reinterpret_cast<const char*>(first), tuple);
+            const auto found = constants.find(key);
+            if (found != constants.end())
+            {
+              this->BrickSlot[b] = found->second;
+              continue;
+            }
+            if (static_cast<int>(constants.size()) < MaximumConstants)
+            {
+              constants.emplace(key, this->Slots);
+            }
           }
-          if (static_cast<int>(constants.size()) < MaximumConstants)
-          {
-            constants.emplace(key, this->Slots);
-          }
+          this->BrickSlot[b] = this->Slots++;
+          this->SlotBrick.push_back(static_cast<int>(b));
         }
-        this->BrickSlot[b] = this->Slots++;
-        this->SlotBrick.push_back(static_cast<int>(b));
       }
     }
   }
-  // The slots: a row of at most perAxis, then rows, then layers.
-  const int slots = this->Slots;
-  this->SlotCounts[0] = std::min(slots, perAxis);
-  this->SlotCounts[1] = std::min((slots + this->SlotCounts[0] - 1) / this->SlotCounts[0], perAxis);
-  this->SlotCounts[2] = (slots + this->SlotCounts[0] * this->SlotCounts[1] - 1) /
-    (this->SlotCounts[0] * this->SlotCounts[1]);
+  catch (const std::bad_alloc&)
+  {
+    this->Clear();
+    return false;
+  }
+  // The slots: rows of at most perAxis, the fewest layers of at most
+  // perAxis rows, and in them the fewest rows (so the last layer is not
+  // mostly empty: its unused slots count against the share).
+  const long long slots = this->Slots, p = perAxis;
+  const long long s0 = std::min(slots, p);
+  const long long s2 = (slots + s0 * p - 1) / (s0 * p);
+  const long long s1 = (slots + s0 * s2 - 1) / (s0 * s2);
+  this->SlotCounts[0] = static_cast<int>(s0);
+  this->SlotCounts[1] = static_cast<int>(std::min(s1, p));
+  this->SlotCounts[2] = static_cast<int>(std::min(s2, p + 1)); // (p + 1: does not fit)
   for (int a = 0; a < 3; ++a)
   {
     this->AtlasDimensions[a] = this->SlotCounts[a] * Side;

@@ -323,11 +323,12 @@ public:
    * (vtkTransmittanceVolumeBricks: bricks of 8^3 samples, those whose
    * samples are all one value, such as OpenVDB's background, shared, the
    * others in an atlas, one indirection texel per brick): BRICKING_OFF (0)
-   * never, BRICKING_ON (1) whenever the volume allows it, BRICKING_AUTO (2,
-   * the default) when the bricks take at most half the dense texture's
-   * bytes. The picture is the same either way (the atlas holds every
-   * sample each brick's filtering reads). A volume with NaN scalars or a
-   * mask, a label map, an emission array, a particle cloud, or one tiled or
+   * never, BRICKING_ON (1) whenever the bricks take no more than the dense
+   * texture's bytes, BRICKING_AUTO (2, the default) when they take at most
+   * half of them; both whenever the dense texture does not fit the GPU.
+   * The picture is the same either way (the atlas holds every sample each
+   * brick's filtering reads). A volume with NaN scalars or a mask, a label
+   * map, an emission array, a coloured particle cloud, or one tiled or
    * downsampled (SetMaximumTextureSize()) is dense. A change uploads the
    * volume again.
    */

@@ -52,26 +52,6 @@ using tyndall_test::Check;
 constexpr int NX = 20, NY = 18, NZ = 131;
 constexpr int TileLimit = 48; // 3 tiles 44 slices apart (the last 43 slices), 2 x 2 places
 
-// Pixels more than 10 levels from the background's colour.
-int CountDrawn(vtkImageData* image, const double background[3])
-{
-  const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
-  const int components = image->GetNumberOfScalarComponents();
-  int count = 0;
-  for (vtkIdType n = 0; n < image->GetNumberOfPoints(); ++n, p += components)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      if (std::abs(p[c] - 255.0 * background[c]) > 10.0)
-      {
-        ++count;
-        break;
-      }
-    }
-  }
-  return count;
-}
-
 void CheckLayout()
 {
   vtkTransmittanceVolumeTiling tiling;
@@ -269,9 +249,11 @@ int TestTransmittanceMapperTiling(int, char*[])
     }
     const double psnr = tyndall_test::PSNR(pictures[1], pictures[0]);
     std::cout << what << ": tiled against one texture " << psnr << " dB, "
-              << CountDrawn(pictures[0], renderer->GetBackground()) << " pixels drawn\n";
+              << tyndall_test::CountDrawn(pictures[0], renderer->GetBackground())
+              << " pixels drawn\n";
     Check(psnr >= 60.0, what + ": the tiled volume draws the one-texture picture");
-    Check(CountDrawn(pictures[0], renderer->GetBackground()) > 500, what + ": a picture");
+    Check(
+      tyndall_test::CountDrawn(pictures[0], renderer->GetBackground()) > 500, what + ": a picture");
     // No warning but the `expected` one (NaN, several volumes' order).
     const std::string warning = warnings->GetWarning() ? warnings->GetWarningMessage() : "";
     std::cout << (warning.empty() ? "" : "warning: " + warning + "\n");

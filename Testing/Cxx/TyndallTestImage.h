@@ -76,6 +76,26 @@ inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
 }
 
 // The largest difference of two 8-bit images of the same size, in any value.
+/// Pixels of an 8-bit picture more than 10 levels from `background` (RGB in [0, 1]).
+inline int CountDrawn(vtkImageData* image, const double background[3])
+{
+  const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+  const int components = image->GetNumberOfScalarComponents();
+  int count = 0;
+  for (vtkIdType n = 0; n < image->GetNumberOfPoints(); ++n, p += components)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (std::abs(p[c] - 255.0 * background[c]) > 10.0)
+      {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
+}
+
 inline int MaxDifference(vtkImageData* a, vtkImageData* b)
 {
   const auto* pa = static_cast<const unsigned char*>(a->GetScalarPointer());
