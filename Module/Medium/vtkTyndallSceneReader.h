@@ -56,10 +56,10 @@
  * volume's own first, then the guests), the GPU mapper the grids beneath
  * them (GetMedium(), GetDetail(), GetGuests()) for its textures.
  *
- * The settings of the volume and the renderer that VTK's volume mappers
- * draw and Tyndall does not yet (vtkTyndallVolumeSettings: a blend mode
- * other than composite, a plain property's gradient shading, ...) are named
- * in a warning.
+ * The settings of the volume and the renderer that Tyndall draws otherwise
+ * than VTK 9.1's volume mappers (vtkTyndallVolumeSettings: what VTK draws
+ * and Tyndall does not yet, and where VTK's shader draws other than it
+ * means) are named in a warning.
  *
  * A Tyndall volume is one whose mapper is a vtkParticipatingMediumMapper
  * (the GL-free base of Tyndall's mappers).

@@ -189,16 +189,23 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
   if (newScalars)
   {
     // A volume that failed after its copy and plan (too large dense, no
-    // bricks it could take) is not tried again until something changes.
+    // bricks it could take) is not copied and planned again until something
+    // changes; each render still says so.
     const bool failedBefore = this->FailedMedium == &medium &&
       this->FailedScalarsTime == medium.GetScalarsTime() &&
       this->FailedBricking == this->Bricking &&
       this->FailedMaximumSize == this->MaximumTextureSize && this->FailedBlocked == blocked;
     this->ScalarsTime = 0;
     this->UploadedBlocked = blocked;
-    if (failedBefore || !this->UploadScalars(window, medium, reporter))
+    if (failedBefore)
     {
-      if (!this->DenseFits)
+      vtkErrorWithObjectMacro(reporter, << "The volume fits the GPU neither whole nor as bricks "
+                                           "(said when it was first uploaded); not drawn.");
+      return false;
+    }
+    if (!this->UploadScalars(window, medium, reporter))
+    {
+      if (!this->DenseFits && this->BricksAllowed && this->Bricking != BRICKING_OFF)
       {
         this->FailedMedium = &medium;
         this->FailedScalarsTime = medium.GetScalarsTime();

@@ -75,7 +75,6 @@ inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
   return image;
 }
 
-// The largest difference of two 8-bit images of the same size, in any value.
 /// Pixels of an 8-bit picture more than 10 levels from `background` (RGB in [0, 1]).
 inline int CountDrawn(vtkImageData* image, const double background[3])
 {
@@ -96,6 +95,7 @@ inline int CountDrawn(vtkImageData* image, const double background[3])
   return count;
 }
 
+// The largest difference of two 8-bit images of the same size, in any value.
 inline int MaxDifference(vtkImageData* a, vtkImageData* b)
 {
   const auto* pa = static_cast<const unsigned char*>(a->GetScalarPointer());
