@@ -107,11 +107,13 @@ public:
 
   ///@{
   /**
-   * The finite scalar range (component 0's), and the count of samples with
-   * a NaN component; the finite range of component c (0 .. 3).
+   * The finite scalar range (component 0's), the count of samples with a
+   * NaN component and the count of infinite values (any component); the
+   * finite range of component c (0 .. 3).
    */
   const double* GetFiniteRange() const { return this->FiniteRange; }
   vtkIdType GetNumberOfNaNScalars() const { return this->NaNCount; }
+  vtkIdType GetNumberOfInfiniteValues() const { return this->InfCount; }
   const double* GetComponentRange(int c) const
   {
     return this->ComponentRanges[c < 0 ? 0 : (c > 3 ? 3 : c)];

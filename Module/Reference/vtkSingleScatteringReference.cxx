@@ -313,10 +313,9 @@ private:
   {
     const vtkTyndallGridMedium& grid = *this->S->Projected;
     const vtkTyndallProjection& projection = grid.GetProjection();
-    const vtkTyndallProjection::Classes classes = grid.GetProjectionClasses();
     const bool components = grid.GetComponents().Enabled();
     vtkTyndallProjection::Ray ray = components
-      ? vtkTyndallProjection::Ray(projection, classes)
+      ? vtkTyndallProjection::Ray(projection, this->S->ProjectionClasses)
       : vtkTyndallProjection::Ray(projection, grid.GetTable());
     // The scalar (or every component) at the distance t, to the ray (kept,
     // not missing).

@@ -86,6 +86,7 @@ void vtkTyndallReferenceScene::SetUpMedia(const vtkTyndallSceneReader& reader)
   this->Octaves = this->Parameters->ScatteringOctaves;
   const vtkTyndallGridMedium& grid = reader.GetMedium();
   this->Projected = grid.GetProjection().Enabled() ? &grid : nullptr;
+  this->ProjectionClasses = grid.GetProjectionClasses();
   this->Shaded = grid.GetShading().Enabled() ? &grid : nullptr;
   this->Isosurfaced = grid.GetIsosurfaces().Enabled() ? &grid : nullptr;
 }

@@ -43,6 +43,7 @@
 #include "vtkTransmittanceMapMath.h" // For the phase function
 #include "vtkTyndallFootprint.h"     // For vtkTyndallFootprint
 #include "vtkTyndallMedium.h"        // For the media
+#include "vtkTyndallProjection.h"    // For vtkTyndallProjection::Classes
 #include "vtkTyndallSceneReader.h"   // For MaximumNumberOfGuests
 #include "vtkType.h"                 // For vtkIdType
 
@@ -102,6 +103,8 @@ public:
    * (vtkTyndallProjection; Media's first then), else null.
    */
   const vtkTyndallGridMedium* Projected = nullptr;
+  /// Projected's classification of several components (set with it).
+  vtkTyndallProjection::Classes ProjectionClasses;
   /**
    * The volume's grid when a plain property's gradient shading shades it
    * (vtkTyndallShading; Media's first then), else null.

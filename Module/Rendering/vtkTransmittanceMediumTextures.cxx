@@ -429,6 +429,19 @@ bool vtkTransmittanceMediumTextures::UploadFloats(
   const bool missing = medium.HasMissingData(); // NaN scalars or a mask
   vtkDataArray* scalars = medium.GetScalars();
   const int components = scalars->GetNumberOfComponents();
+  if (scalars->GetDataType() == VTK_FLOAT && this->Factor == 1 && !missing &&
+    medium.GetNumberOfInfiniteValues() == 0)
+  {
+    // Every sample finite, so within its component's finite range: the
+    // cleaned copy would be the scalars themselves (a 1024^3 volume's 4 GiB
+    // copy not made; the bricks and the texture read the array).
+    const float* data = static_cast<const float*>(scalars->GetVoidPointer(0));
+    this->BlockRangeTime = this->Majorants.BuildRanges(data, components, nullptr, this->Dimensions);
+    this->ValueMap[0] = 1.0f;
+    this->ValueMap[1] = 0.0f;
+    return this->CreateVolumeTexture(
+      window, components, VTK_FLOAT, const_cast<float*>(data), nullptr, reporter);
+  }
   std::vector<float> values;
   std::vector<unsigned char> valid;
   try

@@ -190,7 +190,8 @@ private:
   template <typename T>
   bool UploadStored(vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium,
     const T* data, vtkObject* reporter);
-  // Every other type's scalars as floats (NaN and +-Inf cleaned).
+  // Every other type's scalars as floats (NaN and +-Inf cleaned): a copy,
+  // but for float scalars that need no cleaning, which are read in place.
   bool UploadFloats(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   // VolumeTexture from `values` (Dimensions, `components` of `type`) and,

@@ -717,6 +717,28 @@ void TwoDependentProperty(vtkVolumeProperty* property, const double*)
   property->IndependentComponentsOff();
 }
 
+// `count` independent components, component c from black at 0 to
+// colors[c] at `top`, its opacity from 0 to 0.2 over the same values, at
+// unit distance 1 and weight weights[c].
+void SetIndependentComponents(vtkVolumeProperty* property, int count, const double colors[][3],
+  double top, const double* weights)
+{
+  property->IndependentComponentsOn();
+  for (int c = 0; c < count; ++c)
+  {
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+    color->AddRGBPoint(top, colors[c][0], colors[c][1], colors[c][2]);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(top, 0.2);
+    property->SetColor(c, color);
+    property->SetScalarOpacity(c, opacity);
+    property->SetScalarOpacityUnitDistance(c, 1.0);
+    property->SetComponentWeight(c, weights[c]);
+  }
+}
+
 // TestGPURayCastIndependentComponentsLightParameters' property: each
 // component from black to its own colour (red, green, blue), opacity 0 to
 // 0.2 over 0 .. 0.33, weights 1, 0.6 and 1.
@@ -724,20 +746,7 @@ void IndependentProperty(vtkVolumeProperty* property, const double*)
 {
   const double colors[3][3] = { { 1.0, 0.2, 0.1 }, { 0.2, 1.0, 0.2 }, { 0.2, 0.3, 1.0 } };
   const double weights[3] = { 1.0, 0.6, 1.0 };
-  property->IndependentComponentsOn();
-  for (int c = 0; c < 3; ++c)
-  {
-    vtkNew<vtkColorTransferFunction> color;
-    color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
-    color->AddRGBPoint(0.33, colors[c][0], colors[c][1], colors[c][2]);
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(0.0, 0.0);
-    opacity->AddPoint(0.33, 0.2);
-    property->SetColor(c, color);
-    property->SetScalarOpacity(c, opacity);
-    property->SetScalarOpacityUnitDistance(c, 1.0);
-    property->SetComponentWeight(c, weights[c]);
-  }
+  SetIndependentComponents(property, 3, colors, 0.33, weights);
 }
 
 // IndependentProperty for the additive blend mode (which sums the opacity
@@ -759,19 +768,8 @@ void FourIndependentProperty(vtkVolumeProperty* property, const double*)
 {
   const double colors[4][3] = { { 1.0, 0.2, 0.1 }, { 0.2, 1.0, 0.2 }, { 0.2, 0.3, 1.0 },
     { 1.0, 1.0, 0.3 } };
-  property->IndependentComponentsOn();
-  for (int c = 0; c < 4; ++c)
-  {
-    vtkNew<vtkColorTransferFunction> color;
-    color->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
-    color->AddRGBPoint(255.0, colors[c][0], colors[c][1], colors[c][2]);
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(0.0, 0.0);
-    opacity->AddPoint(255.0, 0.2);
-    property->SetColor(c, color);
-    property->SetScalarOpacity(c, opacity);
-    property->SetComponentWeight(c, 0.25 * (c + 1));
-  }
+  const double weights[4] = { 0.25, 0.5, 0.75, 1.0 };
+  SetIndependentComponents(property, 4, colors, 255.0, weights);
 }
 
 // The RGBA scene's property with a tilted plane as the slice.

@@ -529,50 +529,51 @@ void TestProjections()
     }
     return ray.Pixel(rgba);
   };
-  const auto check = [](const double rgba[4], const double expected[4], const std::string& what)
-  {
-    double worst = 0.0;
-    for (int c = 0; c < 4; ++c)
-    {
-      worst = std::max(worst, std::abs(rgba[c] - expected[c]));
-    }
-    std::cout << what << ": (" << rgba[0] << ", " << rgba[1] << ", " << rgba[2] << ", " << rgba[3]
-              << "), off by " << worst << "\n";
-    Check(worst < 1e-6, what);
-  };
   using M = vtkVolumeMapper;
-  double rgba[4];
-  // Independent: each component its own extremum (7 and 5; 2 and 1).
-  const double maximum[4] = { 0.35, 0.1, 0.0, 0.45 };
-  Check(draw(M::MAXIMUM_INTENSITY_BLEND, true, rgba), "independent maximum drawn");
-  check(rgba, maximum, "independent maximum: sum w a c, sum w a");
-  const double minimum[4] = { 0.1, 0.1, 0.0, 0.2 };
-  Check(draw(M::MINIMUM_INTENSITY_BLEND, true, rgba), "independent minimum drawn");
-  check(rgba, minimum, "independent minimum");
-  // Average over [1.5, 6]: component 0 counts 2 and 4 (mean of 0.1 0.2 and
-  // 0.2 0.4: 0.05), component 1 counts 5 alone (0.2 0.5); 0.05 + 0.5 0.1.
-  const double average[4] = { 0.1, 0.1, 0.1, 1.0 };
-  Check(draw(M::AVERAGE_INTENSITY_BLEND, true, rgba), "independent average drawn");
-  check(rgba, average, "independent average: sum w mean(a u) per component");
-  // Additive: component 0 (0.02 + 0.245 + 0.08) 0.5 / 1, component 1
-  // 0.2 (0.5 + 0.1 + 0.8) 0.5 / 2 = 0.07; 0.1725 + 0.5 0.07.
-  const double additive[4] = { 0.2075, 0.2075, 0.2075, 1.0 };
-  Check(draw(M::ADDITIVE_BLEND, true, rgba), "independent additive drawn");
-  check(rgba, additive, "independent additive: sum w sum(a u dt / d)");
-  // Dependent (colour function 0 at component 0, opacity function 0 at
-  // component 1): the sample of the largest (4, 8) or smallest (7, 1)
-  // component 1, red at opacity 0.4 or 0.05.
-  const double dependentMaximum[4] = { 0.4, 0.0, 0.0, 0.4 };
-  Check(draw(M::MAXIMUM_INTENSITY_BLEND, false, rgba), "dependent maximum drawn");
-  check(rgba, dependentMaximum, "dependent maximum: the sample of the largest opacity component");
-  const double dependentMinimum[4] = { 0.05, 0.0, 0.0, 0.05 };
-  Check(draw(M::MINIMUM_INTENSITY_BLEND, false, rgba), "dependent minimum drawn");
-  check(rgba, dependentMinimum, "dependent minimum");
-  // Dependent additive: a(component 1) u_0 dt / d_1 summed:
-  // (0.25 0.2 + 0.05 0.7 + 0.4 0.4) 0.5 / 2.
-  const double dependentAdditive[4] = { 0.06125, 0.06125, 0.06125, 1.0 };
-  Check(draw(M::ADDITIVE_BLEND, false, rgba), "dependent additive drawn");
-  check(rgba, dependentAdditive, "dependent additive: the opacity component's unit distance");
+  struct Case
+  {
+    int Mode;
+    bool Independent;
+    double Expected[4];
+    const char* What;
+  };
+  const Case cases[] = {
+    // Independent: each component its own extremum (7 and 5; 2 and 1).
+    { M::MAXIMUM_INTENSITY_BLEND, true, { 0.35, 0.1, 0.0, 0.45 },
+      "independent maximum: sum w a c, sum w a" },
+    { M::MINIMUM_INTENSITY_BLEND, true, { 0.1, 0.1, 0.0, 0.2 }, "independent minimum" },
+    // Average over [1.5, 6]: component 0 counts 2 and 4 (mean of 0.1 0.2 and
+    // 0.2 0.4: 0.05), component 1 counts 5 alone (0.2 0.5); 0.05 + 0.5 0.1.
+    { M::AVERAGE_INTENSITY_BLEND, true, { 0.1, 0.1, 0.1, 1.0 },
+      "independent average: sum w mean(a u) per component" },
+    // Additive: component 0 (0.02 + 0.245 + 0.08) 0.5 / 1, component 1
+    // 0.2 (0.5 + 0.1 + 0.8) 0.5 / 2 = 0.07; 0.1725 + 0.5 0.07.
+    { M::ADDITIVE_BLEND, true, { 0.2075, 0.2075, 0.2075, 1.0 },
+      "independent additive: sum w sum(a u dt / d)" },
+    // Dependent (colour function 0 at component 0, opacity function 0 at
+    // component 1): the sample of the largest (4, 8) or smallest (7, 1)
+    // component 1, red at opacity 0.4 or 0.05.
+    { M::MAXIMUM_INTENSITY_BLEND, false, { 0.4, 0.0, 0.0, 0.4 },
+      "dependent maximum: the sample of the largest opacity component" },
+    { M::MINIMUM_INTENSITY_BLEND, false, { 0.05, 0.0, 0.0, 0.05 }, "dependent minimum" },
+    // Dependent additive: a(component 1) u_0 dt / d_1 summed:
+    // (0.25 0.2 + 0.05 0.7 + 0.4 0.4) 0.5 / 2.
+    { M::ADDITIVE_BLEND, false, { 0.06125, 0.06125, 0.06125, 1.0 },
+      "dependent additive: the opacity component's unit distance" },
+  };
+  for (const Case& c : cases)
+  {
+    double rgba[4];
+    Check(draw(c.Mode, c.Independent, rgba), std::string(c.What) + " (drawn)");
+    double worst = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      worst = std::max(worst, std::abs(rgba[k] - c.Expected[k]));
+    }
+    std::cout << c.What << ": (" << rgba[0] << ", " << rgba[1] << ", " << rgba[2] << ", " << rgba[3]
+              << "), off by " << worst << "\n";
+    Check(worst < 1e-6, c.What);
+  }
 }
 }
 
