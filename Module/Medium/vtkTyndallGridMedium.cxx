@@ -184,7 +184,7 @@ bool vtkTyndallGridMedium::Update(vtkVolume* volume, vtkObject* reporter)
     this->ExtinctionTime.Modified(); // the maps see the other interpolation
   }
   // The blend mode first: the table reads it (gradient opacity is not
-  // projected).
+  // projected but in the slice).
   auto* volumeMapper = volume ? vtkVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
   this->Projection.Read(volumeMapper, property);
   this->Shading.Read(volumeMapper, property);
@@ -736,12 +736,16 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
     identify(extinction, property->GetScalarOpacity(components.TableFunction(t)));
   }
   // Gradient opacity multiplies the extinction (not in a projection, which
-  // reads the opacity alone, nor for isosurfaces, nor for several
-  // components, nor with procedural detail, which multiplies the 1-D
-  // extinction: vtkTyndallVolumeSettings names them).
-  const bool detail = medium && medium->GetDetailNoise();
-  vtkPiecewiseFunction* gradientOpacity = !detail && !this->Projection.Enabled() &&
-      !this->Isosurfaces.Enabled() && !this->GetLinearExtinction() && !components.Enabled() &&
+  // reads the opacity alone, but the slice's opacity as VTK 9.1 does, nor
+  // for isosurfaces, nor for several components, nor with procedural
+  // detail, which multiplies the 1-D extinction: vtkTyndallVolumeSettings
+  // names them).
+  // (A projection draws no detail: the grid's gradient opacity then.)
+  const bool detail = medium && medium->GetDetailNoise() && !this->Projection.Enabled();
+  const bool projected =
+    this->Projection.Enabled() && this->Projection.GetMode() != vtkTyndallProjection::SLICE;
+  vtkPiecewiseFunction* gradientOpacity = !detail && !projected && !this->Isosurfaces.Enabled() &&
+      !this->GetLinearExtinction() && !components.Enabled() &&
       vtkTyndallVolumeSettings::HasGradientOpacity(property)
     ? property->GetGradientOpacity(0)
     : nullptr;

@@ -232,7 +232,8 @@ public:
   /**
    * A plain vtkVolumeProperty's gradient opacity (TF_1D, enabled, below 1
    * somewhere: vtkTyndallVolumeSettings::HasGradientOpacity(); not in a
-   * projection blend mode): the extinction is the table's times
+   * projection blend mode but the slice of one component, whose alpha it
+   * multiplies as VTK 9.1 does): the extinction is the table's times
    * GradientOpacityAt(), the table's gradient opacity (GetTable()) at the
    * scalar's change per average voxel, as VTK 9.1 reads it: the central
    * differences one sample apart along each index axis (per sample), each

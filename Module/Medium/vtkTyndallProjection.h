@@ -64,8 +64,9 @@
  * leaves opacities at or below 1e-4 unscaled (here every opacity is scaled,
  * so the sum does not depend on the step); a maximum or minimum ray whose
  * samples are all clipped away draws nothing (VTK: the colour at the
- * range's end). Lights, shadows and procedural detail play no part: a
- * projection volume is lit by nothing and casts no shadow into other
+ * range's end). Shadows and procedural detail play no part: a projection
+ * volume is lit by nothing (but a shaded slice of one component, by the
+ * lights unshadowed: vtkTyndallShading) and casts no shadow into other
  * volumes.
  *
  * Internal to Tyndall::Medium; not wrapped.

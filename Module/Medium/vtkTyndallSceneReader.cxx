@@ -148,12 +148,17 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   }
   this->WarnNotDrawn(volume, reporter);
   this->UpdateLights(renderer, reporter);
-  // A projection (vtkTyndallProjection) is lit by nothing and lit through nothing.
+  // A projection (vtkTyndallProjection) is lit through nothing, and lit by
+  // nothing but a shaded slice (vtkTyndallShading: its surface term alone;
+  // a plain property's Shade is single scattering, and only a plain
+  // property's slice is shaded).
   const bool projection = this->Medium->GetProjection().Enabled();
   this->UpdateGuests(renderer, volume, projection, reporter);
   this->UpdateCameraGroup(renderer, volume, reporter);
   const vtkTyndallMediumParameters& parameters = this->Medium->GetParameters();
-  if (!parameters.GetSingleScattering() || projection)
+  const bool lit =
+    projection ? this->Medium->GetShading().Enabled() : parameters.GetSingleScattering();
+  if (!lit)
   {
     this->Lights.clear();
   }

@@ -22,9 +22,10 @@
  *   no direction: it is ignored with a warning;
  * - in the emission-absorption model no light is used (nothing is shaded);
  * - a volume drawn in a projection blend mode (vtkTyndallProjection:
- *   maximum, minimum, average intensity, additive) is not a medium: it uses
- *   no light, has no guests and no procedural detail, and is no other
- *   volume's guest nor in a camera group;
+ *   maximum, minimum, average intensity, additive, slice) is not a medium:
+ *   it uses no light (but a shaded slice's, vtkTyndallShading, unshadowed),
+ *   has no guests and no procedural detail, and is no other volume's guest
+ *   nor in a camera group;
  *   in single scattering each light's irradiance is the medium's LightScale
  *   times the light's colour;
  * - the medium is read by vtkTyndallGridMedium's rules (a particle cloud's,

@@ -3,6 +3,7 @@
 #include "vtkParticipatingMediumMapper.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkTyndallProjection.h"
+#include "vtkTyndallVolumeSettings.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
@@ -12,18 +13,23 @@
 //------------------------------------------------------------------------------
 void vtkTyndallShading::Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
 {
-  // Every blend mode but the projections (the slice through a plane
-  // included) is shaded: the composite medium, the isosurfaces, a slice
-  // without a plane (drawn as composite, with a warning).
+  // Every blend mode but the projections is shaded: the composite medium,
+  // the isosurfaces, a slice without a plane (drawn as composite, with a
+  // warning), and as VTK 9.1 shades it the slice through a plane of one
+  // component (unshadowed: a projection has no maps; not a medium, a
+  // vtkParticipatingMediumProperty's slice too: ParaView's Volume's picture).
   vtkTyndallProjection projection;
   projection.Read(mapper, property);
   auto* medium = vtkParticipatingMediumProperty::SafeDownCast(property);
+  const bool shadedProjection = vtkTyndallVolumeSettings::SliceReadsGradient(mapper, property);
   this->Additive = medium != nullptr;
   // A medium's isosurfaces, and a medium with procedural detail (whose
-  // surfaces are the waves', not the grid's), are lit by its scattering alone.
+  // surfaces are the waves', not the grid's), are lit by its scattering
+  // alone (a projection draws no detail).
   const bool isosurfaces = mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
-  this->On = property && property->GetShade(0) && !projection.Enabled() &&
-    !(medium && (isosurfaces || medium->GetDetailNoise()));
+  const bool detail = medium && medium->GetDetailNoise() && !projection.Enabled();
+  this->On = property && property->GetShade(0) && (!projection.Enabled() || shadedProjection) &&
+    !(medium && (isosurfaces || detail));
   // The isosurfaces are surfaces: no volumetric scattering blended in (nor
   // into a medium's scattering).
   auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);

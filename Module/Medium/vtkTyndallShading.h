@@ -3,7 +3,8 @@
  * @brief   VTK's gradient shading of a plain vtkVolumeProperty with Shade on, shadowed by the maps
  *
  * A plain vtkVolumeProperty keeps VTK's meaning: with Shade on (component
- * 0) in any blend mode but a projection (vtkTyndallProjection), each sample's colour c (the colour
+ * 0) in any blend mode but a projection (vtkTyndallProjection) other than
+ * the slice of one component, each sample's colour c (the colour
  * function's) is shaded as VTK 9.1's GPU mapper shades it, with the
  * property's Ambient Ka, Diffuse Kd, Specular Ks and SpecularPower p, the
  * normal n being the scalar's gradient normalised (0 where the gradient
@@ -73,7 +74,9 @@
  *
  * Start(), AddLight() and Finish() are the CPU twin of the shader's
  * tyndallSurfaceShading() and tyndallComponentShading()
- * (vtkTransmittanceRayCastFS.glsl).
+ * (vtkTransmittanceRayCastFS.glsl), and of tyndallSliceSurface()
+ * (vtkTransmittanceProjectionFS.glsl: the slice, as VTK 9.1 shades it, with
+ * T_l = 1 and no blending, a projection having no maps).
  *
  * Internal to Tyndall::Medium; not wrapped.
  */
@@ -90,9 +93,12 @@ class TYNDALLMEDIUM_EXPORT vtkTyndallShading
 {
 public:
   /**
-   * Reads `property`: enabled for a plain vtkVolumeProperty (not a
-   * vtkParticipatingMediumProperty) with Shade on for component 0, drawn by
-   * `mapper` in a blend mode that is not a projection; its coefficients.
+   * Reads `property`: enabled with Shade on for component 0, drawn by
+   * `mapper` in a blend mode that is not a projection (a
+   * vtkParticipatingMediumProperty's not for isosurfaces nor with
+   * procedural detail), or in the slice of one component
+   * (vtkTyndallVolumeSettings::SliceReadsGradient(), as VTK 9.1 shades it,
+   * unshadowed, for either kind of property); its coefficients.
    */
   void Read(vtkVolumeMapper* mapper, vtkVolumeProperty* property);
 

@@ -32,9 +32,24 @@ const char* NotDrawnBlendMode(int mode)
   }
 }
 
-// The number of components of the scalars `mapper` draws with `property`
-// (0 without; 1 for a Tyndall mapper's vector mode of independent ones).
-int ScalarComponents(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
+// Whether a gradient opacity of any of the first `count` components'
+// functions changes VTK's picture (HasGradientOpacity()'s rule).
+bool AnyGradientOpacity(vtkVolumeProperty* property, int count)
+{
+  for (int c = 0; c < count && c < 4; ++c)
+  {
+    if (vtkTyndallVolumeSettings::HasGradientOpacity(property, c))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallVolumeSettings::ScalarComponents(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
 {
   auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
   vtkDataSet* input =
@@ -51,20 +66,18 @@ int ScalarComponents(vtkVolumeMapper* mapper, vtkVolumeProperty* property)
   return count > 1 && vectorMode ? 1 : count;
 }
 
-// Whether a gradient opacity of any of the first `count` components'
-// functions changes VTK's picture (HasGradientOpacity()'s rule).
-bool AnyGradientOpacity(vtkVolumeProperty* property, int count)
+//------------------------------------------------------------------------------
+bool vtkTyndallVolumeSettings::SliceReadsGradient(
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property)
 {
-  for (int c = 0; c < count && c < 4; ++c)
+  if (!mapper || !property || property->GetTransferFunctionMode() != vtkVolumeProperty::TF_1D)
   {
-    if (vtkTyndallVolumeSettings::HasGradientOpacity(property, c))
-    {
-      return true;
-    }
+    return false;
   }
-  return false;
-}
-
+  vtkTyndallProjection projection;
+  projection.Read(mapper, property);
+  return projection.GetMode() == vtkTyndallProjection::SLICE &&
+    ScalarComponents(mapper, property) == 1;
 }
 
 //------------------------------------------------------------------------------
@@ -165,10 +178,13 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
       " of 2 dependent components (it draws each ray's first sample; Tyndall the sample of the "
       "extreme second component)");
   }
-  // Shading is drawn but in the slice (vtkTyndallShading; VTK 9.1 shades
-  // no other projection); a medium's Shade is its own surface term,
-  // documented with its meaning.
-  if (!medium && property->GetShade(0) && projection.GetMode() == vtkTyndallProjection::SLICE)
+  // Shading is drawn but in the slice of several components or a 2-D
+  // function (vtkTyndallShading; VTK 9.1 shades no other projection), for
+  // either kind of property (elsewhere a medium's Shade is its own surface
+  // term, documented with its meaning).
+  const bool sliceGradient = SliceReadsGradient(mapper, property);
+  if (property->GetShade(0) && projection.GetMode() == vtkTyndallProjection::SLICE &&
+    !sliceGradient)
   {
     notDrawn.push_back(std::string("gradient shading in the ") +
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (unshaded)");
@@ -177,14 +193,16 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
   // for both kinds of property (vtkTyndallGridMedium), but where named here.
   const bool detail = medium && medium->GetDetailNoise();
   const bool isosurfaces = mapper && mapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
-  // Gradient opacity is drawn but in a projection (vtkTyndallGridMedium);
-  // VTK 9.1 ignores it too in the average intensity and additive modes
-  // (the others multiply their pixel's opacity by it, at the gradient where
-  // the ray leaves the volume in the maximum and minimum).
+  // Gradient opacity is drawn but in a projection other than the slice of
+  // one component (vtkTyndallGridMedium); VTK 9.1 ignores it too in the
+  // average intensity and additive modes (the maximum and minimum multiply
+  // their pixel's opacity by it, at the gradient where the ray leaves the
+  // volume).
   const int mode = projection.GetMode();
   const bool summed =
     mode == vtkTyndallProjection::AVERAGE || mode == vtkTyndallProjection::ADDITIVE;
-  const bool projectionNamed = projection.Enabled() && !summed && HasGradientOpacity(property);
+  const bool projectionNamed =
+    projection.Enabled() && !summed && !sliceGradient && HasGradientOpacity(property);
   if (projectionNamed)
   {
     notDrawn.push_back(std::string("gradient opacity in the ") +

@@ -18,15 +18,15 @@
  *   function, isosurfaces, procedural detail or several components (the
  *   volume is drawn without its labels), and the labels' gradient opacity
  *   (their scalar opacity is drawn);
- * for a plain vtkVolumeProperty (VTK's meaning):
- * - gradient shading in the slice blend mode (unshaded; drawn in the
- *   composite and isosurface modes, vtkTyndallShading; VTK 9.1 shades no
- *   other projection);
- * for both kinds of property (the classification is VTK's):
- * - gradient opacity in the maximum or minimum intensity, slice or
- *   isosurface blend mode, or with several components (ignored; drawn in
- *   the others, vtkTyndallGridMedium::GetGradientOpacity(); VTK 9.1 ignores
- *   it in the average intensity and additive modes too);
+ * for both kinds of property (the slice and the classification are VTK's):
+ * - gradient shading in the slice blend mode of several components or a
+ *   2-D function (unshaded; drawn in the slice of one component, and a
+ *   plain property's in the composite and isosurface modes,
+ *   vtkTyndallShading; VTK 9.1 shades no other projection);
+ * - gradient opacity in the maximum or minimum intensity or isosurface
+ *   blend mode, or with several components (ignored; drawn in the others
+ *   and the slice of one component, vtkTyndallGridMedium::GetGradientOpacity();
+ *   VTK 9.1 ignores it in the average intensity and additive modes too);
  * - 2-D transfer functions in a projection or the isosurface blend mode
  *   (TF_2D: the 1-D functions are used; drawn in the others);
  * and for a vtkParticipatingMediumProperty:
@@ -56,6 +56,7 @@
 #include <vector> // For std::vector
 
 class vtkVolume;
+class vtkVolumeMapper;
 class vtkVolumeProperty;
 
 class TYNDALLMEDIUM_EXPORT vtkTyndallVolumeSettings
@@ -74,6 +75,20 @@ public:
    * somewhere (VTK's default, disabled or all 1, multiplies by 1).
    */
   static bool HasGradientOpacity(vtkVolumeProperty* property, int component = 0);
+
+  /**
+   * The number of components of the scalars `mapper` draws with `property`
+   * (0 without; 1 for a Tyndall mapper's vector mode of independent ones).
+   */
+  static int ScalarComponents(vtkVolumeMapper* mapper, vtkVolumeProperty* property);
+
+  /**
+   * Whether `mapper` draws the slice through a plane (vtkTyndallProjection)
+   * of one component with `property`'s 1-D functions: the slice that VTK
+   * 9.1 lights (Shade, a plain property's) and whose opacity it multiplies
+   * by the gradient opacity, which Tyndall draws as VTK does.
+   */
+  static bool SliceReadsGradient(vtkVolumeMapper* mapper, vtkVolumeProperty* property);
 
   /// The texts of NotDrawn() as one sentence (empty for none).
   static std::string Describe(const std::vector<std::string>& notDrawn);

@@ -335,7 +335,7 @@ private:
         }
       }
     };
-    double t;
+    double t = 0.0;
     if (projection.GetMode() == vtkTyndallProjection::SLICE)
     {
       // The one sample where the ray meets the plane, on its part in the box.
@@ -356,8 +356,64 @@ private:
     double rgba[4];
     if (ray.Pixel(rgba))
     {
+      if (projection.GetMode() == vtkTyndallProjection::SLICE && !components)
+      {
+        this->SliceSurface(origin, w, rays, t, rgba);
+      }
       std::copy(rgba, rgba + 3, radiance);
       std::fill(transmittance, transmittance + 3, 1.0 - rgba[3]);
+    }
+  }
+
+  // The slice's pixel rgba (premultiplied) at the distance t as VTK 9.1
+  // draws a slice of one component (GPU twin: tyndallSliceSurface()): with
+  // Shade its colour shaded as a surface by the lights, unshadowed (a
+  // projection has no maps), and with gradient opacity its alpha (not the
+  // colour's weight) multiplied by it.
+  void SliceSurface(const double origin[3], const double w[3], const LocalRays& rays, double t,
+    double rgba[4]) const
+  {
+    const Scene& s = *this->S;
+    const vtkTyndallGridMedium& grid = *s.Projected;
+    double p[3];
+    rays.At(0, t, p);
+    const double alpha = rgba[3];
+    if (s.Shaded && alpha > 0.0)
+    {
+      const double x[3] = { origin[0] + t * w[0], origin[1] + t * w[1], origin[2] + t * w[2] };
+      const double color[3] = { rgba[0] / alpha, rgba[1] / alpha, rgba[2] / alpha };
+      double n[3];
+      grid.FieldGradient(p, n, 0);
+      const double length = vtkMath::Norm(n);
+      for (double& c : n)
+      {
+        c = length > 0.0 ? c / length : 0.0;
+      }
+      const vtkTyndallShading& shading = grid.GetShading();
+      vtkTyndallShading::Sums sums;
+      shading.Start(color, sums);
+      const double v[3] = { -w[0], -w[1], -w[2] };
+      const double unshadowed[3] = { 1.0, 1.0, 1.0 };
+      for (const Scene::LightSource& light : s.Lights)
+      {
+        double l[3], factor, tMax;
+        if (s.LightGeometry(light, x, l, factor, tMax))
+        {
+          const double E[3] = { factor * light.Color[0], factor * light.Color[1],
+            factor * light.Color[2] };
+          shading.AddLight(n, light.Headlight ? v : l, v, color, E, unshadowed, sums);
+        }
+      }
+      double rgb[3];
+      vtkTyndallShading::Finish(sums, 0.0, rgb);
+      for (int c = 0; c < 3; ++c)
+      {
+        rgba[c] = rgb[c] * alpha;
+      }
+    }
+    if (grid.GetGradientOpacity())
+    {
+      rgba[3] = alpha * grid.GradientOpacityAt(p);
     }
   }
 

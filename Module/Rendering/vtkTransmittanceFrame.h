@@ -129,6 +129,13 @@ public:
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
   /**
+   * Sets the lights' uniforms (vtkTransmittanceLightsFS.glsl, and the
+   * camera rays' irradiances and methods) on `program`, and with the
+   * medium's gradient shading (vtkTyndallShading) its coefficients.
+   */
+  void SetLightUniforms(vtkShaderProgram* program) const;
+
+  /**
    * Sets the camera ray's uniforms (vtkTransmittanceCameraRayFS.glsl):
    * ndcToWorld from the renderer's active camera, depthTexture, and
    * fragToWindow for an image of `width` x `height` pixels over the

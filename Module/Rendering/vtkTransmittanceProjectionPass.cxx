@@ -33,6 +33,8 @@ bool vtkTransmittanceProjectionPass::Render(
   variant.SkipEmpty = false;
   variant.Chromatic = false;
   variant.Projection = frame.Medium->GetProjection().GetMode();
+  // The slice of one component is shaded as VTK 9.1 shades it (vtkTyndallShading).
+  variant.Shading = frame.Medium->GetShading().Enabled();
   variant.DepthRanges = !direct;
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
@@ -74,6 +76,7 @@ bool vtkTransmittanceProjectionPass::Render(
   program->SetUniformf("stepLength", static_cast<float>(step));
   program->SetUniformi("endStep", static_cast<int>(std::ceil(frame.Diagonal / step)) + 2);
   this->SetUniforms(frame, program);
+  frame.SetLightUniforms(program);
   if (direct)
   {
     this->Quad.RenderOver(frame.State);

@@ -9,8 +9,9 @@
  * over what was drawn (ONE, ONE_MINUS_SRC_ALPHA). The step is the mapper's
  * SampleDistance, or VTK's automatic one (the volume's smallest world
  * spacing: a projection needs no finer one), the samples at the steps
- * ends as VTK places them (the mapper's Jitter does not apply). No light, map or
- * accumulation image is involved: a step is one loop trip, and a ray takes
+ * ends as VTK places them (the mapper's Jitter does not apply). No map or
+ * accumulation image is involved (a shaded slice reads the lights,
+ * unshadowed: vtkTransmittanceLightsFS.glsl): a step is one loop trip, and a ray takes
  * at most MaximumSteps of them (Mesa's llvmpipe ends a fragment's loops
  * after 65535 iterations in all, silently); a ray that would need more takes
  * longer steps, with a warning.

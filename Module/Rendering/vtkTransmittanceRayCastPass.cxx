@@ -27,7 +27,6 @@ vtkStandardNewMacro(vtkTransmittanceRayCastPass);
 
 namespace
 {
-constexpr int kMaxLights = vtkTyndallSceneReader::MaximumNumberOfLights;
 // The most camera steps a ray takes.
 constexpr double kMaxSteps = 1 << 20;
 // Brute-force light marches take this many samples per loop iteration.
@@ -262,81 +261,7 @@ void vtkTransmittanceRayCastPass::SetUniforms(
     program->SetUniformi("occlusionSlices", inputs.OcclusionSlices);
     program->SetUniformf("occlusionBias", static_cast<float>(2.0 * frame.MinimumSpacing));
   }
-  this->SetLightUniforms(frame, program);
-}
-
-//------------------------------------------------------------------------------
-void vtkTransmittanceRayCastPass::SetLightUniforms(
-  const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const
-{
-  float irradiance[kMaxLights][3] = {}, position[kMaxLights][3] = {}, direction[kMaxLights][3] = {},
-        attenuation[kMaxLights][3] = {};
-  float coneCosine[kMaxLights] = {}, exponent[kMaxLights] = {}, color[kMaxLights][3] = {};
-  int method[kMaxLights] = { 0 }, headlight[kMaxLights] = { 0 };
-  for (size_t l = 0; l < frame.Lights.size(); ++l)
-  {
-    const vtkTransmittanceFrame::Light& light = frame.Lights[l];
-    for (int k = 0; k < 3; ++k)
-    {
-      irradiance[l][k] = static_cast<float>(light.Source.Irradiance[k]);
-      position[l][k] = static_cast<float>(light.Source.Position[k]);
-      direction[l][k] = static_cast<float>(light.Source.Direction[k]);
-      attenuation[l][k] = static_cast<float>(light.Source.Attenuation[k]);
-      color[l][k] = static_cast<float>(light.Source.Color[k]);
-    }
-    headlight[l] = light.Source.Headlight ? 1 : 0;
-    coneCosine[l] = light.Source.Spot ? static_cast<float>(light.Source.ConeCosine) : -2.0f;
-    exponent[l] = static_cast<float>(light.Source.Exponent);
-    method[l] = light.Method;
-  }
-  program->SetUniformi("numberOfLights", static_cast<int>(frame.Lights.size()));
-  program->SetUniform3fv("lightIrradiance", kMaxLights, irradiance);
-  program->SetUniform3fv("lightPosition", kMaxLights, position);
-  program->SetUniform3fv("lightDirection", kMaxLights, direction);
-  program->SetUniform3fv("lightAttenuation", kMaxLights, attenuation);
-  program->SetUniform1fv("lightConeCosine", kMaxLights, coneCosine);
-  program->SetUniform1fv("lightExponent", kMaxLights, exponent);
-  program->SetUniform1iv("lightMethod", kMaxLights, method);
-  const vtkTyndallShading& shading = frame.Medium->GetShading();
-  if (shading.Enabled())
-  {
-    // Declared only by the shading variant.
-    program->SetUniform3fv("lightColor", kMaxLights, color);
-    program->SetUniform1iv("lightHeadlight", kMaxLights, headlight);
-    // Per component (independent components are shaded each with its own).
-    float coefficients[4][4];
-    for (int c = 0; c < 4; ++c)
-    {
-      coefficients[c][0] = static_cast<float>(shading.GetAmbient(c));
-      coefficients[c][1] = static_cast<float>(shading.GetDiffuse(c));
-      coefficients[c][2] = static_cast<float>(shading.GetSpecular(c));
-      coefficients[c][3] = static_cast<float>(shading.GetSpecularPower(c));
-    }
-    program->SetUniform4fv("shadingCoefficients", 4, coefficients);
-    // The volumetric scattering blending (vtkTyndallShading::BlendWeight()):
-    // per component 2 / (s_max - s_min); h the smallest world spacing.
-    const double h = frame.Medium->GetMinimumWorldSpacing();
-    float gradientScale[4];
-    for (int c = 0; c < 4; ++c)
-    {
-      const double* range = frame.Medium->GetComponentRange(c);
-      gradientScale[c] =
-        range[1] > range[0] ? static_cast<float>(2.0 / (range[1] - range[0])) : 0.0f;
-    }
-    if (shading.GetBlending() > 0.0)
-    {
-      // Declared only by the blending variant.
-      program->SetUniformf("scatteringBlending", static_cast<float>(shading.GetBlending()));
-      program->SetUniform4f("blendGradientScale", gradientScale);
-      program->SetUniformf("blendStep", static_cast<float>(h));
-    }
-  }
-  if (shading.Enabled() || frame.Medium->GetIsosurfaces().Enabled())
-  {
-    // Declared only by the shading and isosurface variants.
-    program->SetUniformf("shadowOffset",
-      static_cast<float>(vtkTyndallShading::ShadowOffset * frame.Medium->GetMinimumWorldSpacing()));
-  }
+  frame.SetLightUniforms(program);
 }
 
 //------------------------------------------------------------------------------

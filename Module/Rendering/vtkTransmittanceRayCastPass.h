@@ -152,7 +152,6 @@ private:
 
   void SetUniforms(
     const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const;
-  void SetLightUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program) const;
   static int StepsPerPass(const vtkTransmittanceFrame& frame);
   static vtkTransmittanceShaderSource::Variant GetVariant(
     const vtkTransmittanceFrame& frame, const Inputs& inputs, bool accumulate);

@@ -18,6 +18,7 @@
 #include "vtkTransmittanceCompositeFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceLightMapFS.h"
+#include "vtkTransmittanceLightsFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
 #include "vtkTransmittancePeelCompositeFS.h"
@@ -212,10 +213,12 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
       break;
     case PROJECTION:
       source += vtkTransmittanceCameraRayFS;
+      source += vtkTransmittanceLightsFS;
       source += vtkTransmittanceProjectionFS;
       break;
     default:
       source += vtkTransmittanceCameraRayFS;
+      source += vtkTransmittanceLightsFS;
       source += vtkTransmittanceRayCastFS;
       break;
   }

@@ -826,7 +826,7 @@ void vtkTransmittanceVolumeMapper::vtkInternals::RenderVolume(vtkTransmittanceVo
   vtkTransmittanceScopedTextures medium = this->BindMedium();
   if (this->Frame.Medium->GetProjection().Enabled())
   {
-    this->Lit = true; // no light: a projection is not lit
+    this->Lit = true; // no map: a projection is unshadowed (its lights' method None)
     this->Projected = true;
     this->StillKey.clear();
     this->WarnDistributedProjection(self);

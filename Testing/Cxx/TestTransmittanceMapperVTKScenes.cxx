@@ -633,6 +633,32 @@ void SliceProperty(vtkVolumeProperty* property, const double range[2])
   property->SetSliceFunction(slice);
 }
 
+// SliceProperty with Shade on: VTK 9.1 shades the slice as a surface.
+void ShadedSliceProperty(vtkVolumeProperty* property, const double range[2])
+{
+  SliceProperty(property, range);
+  property->ShadeOn();
+}
+
+// ShadedSliceProperty without the ambient term (see UnlitAmbientShadedProperty).
+void UnlitAmbientShadedSliceProperty(vtkVolumeProperty* property, const double range[2])
+{
+  ShadedSliceProperty(property, range);
+  property->SetAmbient(0.0);
+}
+
+// SliceProperty with a gradient opacity (GradientOpacityProperty's: 0 where
+// the scalar does not change, 1 from 4 % of the range per voxel on), which
+// VTK 9.1 multiplies the slice's alpha by.
+void GradientOpacitySliceProperty(vtkVolumeProperty* property, const double range[2])
+{
+  SliceProperty(property, range);
+  vtkNew<vtkPiecewiseFunction> gradient;
+  gradient->AddPoint(0.0, 0.0);
+  gradient->AddPoint(0.04 * (range[1] - range[0]), 1.0);
+  property->SetGradientOpacity(gradient);
+}
+
 // TestGPURayCastTransfer2D's 2-D function (256 x 256, RGBA): colour and an
 // opacity up to 0.25 growing with the gradient magnitude, for scalars at 51
 // to 74 % of the range and gradients below a fifth of the axis; TF_2D.
@@ -1126,6 +1152,13 @@ std::vector<Scene> Scenes()
         m->SetCroppingRegionFlagsToSubVolume();
       },
       Tilted, true },
+    // The slice shaded (the headlight; a scene light) and with gradient opacity.
+    { "Slice-WaveletShaded", MakeWavelet, ShadedSliceProperty, Blend(M::SLICE_BLEND), Tilted,
+      true },
+    { "Slice-WaveletShadedSceneLight", MakeWavelet, UnlitAmbientShadedSliceProperty,
+      Blend(M::SLICE_BLEND), SceneLight, true, 34.0 },
+    { "Slice-WaveletGradientOpacity", MakeWavelet, GradientOpacitySliceProperty,
+      Blend(M::SLICE_BLEND), Tilted, true },
     { "Transfer2D-Wavelet", MakeWavelet, Transfer2DProperty, none, Tilted, true },
     // VTK's default interpolation: the volume and the function read nearest.
     { "Transfer2D-WaveletNearest", MakeWavelet, Transfer2DProperty, none, Tilted, true, 35.0,
@@ -1320,10 +1353,11 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   scene.View(renderer, volume);
 
   double psnr = 0.0;
+  vtkSmartPointer<vtkImageData> vtkImage;
   if (scene.VTKDraws)
   {
     window->Render();
-    vtkSmartPointer<vtkImageData> vtkImage = tyndall_test::Grab(window);
+    vtkImage = tyndall_test::Grab(window);
     volume->SetMapper(tyndall);
     window->Render();
     vtkSmartPointer<vtkImageData> tyndallImage = tyndall_test::Grab(window);
@@ -1342,6 +1376,19 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   // None) from VTK's.
   bool ok =
     scene.Medium || !scene.VTKDraws || (scene.Blending > 0.0 ? psnr < 30.0 : psnr >= scene.Floor);
+  // A projection builds no map: its lights (a shaded slice's) are unshadowed.
+  const int blend = tyndall->GetBlendMode();
+  if (blend != vtkVolumeMapper::COMPOSITE_BLEND && blend != vtkVolumeMapper::ISOSURFACE_BLEND)
+  {
+    for (int l = 0; l < tyndall->GetNumberOfRenderedLights(); ++l)
+    {
+      if (tyndall->GetLightTransmittanceMethod(l) != vtkTransmittanceVolumeMapper::NONE)
+      {
+        std::cout << scene.Name << ": a projection's light " << l << " has a map method\n";
+        ok = false;
+      }
+    }
+  }
   std::cout << std::left << std::setw(36) << scene.Name << std::fixed << std::setprecision(1);
   if (scene.VTKDraws)
   {
@@ -1392,6 +1439,12 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
       vtkImageData* expected = reference->Composite();
       cpu = tyndall_test::PSNR(fine, expected);
       Write(expected, out + "/" + scene.Name + "-reference.png");
+      if (vtkImage && scene.Floor < 35.0)
+      {
+        // Why the floor is lower: VTK's own picture against the oracle.
+        std::cout << ", VTK against the CPU reference " << std::setw(6)
+                  << tyndall_test::PSNR(vtkImage, expected) << " dB";
+      }
     }
     std::cout << ", against the CPU reference " << std::setw(6) << cpu << " dB";
     ok = ok && cpu >= 40.0;

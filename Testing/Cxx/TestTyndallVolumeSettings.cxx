@@ -6,10 +6,12 @@
 //
 // 0. VTK's projection blend modes (vtkTyndallProjection) and its
 //    isosurface mode (vtkTyndallIsosurfaces) are drawn: not named, nor the
-//    slice mode with a vtkPlane; without one it is, and procedural detail in
-//    a projection, gradient shading in the slice (VTK shades no other
-//    projection), gradient opacity in the maximum or minimum intensity, the
-//    slice or the isosurface mode (VTK ignores it in the others);
+//    slice mode with a vtkPlane, nor its shading and gradient opacity (of one
+//    component, as VTK draws them); without a plane it is, and procedural
+//    detail in a projection, gradient shading in the slice of several
+//    components (VTK shades no other projection), gradient opacity in the
+//    maximum or minimum intensity or the isosurface mode (VTK ignores it in
+//    the others);
 // 1. a plain vtkVolumeProperty at VTK's defaults (composite, shade off, no
 //    gradient opacity, TF_1D, nearest) gives no warning, nor linear, nor does a
 //    vtkParticipatingMediumProperty with Shade on and nearest interpolation (Tyndall's meaning);
@@ -28,6 +30,7 @@
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
+#include "vtkLight.h"
 #include "vtkImageData.h"
 #include "vtkMultiVolume.h"
 #include "vtkNew.h"
@@ -174,11 +177,21 @@ int TestTyndallVolumeSettings(int, char*[])
       scene.Read() == 0, "gradient shading in a projection but the slice: as VTK's, no warning");
   }
   plain->ShadeOff();
+  // The slice of one component is shaded, and its alpha multiplied by the
+  // gradient opacity, as VTK 9.1 does (vtkTyndallVolumeSettings::SliceReadsGradient()).
   plain->SetSliceFunction(slicePlane);
   mapper->SetBlendModeToSlice();
-  CheckSetting(
-    scene, "gradient shading in the slice blend mode", [&] { plain->ShadeOn(); },
-    [&] { plain->ShadeOff(); });
+  plain->ShadeOn();
+  vtkNew<vtkLight> light; // (the renderer makes its headlight when it renders)
+  scene.Renderer->AddLight(light);
+  Check(scene.Read() == 0 && scene.Reader.GetMedium().GetShading().Enabled() &&
+      !scene.Reader.GetLights().empty(),
+    "gradient shading in the slice: drawn (shaded, lit), no warning");
+  plain->ShadeOff();
+  Check(scene.Read() == 0 && !scene.Reader.GetMedium().GetShading().Enabled() &&
+      scene.Reader.GetLights().empty(),
+    "the slice unshaded: not shaded, not lit");
+  scene.Renderer->RemoveLight(light);
   mapper->SetBlendModeToComposite();
   // Shading in the composite blend mode is drawn (vtkTyndallShading).
   plain->ShadeOn();
@@ -197,6 +210,9 @@ int TestTyndallVolumeSettings(int, char*[])
     mapper->SetBlendMode(mode);
     Check(scene.Read() == 0, "gradient opacity in the average or additive mode: no warning");
   }
+  mapper->SetBlendModeToSlice();
+  Check(scene.Read() == 0 && scene.Reader.GetMedium().GetGradientOpacity(),
+    "gradient opacity in the slice: read, no warning");
   mapper->SetBlendModeToMaximumIntensity();
   CheckSetting(
     scene, "gradient opacity in the maximum intensity blend mode", [] {},
@@ -246,7 +262,8 @@ int TestTyndallVolumeSettings(int, char*[])
   // TestTransmittanceMapperDepthPeeling): NotDrawn() does not read the
   // renderer.
 
-  // Two at once: one warning naming both; a change of the set warns again.
+  // Two at once: one warning naming both (the slice's shading with a 2-D
+  // function); a change of the set warns again.
   mapper->SetBlendModeToSlice();
   plain->ShadeOn();
   plain->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
@@ -254,11 +271,11 @@ int TestTyndallVolumeSettings(int, char*[])
       scene.Log->Messages.front().find("2-D transfer functions") != std::string::npos &&
       scene.Log->Messages.size() == 1,
     "two settings: one warning naming both");
-  plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
-  Check(scene.Read("gradient shading") == 1 &&
-      scene.Log->Messages.front().find("2-D transfer functions") == std::string::npos,
-    "one of them back to its default: warned again, naming the other");
   plain->ShadeOff();
+  Check(scene.Read("2-D transfer functions") == 1 &&
+      scene.Log->Messages.front().find("gradient shading") == std::string::npos,
+    "one of them back to its default: warned again, naming the other");
+  plain->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
   plain->SetSliceFunction(nullptr);
   // Shading in the slice without a plane (drawn as composite) and isosurface
   // blend modes is drawn.
@@ -422,6 +439,19 @@ int TestTyndallVolumeSettings(int, char*[])
         components, "minimum intensity of 2 dependent components",
         [&]() { mode(vtkVolumeMapper::MINIMUM_INTENSITY_BLEND); },
         [&]() { mode(vtkVolumeMapper::ADDITIVE_BLEND); });
+      // The slice of several components is drawn unshaded: named.
+      vtkNew<vtkPlane> plane;
+      componentProperty->SetSliceFunction(plane);
+      mode(vtkVolumeMapper::SLICE_BLEND);
+      CheckSetting(
+        components, "gradient shading in the slice blend mode",
+        [&]() { componentProperty->ShadeOn(); }, [&]() { componentProperty->ShadeOff(); });
+      componentProperty->ShadeOn();
+      components.Read();
+      Check(!components.Reader.GetMedium().GetShading().Enabled(),
+        "the slice of 2 components: not shaded");
+      componentProperty->ShadeOff();
+      componentProperty->SetSliceFunction(nullptr);
     }
   }
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

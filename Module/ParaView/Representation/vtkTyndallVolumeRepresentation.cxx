@@ -81,6 +81,8 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
   // own vtkSmartVolumeMapper), or with them off its components as colour
   // and opacity (vtkTyndallComponents).
   this->Medium->SetIndependentComponents(paraview->GetIndependentComponents());
+  // The Slice blend mode's plane (the Tyndall Volume's own TyndallSliceFunction).
+  this->Medium->SetSliceFunction(paraview->GetSliceFunction());
   vtkColorTransferFunction* colors = paraview->GetRGBTransferFunction(0);
   const int vectorMode = colors ? colors->GetVectorMode() : vtkScalarsToColors::MAGNITUDE;
   this->TyndallMapper->SetVectorMode(vectorMode == vtkScalarsToColors::COMPONENT

@@ -2,7 +2,8 @@
 // vtkTransmittanceCommonFS.glsl and vtkTransmittanceCameraRayFS.glsl):
 // maximum, minimum and average intensity, additive and the slice, as VTK
 // 9.1's GPU mapper draws them (TYNDALL_PROJECTION: one of
-// TYNDALL_PROJECTION_MAXIMUM .. _SLICE). The rules and their CPU twin: vtkTyndallProjection (Ray).
+// TYNDALL_PROJECTION_MAXIMUM .. _SLICE). The rules and their CPU twin: vtkTyndallProjection (Ray);
+// the lights (VTK's slice is shaded): vtkTransmittanceLightsFS.glsl, before this file.
 // One pass draws the whole ray straight into the window (one loop trip per
 // step: vtkTransmittanceProjectionPass keeps the steps within llvmpipe's
 // budget).
@@ -225,6 +226,50 @@ bool tyndallProjectionPixel(TyndallProjection p, out vec4 pixel)
 
 #if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE
 uniform vec4 slicePlane; // the slice: n . x + d = 0 (world), as (n, d)
+// Where the slice's sample lies (world) and its texture coordinate.
+vec3 slicePoint = vec3(0.0);
+vec3 sliceTexel = vec3(0.0);
+#endif
+
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE && TYNDALL_COMPONENTS == 1
+// The slice's pixel (premultiplied) of the value `value` as VTK 9.1 draws
+// one component's slice (CPU twin: vtkSingleScatteringReference's
+// SliceSurface()): with Shade (TYNDALL_SHADING) the colour shaded as a
+// surface by the lights, unshadowed (a projection has no maps), for the
+// view direction w; with gradient opacity its alpha, not the colour's
+// weight, multiplied by it.
+void tyndallSliceSurface(float value, vec3 w, inout vec4 pixel)
+{
+#if TYNDALL_SHADING
+  vec3 color = texture(transferTexture,
+    vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW)).rgb;
+  vec3 g = tyndallScalarGradient(slicePoint);
+  float magnitude = length(g);
+  vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+  vec3 v = -w;
+  vec3 surface = shadingCoefficients[0].x * color;
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    vec3 toLight;
+    float distance;
+    vec3 E = lightColor[l];
+    if (!tyndallLightAt(l, slicePoint, E, toLight, distance))
+    {
+      continue;
+    }
+    vec3 s = lightHeadlight[l] != 0 ? v : toLight;
+    // h = 0 where the light faces the camera exactly (the CPU's guard).
+    vec3 sv = s + v;
+    float svLength = length(sv);
+    vec3 h = svLength > 0.0 ? sv / svLength : vec3(0.0);
+    surface += E * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
+  }
+  pixel.rgb = clamp(surface, 0.0, 1.0) * pixel.a;
+#endif
+#if TYNDALL_GRADIENT_OPACITY
+  pixel.a *= tyndallGradientOpacity(sliceTexel);
+#endif
+}
 #endif
 
 // What the ray p0 + t w over [tNear, tFar] gathers: its samples, or for
@@ -244,7 +289,9 @@ TyndallProjection tyndallGather(vec3 p0, vec3 w, float tNear, float tFar)
   float denominator = dot(slicePlane.xyz, w);
   float ts = abs(denominator) > 1e-12 ? -(dot(slicePlane.xyz, p0) + slicePlane.w) / denominator
                                       : -1e30;
-  if (ts >= tNear && ts <= tFar && tyndallKeptSample(p0 + ts * w, texel0 + ts * dTexel, value))
+  slicePoint = p0 + ts * w;
+  sliceTexel = texel0 + ts * dTexel;
+  if (ts >= tNear && ts <= tFar && tyndallKeptSample(slicePoint, sliceTexel, value))
   {
     tyndallProject(gathered, value, 0.0);
   }
@@ -286,5 +333,8 @@ void main()
   {
     discard;
   }
+#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE && TYNDALL_COMPONENTS == 1
+  tyndallSliceSurface(gathered.Value, w, pixel);
+#endif
   gl_FragData[0] = pixel;
 }

@@ -87,13 +87,8 @@ uniform float anisotropy;
 uniform float ambient;
 uniform float emissionScale;
 
-uniform int numberOfLights;
+// The lights' geometry (numberOfLights, tyndallLightAt()): vtkTransmittanceLightsFS.glsl.
 uniform vec3 lightIrradiance[TYNDALL_MAX_LIGHTS];   // LightScale * intensity * colour
-uniform vec3 lightPosition[TYNDALL_MAX_LIGHTS];     // positional lights
-uniform vec3 lightDirection[TYNDALL_MAX_LIGHTS];    // direction the light travels
-uniform vec3 lightAttenuation[TYNDALL_MAX_LIGHTS];
-uniform float lightConeCosine[TYNDALL_MAX_LIGHTS];  // -2: no cone
-uniform float lightExponent[TYNDALL_MAX_LIGHTS];
 uniform int lightMethod[TYNDALL_MAX_LIGHTS];        // per light: map methods fall back to brute force
 
 // What a frame needs is compiled in, not switched by uniforms (llvmpipe
@@ -266,32 +261,6 @@ vec3 tyndallOctaves(float mu, float T, vec3 albedo)
   return sum;
 }
 
-// Light l seen from x: the unit direction towards it, the distance to a
-// positional light (1e30 for a directional one), and `E` (the light's
-// irradiance or colour) with a positional light's attenuation and spot cone
-// applied; false where it gives nothing.
-bool tyndallLightAt(int l, vec3 x, inout vec3 E, out vec3 toLight, out float distance)
-{
-  distance = 1e30;
-  if (lightPositional[l] == 0)
-  {
-    toLight = -lightDirection[l]; // directional
-  }
-  else
-  {
-    vec3 v = lightPosition[l] - x;
-    distance = length(v);
-    toLight = v / distance;
-    vec3 a = lightAttenuation[l];
-    E /= max(a.x + a.y * distance + a.z * distance * distance, 1e-12);
-    if (lightConeCosine[l] > -1.5)
-    {
-      float cosPhi = dot(-toLight, lightDirection[l]);
-      E *= cosPhi >= lightConeCosine[l] ? pow(max(cosPhi, 0.0), lightExponent[l]) : 0.0;
-    }
-  }
-  return E.r + E.g + E.b > 0.0;
-}
 
 #if TYNDALL_SHADING || TYNDALL_ISOSURFACES
 // A surface does not shadow itself: its T_l is taken this far towards the
@@ -339,9 +308,7 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 // scalar's unit gradient at normalAt (0 where it is 0), E_l the light's
 // colour (intensity x colour, attenuated) at x, a headlight's direction
 // along the ray.
-uniform vec4 shadingCoefficients[4]; // per component: Ka, Kd, Ks, specular power
-uniform vec3 lightColor[TYNDALL_MAX_LIGHTS];
-uniform int lightHeadlight[TYNDALL_MAX_LIGHTS];
+// (shadingCoefficients, lightColor, lightHeadlight: vtkTransmittanceLightsFS.glsl.)
 
 // Light l at the shaded sample x (view direction -v): false where it does
 // not reach x; else T_l E_l (TE), the direction s the normal meets it at
@@ -367,12 +334,6 @@ bool tyndallShadingLight(int l, vec3 x, vec3 v, out vec3 TE, out vec3 s, out vec
   return true;
 }
 
-// Light's term Kd |n.s| c + Ks |n.h|^p with coefficients k; the base of pow
-// kept positive: pow(0, 0) is undefined in GLSL, 1 on the CPU.
-vec3 tyndallShadingTerm(vec4 k, vec3 n, vec3 s, vec3 h, vec3 color)
-{
-  return k.y * abs(dot(n, s)) * color + k.z * pow(max(abs(dot(n, h)), 1e-30), k.w);
-}
 
 #if TYNDALL_SCATTERING_BLEND
 // VTK 9.2's volumetric scattering blending (vtkTyndallShading::BlendWeight(),
