@@ -53,7 +53,7 @@ bool vtkTransmittanceVolumeBricks::Plan(const int dims[3], int components, int v
   const void* values, int maximumSize, double maximumShare)
 {
   this->Clear();
-  const int perAxis = maximumSize / Side;
+  const int perAxis = std::min(maximumSize / Side, MaximumSlotsPerAxis);
   if (dims[0] < 1 || dims[1] < 1 || dims[2] < 1 || components < 1 || valueSize < 1 || !values ||
     perAxis < 1)
   {
@@ -168,7 +168,7 @@ size_t vtkTransmittanceVolumeBricks::GetAtlasBytes() const
 size_t vtkTransmittanceVolumeBricks::GetIndirectionBytes() const
 {
   const int* nb = this->BrickCounts;
-  return static_cast<size_t>(nb[0]) * nb[1] * nb[2] * 3 * sizeof(unsigned short);
+  return static_cast<size_t>(nb[0]) * nb[1] * nb[2] * 3; // RGB8
 }
 
 //------------------------------------------------------------------------------
@@ -271,7 +271,7 @@ bool vtkTransmittanceVolumeBricks::Upload(
   vtkTextureObject* atlas, vtkTextureObject* indirection, int type, const void* values) const
 {
   std::vector<unsigned char> texels;
-  std::vector<unsigned short> slots;
+  std::vector<unsigned char> slots;
   if (!this->BuildAtlas(values, texels))
   {
     return false;
@@ -288,13 +288,13 @@ bool vtkTransmittanceVolumeBricks::Upload(
   for (size_t b = 0; b < this->BrickSlot.size(); ++b)
   {
     const int slot = this->BrickSlot[b];
-    slots[3 * b] = static_cast<unsigned short>(slot % s[0]);
-    slots[3 * b + 1] = static_cast<unsigned short>((slot / s[0]) % s[1]);
-    slots[3 * b + 2] = static_cast<unsigned short>(slot / (s[0] * s[1]));
+    slots[3 * b] = static_cast<unsigned char>(slot % s[0]);
+    slots[3 * b + 1] = static_cast<unsigned char>((slot / s[0]) % s[1]);
+    slots[3 * b + 2] = static_cast<unsigned char>(slot / (s[0] * s[1]));
   }
   ScopedUnpackAlignment alignment;
   const int* a = this->AtlasDimensions;
   const int* nb = this->BrickCounts;
   return atlas->Create3DFromRaw(a[0], a[1], a[2], this->Components, type, texels.data()) &&
-    indirection->Create3DFromRaw(nb[0], nb[1], nb[2], 3, VTK_UNSIGNED_SHORT, slots.data());
+    indirection->Create3DFromRaw(nb[0], nb[1], nb[2], 3, VTK_UNSIGNED_CHAR, slots.data());
 }

@@ -15,8 +15,10 @@
  *   copied from the data) and one for each distinct constant value (at
  *   most MaximumConstants; bricks of further constants get slots of their
  *   own), in the data's own type;
- * - an indirection texture: one texel per brick (RGB, 16-bit normalized),
- *   the brick's slot (x, y, z) in the atlas.
+ * - an indirection texture: one texel per brick (RGB, 8-bit normalized:
+ *   3 bytes), the brick's slot (x, y, z) in the atlas, which holds at most
+ *   MaximumSlotsPerAxis slots along each axis (256^3 slots: 8.6 billion
+ *   samples that vary, more than any GL's 3-D texture).
  *
  * A sample's volume texture coordinate t (texel i's centre at (i + 0.5) /
  * n, as for a dense volume) maps to the atlas by MapCoordinate(), which the
@@ -53,6 +55,8 @@ public:
   static constexpr int BrickSize = 8;
   /// The most constant values given one shared slot each.
   static constexpr int MaximumConstants = 8;
+  /// The most slots along an atlas axis (an 8-bit indirection channel).
+  static constexpr int MaximumSlotsPerAxis = 256;
 
   /**
    * Finds the constant bricks of `values` (`dims` samples, x fastest,
@@ -104,7 +108,7 @@ public:
 
   /**
    * Creates `atlas` (the data's `components` of VTK `type`) and
-   * `indirection` (RGB unsigned short, read nearest) with the planned
+   * `indirection` (RGB unsigned char, read nearest) with the planned
    * layout, their context current, from `values` (Plan()'s). False when
    * the GL cannot create them.
    */

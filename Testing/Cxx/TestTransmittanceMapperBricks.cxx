@@ -8,7 +8,8 @@
 //    share asked; MapCoordinate() (the CPU twin of the shaders'
 //    tyndallBrickedTexel()): trilinear and nearest samples of the atlas
 //    equal the volume's at any coordinate, brick seams and faces included.
-//    Also: slots in rows and layers (a small texture size), more constant
+//    Also: slots in rows and layers (a small texture size), at most 256
+//    along an axis (the 8-bit indirection), more constant
 //    values than shared slots, volumes of one brick, the share at which a
 //    plan is declined.
 // 2. The mapper (70 x 57 x 61: n - 1 a multiple of 8 or not) with bricking
@@ -215,6 +216,19 @@ void CheckLayout()
     "slots in rows and layers");
   Check(!other.Plan(dims, 1, sizeof(double), values.data(), 36, 1.0),
     "more slots than the texture size holds: declined");
+  // At most 256 slots along an axis (the 8-bit indirection), whatever the
+  // texture size: 300 bricks that vary in a row take two rows of slots.
+  const int row[3] = { 300 * B + 1, 9, 9 };
+  std::vector<double> wave(static_cast<size_t>(row[0]) * row[1] * row[2]);
+  for (size_t n = 0; n < wave.size(); ++n)
+  {
+    wave[n] = std::sin(0.37 * n);
+  }
+  Check(CheckAtlas("300 bricks in a row", wave, row, 16384, 1.0e9, other) &&
+      other.GetSlots() == 300 &&
+      other.GetSlotCounts()[0] == vtkTransmittanceVolumeBricks::MaximumSlotsPerAxis &&
+      other.GetSlotCounts()[1] == 2 && other.GetSlotCounts()[2] == 1,
+    "at most 256 slots along an axis (a texture size of 16384)");
   // More constant values than shared slots: the first 8 values share a
   // slot each, the other 4 values' bricks have their own.
   const int strip[3] = { 48 * B + 1, 9, 9 };

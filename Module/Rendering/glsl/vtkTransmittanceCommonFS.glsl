@@ -60,7 +60,7 @@ vec3 tyndallTiledTexel(vec3 t, vec3 dims, vec3 tiling, vec3 textureDims)
 // whose MapCoordinate() is this function's CPU twin): the sample coordinate
 // v = t dims - 0.5 clamped to the samples (clamp-to-edge), its brick b
 // (TYNDALL_BRICK_SIZE samples a side; the last holds the volume's end), the
-// brick's slot in the atlas from the indirection texture (16-bit, one texel
+// brick's slot in the atlas from the indirection texture (8-bit RGB, one texel
 // per brick), and the texel v - b TYNDALL_BRICK_SIZE in the slot, whose
 // TYNDALL_BRICK_SIZE + 1 texels a side hold every sample its filtering reads.
 vec3 tyndallBrickedTexel(sampler3D bricks, vec3 t, vec3 dims, vec3 counts, vec3 atlasDims)
@@ -68,7 +68,7 @@ vec3 tyndallBrickedTexel(sampler3D bricks, vec3 t, vec3 dims, vec3 counts, vec3 
   float size = float(TYNDALL_BRICK_SIZE);
   vec3 v = clamp(t * dims - 0.5, vec3(0.0), dims - 1.0);
   vec3 b = min(floor(v / size), counts - 1.0);
-  vec3 slot = floor(texelFetch(bricks, ivec3(b), 0).xyz * 65535.0 + 0.5);
+  vec3 slot = floor(texelFetch(bricks, ivec3(b), 0).xyz * 255.0 + 0.5); // RGB8
   return (slot * (size + 1.0) + (v - b * size) + 0.5) / atlasDims;
 }
 uniform sampler3D brickTexture; // the indirection (the volume itself when not bricked)
