@@ -86,6 +86,18 @@ void ScanScalars(
   }
 }
 
+// The component whose isosurfaces VTK 9.1 draws of `count` independent
+// components: the first of the largest weight.
+int IsoComponent(vtkVolumeProperty* property, int count)
+{
+  int chosen = 0;
+  for (int c = 1; c < count && c < 4; ++c)
+  {
+    chosen = property->GetComponentWeight(c) > property->GetComponentWeight(chosen) ? c : chosen;
+  }
+  return chosen;
+}
+
 // vtkParticipatingMediumMapper's vector mode applied to `scalars` (several
 // components): their magnitude, or one component (null, with `error`, for a
 // component they lack).
@@ -259,12 +271,23 @@ bool vtkTyndallGridMedium::UpdateScalars(vtkVolume* volume, vtkObject* reporter)
   // vtkSmartVolumeMapper's vector mode (a Tyndall mapper's): independent
   // components drawn as their magnitude or one of them.
   auto* tyndall = vtkParticipatingMediumMapper::SafeDownCast(mapper);
-  const int vectorMode = tyndall && volume->GetProperty() &&
-      volume->GetProperty()->GetIndependentComponents() && scalars &&
-      scalars->GetNumberOfComponents() > 1
-    ? tyndall->GetVectorMode()
-    : vtkParticipatingMediumMapper::DISABLED;
-  const int vectorComponent = tyndall ? tyndall->GetVectorComponent() : 0;
+  vtkVolumeProperty* property = volume->GetProperty();
+  const bool independent = property && property->GetIndependentComponents() && scalars &&
+    scalars->GetNumberOfComponents() > 1;
+  int vectorMode =
+    tyndall && independent ? tyndall->GetVectorMode() : vtkParticipatingMediumMapper::DISABLED;
+  int vectorComponent = tyndall ? tyndall->GetVectorComponent() : 0;
+  // VTK 9.1's isosurfaces of independent components are those of the
+  // component of the largest weight (the first of equal ones) with its
+  // functions, its values compared on component 0's range: drawn here when
+  // that is component 0, as that one component (else UpdateComponents()
+  // refuses them).
+  if (independent && vectorMode == vtkParticipatingMediumMapper::DISABLED &&
+    this->Isosurfaces.Enabled() && IsoComponent(property, scalars->GetNumberOfComponents()) == 0)
+  {
+    vectorMode = vtkParticipatingMediumMapper::COMPONENT;
+    vectorComponent = 0;
+  }
   const std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(image)),
     static_cast<double>(image->GetMTime()),
     static_cast<double>(reinterpret_cast<uintptr_t>(scalars)),
@@ -1369,7 +1392,13 @@ bool vtkTyndallGridMedium::UpdateComponents(vtkVolume* volume, vtkObject* report
   }
   if (this->Isosurfaces.Enabled())
   {
-    what = "the isosurface blend mode";
+    // (Independent ones drawn when component 0 has the largest weight:
+    // UpdateScalars().)
+    what = this->Components.GetMode() == vtkTyndallComponents::Independent
+      ? "the isosurface blend mode when a component other than the first has the largest weight "
+        "(VTK 9.1 draws that component's isosurfaces, its values on component 0's range; Tyndall "
+        "draws those of independent components whose first has the largest weight)"
+      : "the isosurface blend mode";
   }
   else if (property->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D)
   {

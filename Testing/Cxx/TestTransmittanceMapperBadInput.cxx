@@ -141,10 +141,13 @@ int TestTransmittanceMapperBadInput(int, char*[])
     }
     expectError(image, "no finite value in component 1", "a component of NaN only");
     // Several components in the blend mode they are not drawn in (the
-    // projections draw them: vtkTyndallProjection).
+    // projections draw them: vtkTyndallProjection; the isosurfaces of
+    // independent ones whose first has the largest weight are that one's).
     mapper->SetBlendModeToIsoSurface();
     volume->GetProperty()->GetIsoSurfaceValues()->SetValue(0, 0.5);
+    volume->GetProperty()->SetComponentWeight(0, 0.5); // component 1 of the largest weight
     expectError(MakeImage(8, 8, 8, 2, 1.0), "isosurface blend mode", "two components, isosurfaces");
+    volume->GetProperty()->SetComponentWeight(0, 1.0);
     volume->GetProperty()->GetIsoSurfaceValues()->SetNumberOfContours(0);
     mapper->SetBlendModeToComposite();
   }

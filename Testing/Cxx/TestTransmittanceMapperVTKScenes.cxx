@@ -775,6 +775,21 @@ void IndependentProperty(vtkVolumeProperty* property, const double*)
   SetIndependentComponents(property, 3, colors, 0.33, weights);
 }
 
+// IndependentProperty with IsoProperty's three values on component 0's
+// range, Shade on: VTK 9.1 draws the isosurfaces of the component of the
+// largest weight (the first of equal ones: component 0 here) with its
+// functions and gradient.
+void IndependentIsoProperty(vtkVolumeProperty* property, const double range[2])
+{
+  IndependentProperty(property, range);
+  for (int i = 0; i < 3; ++i)
+  {
+    property->GetIsoSurfaceValues()->SetValue(
+      i, range[0] + (0.45 + 0.15 * i) * (range[1] - range[0]));
+  }
+  property->ShadeOn();
+}
+
 // IndependentProperty for the additive blend mode (which sums the opacity
 // per unit distance): unit distances of 40, 20 and 60 voxels, so that the
 // sums stay below 1 and each component's own is read.
@@ -1122,6 +1137,8 @@ std::vector<Scene> Scenes()
       35.0, false, true },
     { "Isosurface-WaveletUnshaded", MakeWavelet, UnshadedIsoProperty, Blend(M::ISOSURFACE_BLEND),
       Tilted, true },
+    { "Isosurface-IndependentComponents", MakeIndependent, IndependentIsoProperty,
+      Blend(M::ISOSURFACE_BLEND), Tilted, true, 35.0, false, true },
     { "Isosurface-WaveletSceneLight", MakeWavelet, UnlitAmbientIsoProperty,
       Blend(M::ISOSURFACE_BLEND), SceneLight, true, 35.0, false, true },
     { "Isosurface-Head", MakeHead, HeadIsoProperty, Blend(M::ISOSURFACE_BLEND), Tilted, true, 35.0,

@@ -15,8 +15,9 @@
 //    missing data, the extinction is the mixture of the tables' at the
 //    right components;
 // 4. what several components are not drawn with: an error (the isosurface
-//    blend mode, a 2-D transfer function; the projections are drawn), or named (gradient
-//    opacity);
+//    blend mode but for independent ones whose first has the largest weight,
+//    drawn as that component, as VTK 9.1 does; a 2-D transfer function; the
+//    projections are drawn), or named (gradient opacity);
 // 5. the majorant grid over several tables (what empty-space skipping
 //    reads): each block's majorant bounds the mixture at every sample it
 //    covers, for VTK's mixing and the additive one, and is 0 only where the
@@ -332,11 +333,28 @@ void TestGrid()
       grid.GetProjection().GetMode() == vtkTyndallProjection::MAXIMUM,
     "two components in the maximum intensity blend mode: read");
   observer->Clear();
+  // Isosurfaces of independent components: VTK 9.1's are those of the
+  // component of the largest weight, the first of equal ones: drawn as
+  // that one component when it is component 0, else an error.
   mapper->SetBlendModeToIsoSurface();
   property->GetIsoSurfaceValues()->SetValue(0, 5.0);
+  const bool independent = property->GetIndependentComponents() != 0;
+  property->IndependentComponentsOn();
+  Check(grid.Update(volume, reporter) && !grid.GetComponents().Enabled() &&
+      grid.GetScalars()->GetNumberOfComponents() == 1 &&
+      grid.GetScalars()->GetComponent(7, 0) == array->GetComponent(7, 0),
+    "two independent components of equal weights in the isosurface blend mode: component 0's");
+  property->SetComponentWeight(0, 0.25); // (below component 1's 0.5)
   Check(!grid.Update(volume, reporter) &&
       observer->GetErrorMessage().find("isosurface") != std::string::npos,
-    "two components in the isosurface blend mode: an error");
+    "component 1 of the largest weight in the isosurface blend mode: an error");
+  property->SetComponentWeight(0, 1.0);
+  observer->Clear();
+  property->IndependentComponentsOff();
+  Check(!grid.Update(volume, reporter) &&
+      observer->GetErrorMessage().find("isosurface") != std::string::npos,
+    "two dependent components in the isosurface blend mode: an error");
+  property->SetIndependentComponents(independent);
   property->GetIsoSurfaceValues()->SetNumberOfContours(0);
   mapper->SetBlendModeToComposite();
   observer->Clear();
