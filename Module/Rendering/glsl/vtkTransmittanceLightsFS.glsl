@@ -49,4 +49,13 @@ vec3 tyndallShadingTerm(vec4 k, vec3 n, vec3 s, vec3 h, vec3 color)
 {
   return k.y * abs(dot(n, s)) * color + k.z * pow(max(abs(dot(n, h)), 1e-30), k.w);
 }
+
+// The half vector of the light direction s and the view direction v; 0
+// where the light faces the camera exactly (the CPU's guard).
+vec3 tyndallHalfVector(vec3 s, vec3 v)
+{
+  vec3 sv = s + v;
+  float svLength = length(sv);
+  return svLength > 0.0 ? sv / svLength : vec3(0.0);
+}
 #endif

@@ -258,11 +258,7 @@ void tyndallSliceSurface(float value, vec3 w, inout vec4 pixel)
       continue;
     }
     vec3 s = lightHeadlight[l] != 0 ? v : toLight;
-    // h = 0 where the light faces the camera exactly (the CPU's guard).
-    vec3 sv = s + v;
-    float svLength = length(sv);
-    vec3 h = svLength > 0.0 ? sv / svLength : vec3(0.0);
-    surface += E * tyndallShadingTerm(shadingCoefficients[0], n, s, h, color);
+    surface += E * tyndallShadingTerm(shadingCoefficients[0], n, s, tyndallHalfVector(s, v), color);
   }
   pixel.rgb = clamp(surface, 0.0, 1.0) * pixel.a;
 #endif
