@@ -149,9 +149,8 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   this->WarnNotDrawn(volume, reporter);
   this->UpdateLights(renderer, reporter);
   // A projection (vtkTyndallProjection) is lit through nothing, and lit by
-  // nothing but a shaded slice (vtkTyndallShading: its surface term alone;
-  // a plain property's Shade is single scattering, and only a plain
-  // property's slice is shaded).
+  // nothing but a shaded slice (vtkTyndallShading: its surface term alone,
+  // whatever the scattering model: VTK's slice).
   const bool projection = this->Medium->GetProjection().Enabled();
   this->UpdateGuests(renderer, volume, projection, reporter);
   this->UpdateCameraGroup(renderer, volume, reporter);

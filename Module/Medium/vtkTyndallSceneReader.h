@@ -20,7 +20,8 @@
  *   (GetTransformedPosition/FocalPoint);
  * - a directional or spot light whose position and focal point coincide has
  *   no direction: it is ignored with a warning;
- * - in the emission-absorption model no light is used (nothing is shaded);
+ * - in the emission-absorption model no light is used (nothing is shaded)
+ *   but by a shaded slice;
  * - a volume drawn in a projection blend mode (vtkTyndallProjection:
  *   maximum, minimum, average intensity, additive, slice) is not a medium:
  *   it uses no light (but a shaded slice's, vtkTyndallShading, unshadowed),

@@ -209,9 +209,11 @@ std::vector<std::string> vtkTyndallVolumeSettings::NotDrawn(vtkVolume* volume)
       vtkTyndallProjection::GetModeName(projection.GetMode()) + " blend mode (ignored)");
   }
   // Gradient opacity is not read with several components (vtkTyndallComponents;
-  // named once, and not where VTK ignores it too).
+  // named once, and not where VTK ignores it too; their isosurfaces are
+  // one component's, named below).
   const int components = mapper ? ScalarComponents(mapper, property) : 0;
-  if (components > 1 && !summed && !projectionNamed && AnyGradientOpacity(property, components))
+  if (components > 1 && !summed && !projectionNamed && !isosurfaces &&
+    AnyGradientOpacity(property, components))
   {
     notDrawn.push_back("gradient opacity with several components (ignored)");
   }

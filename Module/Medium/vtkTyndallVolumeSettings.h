@@ -78,14 +78,16 @@ public:
 
   /**
    * The number of components of the scalars `mapper` draws with `property`
-   * (0 without; 1 for a Tyndall mapper's vector mode of independent ones).
+   * (0 without; 1 for a Tyndall mapper's vector mode of independent ones;
+   * the data's count in the isosurface blend mode, whose independent
+   * components are drawn as one: vtkTyndallGridMedium).
    */
   static int ScalarComponents(vtkVolumeMapper* mapper, vtkVolumeProperty* property);
 
   /**
    * Whether `mapper` draws the slice through a plane (vtkTyndallProjection)
    * of one component with `property`'s 1-D functions: the slice that VTK
-   * 9.1 lights (Shade, a plain property's) and whose opacity it multiplies
+   * 9.1 lights (Shade, of either kind of property) and whose opacity it multiplies
    * by the gradient opacity, which Tyndall draws as VTK does.
    */
   static bool SliceReadsGradient(vtkVolumeMapper* mapper, vtkVolumeProperty* property);

@@ -337,8 +337,8 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   }
   vtkDataArray* scalars = medium.GetScalars();
   // Asked of the GL before any copy or pass over the data: a volume the
-  // GPU cannot hold fails at once (a 1024^3 float volume: before its 4 GiB
-  // float copy), unless it may go as bricks (then planned over the values).
+  // GPU cannot hold fails at once (a 1024^3 volume: before any copy or
+  // plan), unless it may go as bricks (then planned over the values).
   const bool bricks = this->BricksAllowed && this->Bricking != BRICKING_OFF;
   this->DenseFits = this->VolumeFits(window, scalars->GetNumberOfComponents(),
     StoredType(scalars->GetDataType()), bricks ? nullptr : reporter);

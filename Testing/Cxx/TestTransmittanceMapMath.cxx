@@ -319,8 +319,9 @@ int TestTransmittanceMapMath(int, char*[])
         const double* b = allBounds[p][m][1];
         const std::string what = profiles[p].Name + " " + Math::GetMethodName(kMethods[m]);
         Check(below > first && b[0] == first * du && b[1] == below * du,
-          what + ": s_min is the start of the first non-empty sample, s_max the end of the "
-                 "first dense one");
+          what +
+            ": s_min is the start of the first non-empty sample, s_max the end of the "
+            "first dense one");
         Check(std::abs(b[2] - std::exp(-depth)) < 1e-14, what + ": T_beyond is T at s_max");
         Check(b[2] < kThreshold && b[2] > 0.01 * kThreshold,
           what + ": T_beyond just below the threshold");

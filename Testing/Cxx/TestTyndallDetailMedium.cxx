@@ -39,8 +39,8 @@
 #include "vtkVolume.h"
 
 #include "TyndallTestCheck.h"
-#include "TyndallTestScene.h"
 #include "TyndallTestQuadrature.h"
+#include "TyndallTestScene.h"
 
 #include <algorithm>
 #include <cmath>

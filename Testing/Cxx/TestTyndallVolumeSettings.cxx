@@ -28,10 +28,11 @@
 //    maximum or minimum of 2 dependent ones), named.
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkContourValues.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
-#include "vtkLight.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
 #include "vtkMultiVolume.h"
 #include "vtkNew.h"
 #include "vtkParticipatingMediumProperty.h"
@@ -430,6 +431,17 @@ int TestTyndallVolumeSettings(int, char*[])
       Check(said.find("gradient opacity") != std::string::npos &&
           said.find("gradient opacity") == said.rfind("gradient opacity"),
         "gradient opacity of components in the maximum intensity: named once (" + said + ")");
+      // Their isosurfaces are component 0's (vtkTyndallGridMedium): its
+      // gradient opacity named once, as the isosurfaces'.
+      componentProperty->GetIsoSurfaceValues()->SetValue(0, 3.0);
+      mode(vtkVolumeMapper::ISOSURFACE_BLEND);
+      components.Read();
+      const std::string iso =
+        components.Log->Messages.empty() ? "" : components.Log->Messages.front();
+      Check(iso.find("gradient opacity in the isosurface blend mode") != std::string::npos &&
+          iso.find("gradient opacity") == iso.rfind("gradient opacity"),
+        "gradient opacity of components in the isosurface mode: named once (" + iso + ")");
+      componentProperty->GetIsoSurfaceValues()->SetNumberOfContours(0);
       componentProperty->DisableGradientOpacityOn(0);
       mode(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND);
     }
