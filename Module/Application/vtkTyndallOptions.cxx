@@ -169,11 +169,13 @@ const Spec kOptions[] = {
     "single-scattering (colour = albedo) or emission-absorption (colour = emitted colour, as "
     "vtkGPUVolumeRayCastMapper)" },
   { "blend-mode", "", Kind::Choice, 0, 0, false,
-    "composite|maximum|minimum|average|additive|isosurface", "B", "composite", "Scattering", Both,
+    "composite|maximum|minimum|average|additive|isosurface|slice", "B", "composite", "Scattering",
+    Both,
     "composite draws the medium; maximum, minimum and average intensity and additive project "
     "the volume's scalars as vtkGPUVolumeRayCastMapper does (unlit; the colour and opacity "
     "functions of the preset); isosurface draws the surfaces of --iso-values, lit and "
-    "shadowed" },
+    "shadowed; slice draws the colour and opacity functions on the plane of --slice-normal "
+    "(lit as a surface, unshadowed, with --shade)" },
   { "iso-values", "", Kind::Text, 0, 0, false, "", "V,V,...", "", "Scattering", Both,
     "the scalar values whose surfaces --blend-mode isosurface draws (at most 16, comma-separated; "
     "their colour and opacity are the preset's at each value)" },
@@ -285,6 +287,13 @@ const Spec kOptions[] = {
     "crop the medium to the box from X Y Z (data coordinates) to --crop-high" },
   { "crop-high", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping",
     Both, "the far corner of the cropping box (default: the data's upper bounds)" },
+  { "slice-normal", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "0 0 1",
+    "Clipping", Both, "the normal of the plane --blend-mode slice draws (world coordinates)" },
+  { "slice-origin", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping",
+    Both, "a point of the slice's plane (default: the centre of the volume)" },
+  { "slice-offset", "", Kind::Number, -1, 1, false, "", "F", "0", "Clipping", Both,
+    "moves the slice's plane along its normal by F times the volume's diagonal", KeyMode::Add, "l",
+    "k", 0.02 },
   { "camera-position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",
     Both, "where the camera is" },
   { "focal-point", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",
@@ -786,6 +795,14 @@ public:
     if (set("label-blend") && !set("labels"))
     {
       return "--label-blend needs --labels";
+    }
+    const bool slice = set("blend-mode") && this->Values.at("blend-mode").Text == "slice";
+    for (const char* name : { "slice-normal", "slice-origin", "slice-offset" })
+    {
+      if (set(name) && !slice)
+      {
+        return std::string("--") + name + " needs --blend-mode slice";
+      }
     }
     for (const char* name : { "component", "components", "component-weights", "mask", "labels",
            "frame", "no-rescale", "level-set-to-fog" })

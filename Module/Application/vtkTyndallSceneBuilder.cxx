@@ -916,6 +916,7 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   }
   this->ApplyDetail();
   this->ApplyClipping();
+  this->ApplySlice();
   this->ApplyEmission();
 }
 
@@ -924,7 +925,7 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
 {
   vtkTyndallOptions* o = this->Options;
   mapper->SetTransmittanceMethod(o->GetChoice("method"));
-  static_assert(vtkVolumeMapper::ADDITIVE_BLEND == 4 && vtkVolumeMapper::ISOSURFACE_BLEND == 5,
+  static_assert(vtkVolumeMapper::ADDITIVE_BLEND == 4 && vtkVolumeMapper::SLICE_BLEND == 6,
     "--blend-mode's choices are VTK's order");
   mapper->SetBlendMode(o->GetChoice("blend-mode"));
   mapper->SetNumberOfCoefficients(static_cast<int>(o->GetNumber("coefficients")));
@@ -995,6 +996,59 @@ void vtkTyndallSceneBuilder::ApplyEmission()
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkPlane> vtkTyndallSceneBuilder::MakePlane(
+  const std::string& prefix, const double bounds[6], int axis)
+{
+  vtkTyndallOptions* o = this->Options;
+  double normal[3] = { 0.0, 0.0, 0.0 };
+  normal[axis] = 1.0;
+  double origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  if (o->IsSet((prefix + "-normal").c_str()))
+  {
+    o->GetVector((prefix + "-normal").c_str(), normal);
+  }
+  if (o->IsSet((prefix + "-origin").c_str()))
+  {
+    o->GetVector((prefix + "-origin").c_str(), origin);
+  }
+  if (!(vtkMath::Normalize(normal) > 0.0))
+  {
+    normal[0] = normal[1] = normal[2] = 0.0; // a zero normal: along the axis
+    normal[axis] = 1.0;
+  }
+  const double low[3] = { bounds[0], bounds[2], bounds[4] };
+  const double high[3] = { bounds[1], bounds[3], bounds[5] };
+  const double offset = o->GetNumber((prefix + "-offset").c_str()) *
+    std::sqrt(vtkMath::Distance2BetweenPoints(low, high));
+  auto plane = vtkSmartPointer<vtkPlane>::New();
+  plane->SetNormal(normal);
+  plane->SetOrigin(
+    origin[0] + offset * normal[0], origin[1] + offset * normal[1], origin[2] + offset * normal[2]);
+  return plane;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplySlice()
+{
+  // Every volume's property holds the plane (it is drawn in world
+  // coordinates, through the first volume's centre by default); none
+  // without --blend-mode slice.
+  vtkSmartPointer<vtkPlane> plane;
+  if (this->Mapper->GetBlendMode() == vtkVolumeMapper::SLICE_BLEND)
+  {
+    double bounds[6];
+    this->Volume->GetBounds(bounds);
+    plane = this->MakePlane("slice", bounds, 2);
+  }
+  this->Property->SetSliceFunction(plane);
+  for (const AddedVolume& added : this->AddedVolumes)
+  {
+    added.Property->SetSliceFunction(plane);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkTyndallSceneBuilder::ApplyClipping()
 {
   vtkTyndallOptions* o = this->Options;
@@ -1003,34 +1057,13 @@ void vtkTyndallSceneBuilder::ApplyClipping()
   double bounds[6];
   this->Image->GetBounds(bounds);
   // A plane from --clip-normal, or from --clip-offset alone (the viewer's
-  // p / o keys without a normal given): then the normal is +x.
+  // p / o keys without a normal given): then the normal is +x. The plane is
+  // in world coordinates, through the centre of the volume as placed.
   if (o->IsSet("clip-normal") || o->IsSet("clip-offset"))
   {
-    double normal[3] = { 1.0, 0.0, 0.0 },
-           origin[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-             0.5 * (bounds[4] + bounds[5]) };
-    if (o->IsSet("clip-normal"))
-    {
-      o->GetVector("clip-normal", normal);
-    }
-    if (o->IsSet("clip-origin"))
-    {
-      o->GetVector("clip-origin", origin);
-    }
-    if (!(vtkMath::Normalize(normal) > 0.0))
-    {
-      normal[0] = 1.0; // a zero normal: along +x
-      normal[1] = normal[2] = 0.0;
-    }
-    const double low[3] = { bounds[0], bounds[2], bounds[4] };
-    const double high[3] = { bounds[1], bounds[3], bounds[5] };
-    const double offset =
-      o->GetNumber("clip-offset") * std::sqrt(vtkMath::Distance2BetweenPoints(low, high));
-    vtkNew<vtkPlane> plane;
-    plane->SetNormal(normal);
-    plane->SetOrigin(origin[0] + offset * normal[0], origin[1] + offset * normal[1],
-      origin[2] + offset * normal[2]);
-    mapper->AddClippingPlane(plane);
+    double worldBounds[6];
+    this->Volume->GetBounds(worldBounds);
+    mapper->AddClippingPlane(this->MakePlane("clip", worldBounds, 0));
   }
   mapper->SetCropping(o->IsSet("crop-low") || o->IsSet("crop-high"));
   if (mapper->GetCropping())

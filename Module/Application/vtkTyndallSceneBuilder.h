@@ -63,6 +63,7 @@ class vtkImageData;
 class vtkLight;
 class vtkCosineNoise;
 class vtkParticipatingMediumProperty;
+class vtkPlane;
 class vtkRenderer;
 class vtkTransferFunctionFileReader;
 class vtkTransmittanceVolumeMapper;
@@ -198,6 +199,11 @@ private:
   void ApplyDetail();
   // The --clip-... and --crop-... options: the mapper's clipping plane and cropping.
   void ApplyClipping();
+  // The --slice-... options: every volume's slice plane (none but in the slice blend mode).
+  void ApplySlice();
+  // The plane of the options PREFIX-normal (default: +`axis`), PREFIX-origin
+  // (default: the centre of `bounds`) and PREFIX-offset (times the diagonal of `bounds`).
+  vtkSmartPointer<vtkPlane> MakePlane(const std::string& prefix, const double bounds[6], int axis);
   bool SetUpCamera(vtkRenderer* renderer);
   void SetUpLights(vtkRenderer* renderer);
   void SetUpBackground(vtkRenderer* renderer);

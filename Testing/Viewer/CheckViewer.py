@@ -18,6 +18,12 @@
       frame that cannot be read (LAST + 1, which must not exist) is skipped
       with a warning.
 
+  CheckViewer.py slice --viewer EXE --render EXE --input FILE --output-dir DIR
+                       [--size W H] [--min-psnr DB]
+      The slice blend mode: the viewer's plane at start and after five
+      presses of 'l' must match tyndall-render's pictures at --slice-offset
+      0 and 0.1, and the two must differ.
+
   CheckViewer.py failures --viewer EXE
       Checks that the viewer fails cleanly (non-zero exit, a message, no
       crash) without an X display, with a bad script and with a bad input.
@@ -243,6 +249,47 @@ def sequence_mode(args):
     return failures
 
 
+def slice_mode(args):
+    """The slice blend mode: the viewer's plane at start and after five
+    presses of 'l' (--slice-offset +0.02 each) against tyndall-render's
+    pictures at --slice-offset 0 and 0.1; the two planes must differ."""
+    failures = []
+    os.makedirs(args.output_dir, exist_ok=True)
+    size = [str(args.size[0]), str(args.size[1])]
+    out = lambda name: os.path.join(args.output_dir, name)
+    offsets = {"start": 0.0, "moved": 0.1}
+    for key in offsets:
+        for name in ("render_%s.png" % key, "viewer_%s.png" % key):
+            if os.path.exists(out(name)):
+                os.remove(out(name))
+    for key, offset in offsets.items():
+        result = run([args.render, "-q", "-s"] + size + ["--blend-mode", "slice", "--slice-offset",
+                      str(offset), "-o", out("render_%s.png" % key), args.input])
+        if result.returncode != 0:
+            return ["tyndall-render exited with %d" % result.returncode]
+    events = ["hud off", "screenshot " + out("viewer_start.png")] + ["key l"] * 5
+    events += ["screenshot " + out("viewer_moved.png"), "quit"]
+    result = run([args.viewer, "-s"] + size + ["--blend-mode", "slice", args.input,
+                  "--events", "; ".join(events)])
+    if result.returncode != 0:
+        failures.append("the viewer exited with %d" % result.returncode)
+    pictures = {}
+    for name in ("viewer_start", "viewer_moved", "render_start", "render_moved"):
+        pictures[name] = read_png(out(name + ".png"))
+        if pictures[name] is None:
+            return failures + ["cannot read %s.png" % name]
+    for key in offsets:
+        value = psnr(pictures["viewer_" + key], pictures["render_" + key])
+        print("viewer_%s against render_%s: %s dB (floor %s dB)" % (key, key, value, args.min_psnr))
+        if value is None or not value >= args.min_psnr:
+            failures.append("the viewer's %s slice is not tyndall-render's (%s dB)" % (key, value))
+    value = psnr(pictures["viewer_start"], pictures["viewer_moved"])
+    print("viewer_start against viewer_moved: %s dB (they must differ: below 35 dB)" % value)
+    if value is None or value >= 35.0:
+        failures.append("the key 'l' did not move the slice (%s dB)" % value)
+    return failures
+
+
 def failures_mode(args):
     failures = []
 
@@ -294,11 +341,19 @@ def main():
     q.add_argument("--output-dir", required=True)
     q.add_argument("--size", nargs=2, type=int, default=[64, 64])
     q.add_argument("--min-psnr", type=float, default=45.0)
+    c = sub.add_parser("slice")
+    c.add_argument("--viewer", required=True)
+    c.add_argument("--render", required=True)
+    c.add_argument("--input", required=True)
+    c.add_argument("--output-dir", required=True)
+    c.add_argument("--size", nargs=2, type=int, default=[64, 64])
+    c.add_argument("--min-psnr", type=float, default=45.0)
     f = sub.add_parser("failures")
     f.add_argument("--viewer", required=True)
     args = parser.parse_args()
 
-    modes = {"scripted": scripted, "sequence": sequence_mode, "failures": failures_mode}
+    modes = {"scripted": scripted, "sequence": sequence_mode, "slice": slice_mode,
+             "failures": failures_mode}
     failures = modes[args.mode](args)
     for message in failures:
         print("FAIL:", message)
