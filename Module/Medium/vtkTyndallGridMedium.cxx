@@ -765,8 +765,9 @@ bool vtkTyndallGridMedium::UpdateTable(vtkVolume* volume, vtkObject* reporter)
   // names them).
   // (A projection draws no detail: the grid's gradient opacity then.)
   const bool detail = medium && medium->GetDetailNoise() && !this->Projection.Enabled();
-  const bool projected =
-    this->Projection.Enabled() && this->Projection.GetMode() != vtkTyndallProjection::SLICE;
+  const bool projected = this->Projection.Enabled() &&
+    !vtkTyndallVolumeSettings::SliceReadsGradient(
+      vtkVolumeMapper::SafeDownCast(volume->GetMapper()), property);
   vtkPiecewiseFunction* gradientOpacity = !detail && !projected && !this->Isosurfaces.Enabled() &&
       !this->GetLinearExtinction() && !components.Enabled() &&
       vtkTyndallVolumeSettings::HasGradientOpacity(property)

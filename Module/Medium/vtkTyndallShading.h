@@ -74,7 +74,7 @@
  *
  * Start(), AddLight() and Finish() are the CPU twin of the shader's
  * tyndallSurfaceShading() and tyndallComponentShading()
- * (vtkTransmittanceRayCastFS.glsl), and of tyndallSliceSurface()
+ * (vtkTransmittanceRayCastFS.glsl), and of tyndallProjectionSurface()
  * (vtkTransmittanceProjectionFS.glsl: the slice, as VTK 9.1 shades it, with
  * T_l = 1 and no blending, a projection having no maps).
  *

@@ -366,7 +366,7 @@ private:
   }
 
   // The slice's pixel rgba (premultiplied) at the distance t as VTK 9.1
-  // draws a slice of one component (GPU twin: tyndallSliceSurface()): with
+  // draws a slice of one component (GPU twin: tyndallProjectionSurface()): with
   // Shade its colour shaded as a surface by the lights, unshadowed (a
   // projection has no maps), and with gradient opacity its alpha (not the
   // colour's weight) multiplied by it.

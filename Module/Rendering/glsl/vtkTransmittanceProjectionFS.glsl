@@ -231,15 +231,17 @@ vec3 slicePoint = vec3(0.0);
 vec3 sliceTexel = vec3(0.0);
 #endif
 
+// The pixel (premultiplied) of what the ray gathered, as a surface. The
+// slice of one component as VTK 9.1 draws it (CPU twin:
+// vtkSingleScatteringReference's SliceSurface()): with Shade
+// (TYNDALL_SHADING) the colour shaded as a surface by the lights,
+// unshadowed (a projection has no maps), for the view direction w; with
+// gradient opacity its alpha, not the colour's weight, multiplied by it.
+// The other projections: the pixel as it is.
 #if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE && TYNDALL_COMPONENTS == 1
-// The slice's pixel (premultiplied) of the value `value` as VTK 9.1 draws
-// one component's slice (CPU twin: vtkSingleScatteringReference's
-// SliceSurface()): with Shade (TYNDALL_SHADING) the colour shaded as a
-// surface by the lights, unshadowed (a projection has no maps), for the
-// view direction w; with gradient opacity its alpha, not the colour's
-// weight, multiplied by it.
-void tyndallSliceSurface(float value, vec3 w, inout vec4 pixel)
+void tyndallProjectionSurface(TyndallProjection gathered, vec3 w, inout vec4 pixel)
 {
+  float value = gathered.Value;
 #if TYNDALL_SHADING
   vec3 color = texture(transferTexture,
     vec2(value * scalarToTable.x + scalarToTable.y, TYNDALL_TABLE_ALBEDO_ROW)).rgb;
@@ -265,6 +267,10 @@ void tyndallSliceSurface(float value, vec3 w, inout vec4 pixel)
 #if TYNDALL_GRADIENT_OPACITY
   pixel.a *= tyndallGradientOpacity(sliceTexel);
 #endif
+}
+#else
+void tyndallProjectionSurface(TyndallProjection gathered, vec3 w, inout vec4 pixel)
+{
 }
 #endif
 
@@ -329,8 +335,6 @@ void main()
   {
     discard;
   }
-#if TYNDALL_PROJECTION == TYNDALL_PROJECTION_SLICE && TYNDALL_COMPONENTS == 1
-  tyndallSliceSurface(gathered.Value, w, pixel);
-#endif
+  tyndallProjectionSurface(gathered, w, pixel);
   gl_FragData[0] = pixel;
 }
