@@ -31,6 +31,16 @@
  * reported with one warning per update and is available from
  * GetNumberOfNonFiniteValues().
  *
+ * Sparse grids. The arrays are allocated zeroed (calloc). A grid whose
+ * background is 0 (a fog volume, an OpenVDB cache of smoke), read without
+ * downsampling, gets its active values written and nothing else: the
+ * reading costs its active values, not its box, and the memory pages of the
+ * box that no active value touches are never allocated by the system (reads
+ * of them, such as a mapper's scan of the scalars, allocate nothing
+ * either). The array is a plain dense vtkFloatArray / vtkDoubleArray all
+ * the same: whatever writes into it or copies it pays for the box.
+ * GetFilledActiveOnly() says whether the last update did so for every grid.
+ *
  * Grid selection. SetGridName() selects one grid and AddGridName() adds
  * more; with no name given the reader picks the float grid named "density",
  * else the first float grid, else the first supported grid. Several grids
@@ -192,6 +202,12 @@ public:
   vtkGetMacro(NumberOfNonFiniteValues, vtkIdType);
 
   /**
+   * Whether the last update wrote only the active values of every grid into
+   * zeroed arrays (a background of 0, no downsampling): see "Sparse grids".
+   */
+  vtkGetMacro(FilledActiveOnly, bool);
+
+  /**
    * The estimate, in bytes, that the last update compared with MemoryLimit.
    */
   vtkGetMacro(LastMemoryEstimate, double);
@@ -214,6 +230,7 @@ protected:
   int DownsamplingFactor = 1;
   double MemoryLimit = 4096.0;
   vtkIdType NumberOfNonFiniteValues = 0;
+  bool FilledActiveOnly = false;
   double LastMemoryEstimate = 0.0;
 
 private:

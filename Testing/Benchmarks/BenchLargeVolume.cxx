@@ -9,6 +9,7 @@
 //   BenchLargeVolume [--dims X Y Z] [--type uchar|char|schar|ushort|short|float]
 //                    [--mapper tyndall|vtk] [--size N] [--output FILE.png]
 //                    [--sparse [--blob-width W]] [--bricking off|on|auto]
+//                    [--write-vdb FILE.vdb]
 //   BenchLargeVolume --compare [--voxels N] [--size N] [--output-dir DIR]
 //
 // --sparse: the blobs a tenth as wide and 0 where their level is below 1
@@ -19,7 +20,10 @@
 // against a dense grid of the samples that are not 0. --blob-width W: the
 // sparse blobs W times as wide as the dense ones (default 0.1: about 0.2 %
 // of the box not 0; 0.17: about 1 %, the 10^7 active voxels in a
-// 10^9-voxel box at --voxels 1000).
+// 10^9-voxel box at --voxels 1000). --write-vdb: writes the volume (float)
+// as an OpenVDB fog volume (its samples not 0 the active voxels, and its two
+// corners, so that the file's box is the volume's; vtkOpenVDBImageWriter)
+// instead of drawing it, for tyndall-render and vtkOpenVDBImageReader.
 //
 // The volume: four Gaussian blobs over [-1, 1]^3 (a level of 200 at a
 // blob's centre, clamped to [0, 255], mapped into each type's range: see
@@ -36,6 +40,7 @@
 #include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkOpenVDBImageWriter.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
@@ -72,6 +77,7 @@ struct Options
   std::string OutputDir = ".";
   bool Sparse = false;
   double BlobWidth = 0.1; // the sparse blobs' width over the dense ones'
+  std::string WriteVdb;
   int Bricking = vtkTransmittanceVolumeMapper::BRICKING_AUTO;
 };
 
@@ -175,6 +181,35 @@ vtkSmartPointer<vtkImageData> MakeVolume(const Options& o, const Type& type)
       static_cast<VTK_TT*>(data), o.Dims, type.Scale, type.Offset, o.Sparse, o.BlobWidth));
   }
   return image;
+}
+
+// --write-vdb: the volume as an OpenVDB file.
+int WriteVdb(const Options& o)
+{
+  const Type* type = FindType("float");
+  vtkSmartPointer<vtkImageData> data = MakeVolume(o, *type);
+  // The box's two corners active (a level of 0.5, where the opacity is 0):
+  // the file's box is the whole volume, not the blobs' box.
+  vtkDataArray* values = data->GetPointData()->GetScalars();
+  values->SetTuple1(0, 0.5);
+  values->SetTuple1(values->GetNumberOfTuples() - 1, 0.5);
+  vtkNew<vtkOpenVDBImageWriter> writer;
+  vtkNew<vtkTyndallErrorObserver> errors;
+  errors->Watch(writer);
+  writer->SetInputData(data);
+  writer->SetFileName(o.WriteVdb.c_str());
+  writer->SetGridName("density");
+  writer->Write();
+  vtkDataArray* scalars = data->GetPointData()->GetScalars();
+  vtkIdType active = 0;
+  for (vtkIdType n = 0; n < scalars->GetNumberOfTuples(); ++n)
+  {
+    active += scalars->GetTuple1(n) != 0.0 ? 1 : 0;
+  }
+  std::printf("wrote %s: %d x %d x %d float, %lld samples not 0 (active voxels)%s\n",
+    o.WriteVdb.c_str(), o.Dims[0], o.Dims[1], o.Dims[2], static_cast<long long>(active),
+    errors->HasErrors() ? "  (error)" : "");
+  return errors->HasErrors() ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
 // One volume, one mapper: the figures and the picture.
@@ -404,6 +439,10 @@ int main(int argc, char* argv[])
     {
       o.Sparse = true;
     }
+    else if (a == "--write-vdb" && i + 1 < argc)
+    {
+      o.WriteVdb = argv[++i];
+    }
     else if (a == "--blob-width" && i + 1 < argc)
     {
       o.BlobWidth = std::atof(argv[++i]);
@@ -420,7 +459,8 @@ int main(int argc, char* argv[])
       std::printf(
         "Usage: BenchLargeVolume [--dims X Y Z | --voxels N] [--type "
         "uchar|char|schar|ushort|short|float] [--mapper tyndall|vtk] [--size N] [--output "
-        "FILE.png] [--sparse [--blob-width W]] [--bricking off|on|auto] [--compare [--output-dir "
+        "FILE.png] [--sparse [--blob-width W]] [--write-vdb FILE.vdb] [--bricking off|on|auto] "
+        "[--compare [--output-dir "
         "DIR]]\n");
       return EXIT_FAILURE;
     }
@@ -431,6 +471,10 @@ int main(int argc, char* argv[])
     std::printf("BenchLargeVolume: --dims of 2 or more, --size 16..4096, --mapper tyndall|vtk, "
                 "--blob-width in (0, 1]\n");
     return EXIT_FAILURE;
+  }
+  if (!o.WriteVdb.empty())
+  {
+    return WriteVdb(o);
   }
   return o.Compare ? Compare(argv[0], o) : RenderOne(o);
 }

@@ -132,6 +132,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
   density->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
   density->tree().setValue(openvdb::Coord(4, 5, 6), 2.0f);
   density->tree().addTile(1, openvdb::Coord(8, 8, 8), 0.25f, true); // voxels 8..15
+  density->tree().setValueOff(openvdb::Coord(2, 2, 2), 7.0f);       // inactive: read as 0
   openvdb::DoubleGrid::Ptr temperature = openvdb::DoubleGrid::create(300.0);
   temperature->setName("temperature");
   temperature->setTransform(transform);
@@ -194,6 +195,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
 
   vtkImageData* image = Read(reader, multi, {}, "density alone");
   CheckAgainstGrid(image, "density", *density, "density alone");
+  Check(reader->GetFilledActiveOnly(), "density (background 0): its active values alone");
   CheckGeometry(image, *density, "density alone");
   Check(image->GetPointData()->GetNumberOfArrays() == 1, "one array");
   Check(image->GetPointData()->GetScalars() &&
@@ -203,6 +205,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
   image = Read(reader, multi, { "temperature" }, "temperature");
   Check(image->GetPointData()->GetScalars()->GetDataType() == VTK_DOUBLE, "double grid -> double");
   CheckAgainstGrid(image, "temperature", *temperature, "temperature (background 300)");
+  Check(!reader->GetFilledActiveOnly(), "temperature (background 300): every voxel written");
 
   // Several grids: the union of the boxes, each padded with its background.
   image = Read(reader, multi, { "density", "temperature", "velocity", "flow" }, "four grids");
@@ -352,7 +355,8 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
         observer->GetWarningMessage().find("Replaced 6 NaN or infinite") != std::string::npos,
       "NaN: a warning with the count (6)");
     observer->Clear();
-    Check(reader->GetNumberOfNonFiniteValues() == 6, "NaN: GetNumberOfNonFiniteValues() is 6");
+    Check(reader->GetNumberOfNonFiniteValues() == 6 && reader->GetFilledActiveOnly(),
+      "NaN: GetNumberOfNonFiniteValues() is 6 (the active values alone written)");
     vtkDataArray* values = reader->GetOutput()->GetPointData()->GetScalars();
     const double want[10] = { 1, 0, 3, 0, 5, 0, 7, 0, 0, 0 };
     bool ok = values && values->GetNumberOfTuples() == 10;

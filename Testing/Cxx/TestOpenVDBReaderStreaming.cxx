@@ -7,7 +7,9 @@
 //   with the background outside the active box), with points at the box
 //   centres (checked with OpenVDB's indexToWorld);
 // - an update above MemoryLimit fails cleanly before allocating;
-// - progress events rise to 1.
+// - progress events rise to 1;
+// - a grid of background 0 gets its active values alone written, whole and
+//   in pieces that cut its active tile (GetFilledActiveOnly()).
 #include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -19,6 +21,7 @@
 
 #include "TyndallTestOpenVDB.h"
 
+#include <algorithm>
 #include <vector>
 
 using namespace tyndall_vdb_test;
@@ -309,6 +312,72 @@ int TestOpenVDBReaderStreaming(int argc, char* argv[])
     limited->UpdateWholeExtent();
     Check(!observer->GetError() && limited->GetOutput()->GetNumberOfPoints() == 200 * 200 * 200,
       "the whole fits under 64 MiB");
+    observer->Clear();
+  }
+
+  // A background of 0 (a fog volume): the active values alone are written
+  // (GetFilledActiveOnly()), whole and in pieces that cut the active tile,
+  // every point checked against the grid (its inactive voxels, one holding
+  // 9, read as 0); downsampled, every voxel is read as before.
+  {
+    openvdb::FloatGrid::Ptr fog = openvdb::FloatGrid::create(0.0f);
+    fog->setName("density");
+    fog->setTransform(transform);
+    for (auto it = grid->cbeginValueOn(); it; ++it)
+    {
+      if (it.isVoxelValue())
+      {
+        fog->tree().setValue(it.getCoord(), *it);
+      }
+    }
+    fog->tree().addTile(1, openvdb::Coord(8, 8, -8), 0.75f, true);
+    fog->tree().setValueOff(openvdb::Coord(0, 5, 0), 9.0f);
+    WriteGrids(dir + "/fog.vdb", { fog });
+    vtkNew<vtkOpenVDBImageReader> sparse;
+    sparse->AddObserver(vtkCommand::ErrorEvent, observer);
+    sparse->SetFileName((dir + "/fog.vdb").c_str());
+    auto acc = fog->getConstAccessor();
+    auto matches = [&acc](vtkImageData* image)
+    {
+      int ext[6];
+      image->GetExtent(ext);
+      vtkDataArray* values = image->GetPointData()->GetScalars();
+      vtkIdType bad = values ? 0 : 1;
+      for (int k = ext[4]; values && k <= ext[5]; ++k)
+      {
+        for (int j = ext[2]; j <= ext[3]; ++j)
+        {
+          for (int i = ext[0]; i <= ext[1]; ++i)
+          {
+            const openvdb::Coord ijk(i, j, k);
+            const float want = acc.isValueOn(ijk) ? acc.getValue(ijk) : 0.0f;
+            int p[3] = { i, j, k };
+            bad += values->GetComponent(image->ComputePointId(p), 0) == want ? 0 : 1;
+          }
+        }
+      }
+      return bad == 0;
+    };
+    sparse->Update();
+    Check(!observer->GetError() && sparse->GetFilledActiveOnly() && matches(sparse->GetOutput()),
+      "fog: its active values alone, every point the grid's");
+    const int cuts[2][6] = { { -5, 20, 3, 9, -9, -5 }, { 8, 20, 10, 17, -4, 6 } };
+    for (const int* cut : cuts)
+    {
+      int sub[6];
+      std::copy(cut, cut + 6, sub);
+      sparse->Modified();
+      sparse->UpdateExtent(sub);
+      int got[6];
+      sparse->GetOutput()->GetExtent(got);
+      Check(std::equal(got, got + 6, sub) && sparse->GetFilledActiveOnly() &&
+          matches(sparse->GetOutput()),
+        "fog: a piece across the tile, every point the grid's");
+    }
+    sparse->SetDownsamplingFactor(2);
+    sparse->UpdateWholeExtent();
+    Check(!observer->GetError() && !sparse->GetFilledActiveOnly(),
+      "fog downsampled: every voxel read (the box filter)");
     observer->Clear();
   }
 
