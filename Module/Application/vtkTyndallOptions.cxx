@@ -280,7 +280,7 @@ const Spec kOptions[] = {
   { "clip-origin", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping",
     Both, "a point of the clipping plane (default: the centre of the data)" },
   { "clip-offset", "", Kind::Number, -1, 1, false, "", "F", "0", "Clipping", Both,
-    "moves the clipping plane along its normal by F times the data's diagonal (without "
+    "moves the clipping plane along its normal by F times the volume's diagonal (without "
     "--clip-normal: a plane of normal +x through the centre)",
     KeyMode::Add, "p", "o", 0.05 },
   { "crop-low", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping", Both,
@@ -292,8 +292,8 @@ const Spec kOptions[] = {
   { "slice-origin", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Clipping",
     Both, "a point of the slice's plane (default: the centre of the volume)" },
   { "slice-offset", "", Kind::Number, -1, 1, false, "", "F", "0", "Clipping", Both,
-    "moves the slice's plane along its normal by F times the volume's diagonal", KeyMode::Add, "l",
-    "k", 0.02 },
+    "moves the slice's plane along its normal by F times the volume's diagonal", KeyMode::Add, "]",
+    "[", 0.02 },
   { "camera-position", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",
     Both, "where the camera is" },
   { "focal-point", "", Kind::Triple, -Coordinate, Coordinate, false, "", "X Y Z", "", "Camera",

@@ -1033,13 +1033,26 @@ void vtkTyndallSceneBuilder::ApplySlice()
 {
   // Every volume's property holds the plane (it is drawn in world
   // coordinates, through the first volume's centre by default); none
-  // without --blend-mode slice.
-  vtkSmartPointer<vtkPlane> plane;
+  // without --blend-mode slice. One plane, changed in place.
+  vtkPlane* plane = nullptr;
   if (this->Mapper->GetBlendMode() == vtkVolumeMapper::SLICE_BLEND)
   {
     double bounds[6];
     this->Volume->GetBounds(bounds);
-    plane = this->MakePlane("slice", bounds, 2);
+    vtkSmartPointer<vtkPlane> made = this->MakePlane("slice", bounds, 2);
+    if (!this->SlicePlane)
+    {
+      this->SlicePlane = vtkSmartPointer<vtkPlane>::New();
+    }
+    this->SlicePlane->SetNormal(made->GetNormal());
+    this->SlicePlane->SetOrigin(made->GetOrigin());
+    plane = this->SlicePlane;
+  }
+  else if (this->Options->IsSet("slice-offset"))
+  {
+    // (The viewer's ] / [ keys; the command line refuses it.)
+    vtkWarningMacro(<< "--slice-offset moves the plane of --blend-mode slice; this volume is "
+                       "drawn in another blend mode.");
   }
   this->Property->SetSliceFunction(plane);
   for (const AddedVolume& added : this->AddedVolumes)

@@ -230,6 +230,7 @@ private:
   vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
   vtkSmartPointer<vtkParticipatingMediumProperty> Property;
   vtkSmartPointer<vtkCosineNoise> DetailNoise;
+  vtkSmartPointer<vtkPlane> SlicePlane; // --blend-mode slice's plane (ApplySlice())
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkLight> KeyLight;
   vtkSmartPointer<vtkActor> Ground;

@@ -240,32 +240,43 @@ struct Densifier
     *this->NonFinite += bad;
   }
 
-  // True when FillActive() gives what operator() gives: no downsampling and
-  // a background of 0 (the zeroed array already holds it).
+  // True when FillActive() gives what operator() gives (no downsampling, a
+  // background of 0: the zeroed array already holds it) and costs less: the
+  // grid holds fewer active values than the extent has voxels (a small
+  // piece of a large grid is read voxel by voxel).
   bool CanFillActive() const
   {
-    return this->Factor == 1 && this->BackgroundFinite && this->Background[0] == 0.0 &&
-      this->Background[1] == 0.0 && this->Background[2] == 0.0;
+    if (!(this->Factor == 1 && this->BackgroundFinite && this->Background[0] == 0.0 &&
+          this->Background[1] == 0.0 && this->Background[2] == 0.0))
+    {
+      return false;
+    }
+    const double voxels = (double(this->Ext[1]) - this->Ext[0] + 1.0) *
+      (double(this->Ext[3]) - this->Ext[2] + 1.0) * (double(this->Ext[5]) - this->Ext[4] + 1.0);
+    return double(this->Grid->activeVoxelCount()) <= voxels;
   }
 
   // Writes the grid's active values (voxels and tiles) that lie in the
   // extent into an output already zeroed, and nothing else: the cost of the
   // active values, not of the box (an output from calloc keeps the pages no
   // active value touches unallocated). Non-finite values become 0, counted.
-  // False when `abort` said so (checked every 2^20 values).
-  template <class Abort>
-  bool FillActive(const Abort& abort) const
+  // Every 2^20 values (and every 2^20 rows of tiles) `progress(fraction of
+  // the active values visited)` is called; it returns true to abort, and
+  // then FillActive() returns false.
+  template <class Progress>
+  bool FillActive(const Progress& progress) const
   {
+    const double active = std::max(double(this->Grid->activeVoxelCount()), 1.0);
     constexpr int nc = Traits::N;
     const openvdb::CoordBBox extent(openvdb::Coord(this->Ext[0], this->Ext[2], this->Ext[4]),
       openvdb::Coord(this->Ext[1], this->Ext[3], this->Ext[5]));
     const int64_t nx = int64_t(this->Ext[1]) - this->Ext[0] + 1;
     const int64_t ny = int64_t(this->Ext[3]) - this->Ext[2] + 1;
     vtkIdType bad = 0;
-    int64_t visited = 0;
+    int64_t visited = 0, rows = 0;
     for (auto it = this->Grid->cbeginValueOn(); it; ++it)
     {
-      if ((++visited & 0xFFFFF) == 0 && abort())
+      if ((++visited & 0xFFFFF) == 0 && progress(double(visited) / active))
       {
         return false;
       }
@@ -287,17 +298,20 @@ struct Densifier
       {
         value[c] = std::isfinite(value[c]) ? value[c] : 0.0;
       }
-      for (int k = box.min().z(); k <= box.max().z(); ++k)
+      for (int64_t k = box.min().z(); k <= box.max().z(); ++k)
       {
-        for (int j = box.min().y(); j <= box.max().y(); ++j)
+        for (int64_t j = box.min().y(); j <= box.max().y(); ++j)
         {
-          OutT* row =
-            this->Out + ((int64_t(k) - this->Ext[4]) * ny + (int64_t(j) - this->Ext[2])) * nx * nc;
-          for (int i = box.min().x(); i <= box.max().x(); ++i)
+          if ((++rows & 0xFFFFF) == 0 && progress(double(visited) / active))
+          {
+            return false; // (tiles of many rows)
+          }
+          OutT* row = this->Out + ((k - this->Ext[4]) * ny + (j - this->Ext[2])) * nx * nc;
+          for (int64_t i = box.min().x(); i <= box.max().x(); ++i)
           {
             for (int c = 0; c < nc; ++c)
             {
-              row[(int64_t(i) - this->Ext[0]) * nc + c] = static_cast<OutT>(value[c]);
+              row[(i - this->Ext[0]) * nc + c] = static_cast<OutT>(value[c]);
             }
             bad += finite ? 0 : 1;
           }
@@ -1053,6 +1067,7 @@ int vtkOpenVDBImageReader::RequestData(
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
   this->NumberOfNonFiniteValues = 0;
+  this->FilledActiveOnly = false; // (until every grid is read so)
   this->LastMemoryEstimate = 0.0;
   if (!in.Valid)
   {
@@ -1153,9 +1168,17 @@ int vtkOpenVDBImageReader::RequestData(
     if (densifier.CanFillActive())
     {
       // A background of 0: the active values alone (the same array).
-      densifier.FillActive([this] { return this->AbortExecute != 0; });
-      step += double(batches);
-      this->UpdateProgress(step / totalSteps);
+      const double first = step;
+      if (densifier.FillActive(
+            [&](double done)
+            {
+              this->UpdateProgress((first + done * double(batches)) / totalSteps);
+              return this->AbortExecute != 0;
+            }))
+      {
+        step += double(batches);
+        this->UpdateProgress(step / totalSteps);
+      }
       return;
     }
     this->FilledActiveOnly = false;
@@ -1178,7 +1201,7 @@ int vtkOpenVDBImageReader::RequestData(
       densifier.BackgroundFinite = densifier.BackgroundFinite && std::isfinite(v);
     }
   };
-  this->FilledActiveOnly = true;
+  this->FilledActiveOnly = !in.Selected.empty();
   for (size_t g = 0; g < in.Selected.size() && !this->AbortExecute; ++g)
   {
     const GridInfo& info = in.Grids[in.Selected[g]];
@@ -1227,6 +1250,7 @@ int vtkOpenVDBImageReader::RequestData(
   }
   if (this->AbortExecute)
   {
+    this->FilledActiveOnly = false;
     output->Initialize();
     return 1;
   }

@@ -38,8 +38,10 @@
  * box that no active value touches are never allocated by the system (reads
  * of them, such as a mapper's scan of the scalars, allocate nothing
  * either). The array is a plain dense vtkFloatArray / vtkDoubleArray all
- * the same: whatever writes into it or copies it pays for the box.
- * GetFilledActiveOnly() says whether the last update did so for every grid.
+ * the same: whatever writes into it or copies it pays for the box. (A
+ * piece of the grid whose voxels are fewer than the grid's active values is
+ * read voxel by voxel: the cheaper of the two.) GetFilledActiveOnly() says
+ * whether the last update did so for every grid.
  *
  * Grid selection. SetGridName() selects one grid and AddGridName() adds
  * more; with no name given the reader picks the float grid named "density",
@@ -82,7 +84,8 @@
  * memory give a vtkErrorMacro message and an empty output. Every exception
  * OpenVDB throws (openvdb::Exception, std::exception) is caught; none
  * reaches the pipeline. Progress events are fired while densifying, and
- * AbortExecute is honoured between batches of rows.
+ * AbortExecute is honoured between batches of rows (of active values when
+ * only those are written: every 2^20 of them).
  *
  * openvdb::initialize() is called once per process, on first use.
  *

@@ -322,8 +322,32 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
       break;
     }
   }
-  this->Factor = factor;
   this->UploadSize = maxSize;
+  this->WideBricks = false;
+  if (factor > 1 && this->Bricking != BRICKING_OFF && !this->UploadedBlocked)
+  {
+    // Wider or taller than the limit: every sample as bricks where their
+    // atlas fits (it holds the bricks in any arrangement), not reported
+    // where it does not; then every factor-th sample.
+    std::copy(full, full + 3, this->Dimensions);
+    this->Tiling.Plan(full, std::max({ full[0], full[1], full[2], maxSize }));
+    this->Factor = 1;
+    this->BricksAllowed = true;
+    this->WideBricks = true;
+    this->DenseFits = false;
+    this->Bricks.Clear();
+    if (this->UploadValues(window, medium, reporter))
+    {
+      return true;
+    }
+    this->WideBricks = false;
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Dimensions[a] = (full[a] - 1) / factor + 1;
+    }
+    this->Tiling.Plan(this->Dimensions, maxSize);
+  }
+  this->Factor = factor;
   // Bricks (vtkTransmittanceVolumeBricks) replace the scalars' texture
   // alone: not where another texture shares its layout.
   this->BricksAllowed = factor == 1 && !this->Tiling.IsTiled() && !this->UploadedBlocked;
@@ -346,6 +370,14 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   {
     return false;
   }
+  return this->UploadValues(window, medium, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceMediumTextures::UploadValues(
+  vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter)
+{
+  vtkDataArray* scalars = medium.GetScalars();
   const void* data = scalars->GetVoidPointer(0);
   switch (scalars->GetDataType())
   {
@@ -528,14 +560,22 @@ bool vtkTransmittanceMediumTextures::CreateVolumeTexture(vtkOpenGLRenderWindow* 
   // format and type otherwise: another type's data read as the old one).
   this->VolumeTexture->ResetFormatAndType();
   // (Bricks whatever they save where the dense texture does not fit.)
+  // (Wider than the limit, WideBricks: the bricks whatever they take.)
+  const double share = this->WideBricks
+    ? VTK_DOUBLE_MAX
+    : (this->Bricking == BRICKING_ON || !this->DenseFits ? 1.0 : 0.5);
   if (!valid && this->BricksAllowed && this->Bricking != BRICKING_OFF &&
     this->Bricks.Plan(this->Dimensions, components, vtkDataArray::GetDataTypeSize(type), values,
-      this->UploadSize, this->Bricking == BRICKING_ON || !this->DenseFits ? 1.0 : 0.5))
+      this->UploadSize, share))
   {
     Release(this->ValidityTexture, window);
     return this->UploadBricks(window, components, type, values, reporter);
   }
   this->Bricks.Clear();
+  if (this->WideBricks)
+  {
+    return false; // (UploadScalars() samples it then)
+  }
   if (!this->DenseFits)
   {
     this->ReportTooLarge(

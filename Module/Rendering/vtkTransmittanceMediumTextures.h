@@ -13,8 +13,10 @@
  * touches a NaN voxel and is empty, as on the CPU (vtkTyndallGridMedium). A volume whose slices
  * pass the GPU's 3-D texture limit (GL_MAX_3D_TEXTURE_SIZE, or SetMaximumTextureSize()) is
  * stored in tiles of slices side by side in each texture (vtkTransmittanceVolumeTiling: every
- * sample kept); one whose width or height passes it, or whose tiles do not fit, is downsampled
- * by the smallest integer factor that fits, with a warning.
+ * sample kept); one whose width or height passes it, or whose tiles do not fit, is stored as
+ * bricks (vtkTransmittanceVolumeBricks, every sample kept) where their atlas fits the limit and
+ * the bricking mode allows them, else downsampled by the smallest integer factor that fits,
+ * with a warning.
  * GetTextureScale() and GetTextureShift() map the medium's box as [0, 1]^3
  * to texture coordinates (point scalars: texel centres at the box's corners;
  * cell scalars: the texels fill the box).
@@ -185,6 +187,9 @@ private:
 
   bool UploadScalars(
     vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
+  // The scalars at Dimensions (Factor), by their type: UploadStored() or UploadFloats().
+  bool UploadValues(
+    vtkOpenGLRenderWindow* window, const vtkTyndallGridMedium& medium, vtkObject* reporter);
   // The scalars of an 8- or 16-bit integer type T (unsigned or signed char
   // or short) in a normalized texture of T (no copy at every sample).
   template <typename T>
@@ -251,6 +256,7 @@ private:
   int UploadedBricking = BRICKING_AUTO;
   int UploadSize = 2048; // the 3-D texture size the last upload planned for
   bool BricksAllowed = false;
+  bool WideBricks = false;      // every sample of a volume past the limit, as bricks or not at all
   bool UploadedBlocked = false; // another texture at the scalars' resolution (no bricks)
   bool DenseFits = true;        // whether the GL can hold the dense volume texture
   // The last upload that failed after its copy and plan (DenseFits false).

@@ -15,6 +15,8 @@
 //    (its texture tiled), and the tiled volume as another volume's guest
 //    (its shadow on it). Each within 50 dB of the one-texture picture.
 // 3. Width past the limit: still every n-th sample, with the warning.
+// 4. Width past the limit with bricks that fit it: every sample, as bricks
+//    (the dense texture's picture); with bricking off every n-th sample.
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFloatArray.h"
@@ -401,6 +403,74 @@ int TestTransmittanceMapperTiling(int, char*[])
       "a volume 20 wide at a limit of 16: every 3rd sample, with the warning");
     Check(!errors->GetError(), "width past the limit: no error");
     volume->SetMapper(nullptr);
+  }
+
+  // Wider than the limit but whose bricks fit it: every sample, as bricks.
+  // A 100 x 12 x 12 volume (13 x 2 x 2 bricks of 8^3 that vary, 52 slots of
+  // 9^3 in an atlas of at most 40 per side) at a limit of 40: the picture of
+  // the one dense texture, no warning; with bricking off, every 3rd sample
+  // and the warning.
+  {
+    auto wide = vtkSmartPointer<vtkImageData>::New();
+    wide->SetDimensions(100, 12, 12);
+    wide->SetSpacing(0.2, 1.0, 1.0);
+    wide->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    vtkDataArray* scalars = wide->GetPointData()->GetScalars();
+    for (int k = 0, n = 0; k < 12; ++k)
+    {
+      for (int j = 0; j < 12; ++j)
+      {
+        for (int i = 0; i < 100; ++i, ++n)
+        {
+          const double r2 = (j - 5.5) * (j - 5.5) + (k - 5.5) * (k - 5.5);
+          scalars->SetTuple1(
+            n, std::floor(250.0 * std::exp(-r2 / 12.0) * (0.55 + 0.45 * std::sin(0.3 * i))));
+        }
+      }
+    }
+    SetFunctions(property, true);
+    renderer->ResetCamera(0.0, 19.8, 0.0, 11.0, 0.0, 11.0);
+    struct Run
+    {
+      int Limit;
+      int Bricking;
+    };
+    const Run runs[3] = { { 0, vtkTransmittanceVolumeMapper::BRICKING_OFF },
+      { 40, vtkTransmittanceVolumeMapper::BRICKING_AUTO },
+      { 40, vtkTransmittanceVolumeMapper::BRICKING_OFF } };
+    vtkSmartPointer<vtkImageData> pictures[3];
+    std::string said[3];
+    bool bricked[3] = { false, false, false };
+    for (int r = 0; r < 3; ++r)
+    {
+      vtkNew<vtkTransmittanceVolumeMapper> mapper;
+      mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+      mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+      mapper->SetInputData(wide);
+      mapper->SetTransmittanceMethodToETM();
+      mapper->JitterOff();
+      mapper->SetMaximumTextureSize(runs[r].Limit);
+      mapper->SetVolumeBricking(runs[r].Bricking);
+      volume->SetMapper(mapper);
+      window->Render();
+      pictures[r] = tyndall_test::Grab(window);
+      bricked[r] = mapper->GetVolumeBricked();
+      said[r] = warnings->GetWarning() ? warnings->GetWarningMessage() : "";
+      warnings->Clear();
+      volume->SetMapper(nullptr);
+    }
+    const double asBricks = tyndall_test::PSNR(pictures[1], pictures[0]);
+    const double sampled = tyndall_test::PSNR(pictures[2], pictures[0]);
+    std::cout << "wider than the limit, as bricks: " << asBricks
+              << " dB against one texture; bricking off: " << sampled << " dB (" << said[2]
+              << ")\n";
+    Check(bricked[1] && said[1].empty() && asBricks >= 60.0 &&
+        tyndall_test::CountDrawn(pictures[0], renderer->GetBackground()) > 500,
+      "a volume 100 wide at a limit of 40: every sample as bricks, the one-texture picture");
+    Check(!bricked[2] && said[2].find("every 3rd sample") != std::string::npos && sampled < 60.0,
+      "bricking off: every 3rd sample, with the warning");
+    Check(!errors->GetError(), "wider than the limit: no error");
+    errors->Clear();
   }
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -21,7 +21,7 @@
   CheckViewer.py slice --viewer EXE --render EXE --input FILE --output-dir DIR
                        [--size W H] [--min-psnr DB]
       The slice blend mode: the viewer's plane at start and after five
-      presses of 'l' must match tyndall-render's pictures at --slice-offset
+      presses of ']' must match tyndall-render's pictures at --slice-offset
       0 and 0.1, and the two must differ.
 
   CheckViewer.py failures --viewer EXE
@@ -251,7 +251,7 @@ def sequence_mode(args):
 
 def slice_mode(args):
     """The slice blend mode: the viewer's plane at start and after five
-    presses of 'l' (--slice-offset +0.02 each) against tyndall-render's
+    presses of "]" (--slice-offset +0.02 each) against tyndall-render's
     pictures at --slice-offset 0 and 0.1; the two planes must differ."""
     failures = []
     os.makedirs(args.output_dir, exist_ok=True)
@@ -267,7 +267,7 @@ def slice_mode(args):
                       str(offset), "-o", out("render_%s.png" % key), args.input])
         if result.returncode != 0:
             return ["tyndall-render exited with %d" % result.returncode]
-    events = ["hud off", "screenshot " + out("viewer_start.png")] + ["key l"] * 5
+    events = ["hud off", "screenshot " + out("viewer_start.png")] + ["key ]"] * 5
     events += ["screenshot " + out("viewer_moved.png"), "quit"]
     result = run([args.viewer, "-s"] + size + ["--blend-mode", "slice", args.input,
                   "--events", "; ".join(events)])
@@ -286,7 +286,7 @@ def slice_mode(args):
     value = psnr(pictures["viewer_start"], pictures["viewer_moved"])
     print("viewer_start against viewer_moved: %s dB (they must differ: below 35 dB)" % value)
     if value is None or value >= 35.0:
-        failures.append("the key 'l' did not move the slice (%s dB)" % value)
+        failures.append("the key ']' did not move the slice (%s dB)" % value)
     return failures
 
 
