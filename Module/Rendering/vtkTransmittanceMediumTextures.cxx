@@ -9,6 +9,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceOffscreenDraw.h"
 #include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallErrorObserver.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTypeTraits.h"
 #include "vtk_glew.h"
@@ -77,6 +78,26 @@ bool Allocated(vtkTextureObject* texture)
 }
 
 // 2nd, 3rd, 4th, 11th, 21st ...
+// Whether the scalars reach the GPU read in place at every sample (no copy
+// of the volume first): 8- and 16-bit integers (UploadStored()), and float
+// scalars that need no cleaning (UploadFloats()).
+bool UploadsInPlace(const vtkTyndallGridMedium& medium)
+{
+  switch (medium.GetScalars()->GetDataType())
+  {
+    case VTK_UNSIGNED_CHAR:
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_SHORT:
+      return !medium.HasMissingData();
+    case VTK_FLOAT:
+      return !medium.HasMissingData() && medium.GetNumberOfInfiniteValues() == 0;
+    default:
+      return false;
+  }
+}
+
 std::string Ordinal(int n)
 {
   const int tens = n % 100, ones = n % 10;
@@ -205,7 +226,8 @@ bool vtkTransmittanceMediumTextures::Update(vtkOpenGLRenderWindow* window,
     }
     if (!this->UploadScalars(window, medium, reporter))
     {
-      if (!this->DenseFits && this->BricksAllowed && this->Bricking != BRICKING_OFF)
+      if (!this->DenseFits &&
+        ((this->BricksAllowed && this->Bricking != BRICKING_OFF) || this->WideBricksTried))
       {
         this->FailedMedium = &medium;
         this->FailedScalarsTime = medium.GetScalarsTime();
@@ -324,22 +346,33 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   }
   this->UploadSize = maxSize;
   this->WideBricks = false;
-  if (factor > 1 && this->Bricking != BRICKING_OFF && !this->UploadedBlocked)
+  this->WideBricksTried = false;
+  std::string bricksFailed;
+  if (factor > 1 && this->Bricking != BRICKING_OFF && !this->UploadedBlocked &&
+    UploadsInPlace(medium))
   {
     // Wider or taller than the limit: every sample as bricks where their
-    // atlas fits (it holds the bricks in any arrangement), not reported
-    // where it does not; then every factor-th sample.
+    // atlas fits (it holds the bricks in any arrangement; scalars read in
+    // place, no copy of the whole volume first); where it does not, or the
+    // GL cannot make it, every factor-th sample and the warning, which says
+    // why (an error here would go with a picture).
     std::copy(full, full + 3, this->Dimensions);
     this->Tiling.Plan(full, std::max({ full[0], full[1], full[2], maxSize }));
     this->Factor = 1;
     this->BricksAllowed = true;
     this->WideBricks = true;
+    this->WideBricksTried = true;
     this->DenseFits = false;
     this->Bricks.Clear();
-    if (this->UploadValues(window, medium, reporter))
+    vtkNew<vtkObject> quiet;
+    vtkNew<vtkTyndallErrorObserver> swallowed;
+    swallowed->Watch(quiet);
+    if (this->UploadValues(window, medium, quiet))
     {
       return true;
     }
+    bricksFailed = swallowed->HasErrors() ? "; as bricks: " + swallowed->GetMessages()[0]
+                                          : "; its bricks do not fit either";
     this->WideBricks = false;
     for (int a = 0; a < 3; ++a)
     {
@@ -354,10 +387,11 @@ bool vtkTransmittanceMediumTextures::UploadScalars(
   this->Bricks.Clear(); // (until this upload plans them)
   if (factor > 1)
   {
-    vtkWarningWithObjectMacro(reporter,
-      << "The volume (" << full[0] << " x " << full[1] << " x " << full[2]
-      << ") exceeds the GPU's 3-D texture size " << maxSize << " (a side of " << maxSize
-      << " or less across, slices in tiles); rendering every " << Ordinal(factor) << " sample.");
+    vtkWarningWithObjectMacro(reporter, << "The volume (" << full[0] << " x " << full[1] << " x "
+                                        << full[2] << ") exceeds the GPU's 3-D texture size "
+                                        << maxSize << " (a side of " << maxSize
+                                        << " or less across, slices in tiles" << bricksFailed
+                                        << "); rendering every " << Ordinal(factor) << " sample.");
   }
   vtkDataArray* scalars = medium.GetScalars();
   // Asked of the GL before any copy or pass over the data: a volume the

@@ -98,10 +98,13 @@ public:
    * vtkTransmittanceVolumeMapper::SetVolumeBricking()): BRICKING_OFF never,
    * BRICKING_ON when the bricks take no more than the dense texture's
    * bytes, BRICKING_AUTO (the default) when they take at most half of them;
-   * both whenever the dense texture does not fit. A volume with another
-   * texture at its resolution (validity, labels, an emission array, a
-   * coloured particle cloud's colours), tiled or downsampled, is dense. A
-   * change of those or of the setting uploads the volume again.
+   * both whenever the dense texture does not fit, and whatever they take
+   * for a volume wider or taller than the limit (read in place: 8- and
+   * 16-bit integers, clean floats), which they keep whole where their atlas
+   * fits. A volume with another texture at its resolution (validity,
+   * labels, an emission array, a coloured particle cloud's colours), tiled
+   * or downsampled, is dense. A change of those or of the setting uploads
+   * the volume again.
    */
   enum Brickings
   {
@@ -257,6 +260,7 @@ private:
   int UploadSize = 2048; // the 3-D texture size the last upload planned for
   bool BricksAllowed = false;
   bool WideBricks = false;      // every sample of a volume past the limit, as bricks or not at all
+  bool WideBricksTried = false; // the last upload tried WideBricks (its failure is remembered)
   bool UploadedBlocked = false; // another texture at the scalars' resolution (no bricks)
   bool DenseFits = true;        // whether the GL can hold the dense volume texture
   // The last upload that failed after its copy and plan (DenseFits false).

@@ -325,12 +325,15 @@ public:
    * others in an atlas, one indirection texel per brick): BRICKING_OFF (0)
    * never, BRICKING_ON (1) whenever the bricks take no more than the dense
    * texture's bytes, BRICKING_AUTO (2, the default) when they take at most
-   * half of them; both whenever the dense texture does not fit the GPU.
-   * The picture is the same either way (the atlas holds every sample each
-   * brick's filtering reads). A volume with NaN scalars or a mask, a label
-   * map, an emission array, a coloured particle cloud, or one tiled or
-   * downsampled (SetMaximumTextureSize()) is dense. A change uploads the
-   * volume again.
+   * half of them; both whenever the dense texture does not fit the GPU,
+   * and whatever they take for a volume wider or taller than the GPU's 3-D
+   * texture size (of 8- or 16-bit integers or floats without NaN or
+   * infinity), which is then drawn whole where their atlas fits instead of
+   * from every n-th sample. The picture is the same either way (the atlas
+   * holds every sample each brick's filtering reads). A volume with NaN
+   * scalars or a mask, a label map, an emission array, a coloured particle
+   * cloud, or one tiled or downsampled (SetMaximumTextureSize()) is dense.
+   * A change uploads the volume again.
    */
   enum VolumeBrickings
   {

@@ -169,17 +169,28 @@ int TestTransmittanceMapperBadInput(int, char*[])
     Check(CountForeground(window) > sphereOnly, "the volume with NaN scalars is drawn");
   }
 
-  // Larger than the GPU's 3-D texture limit along x: downsampled, with a warning.
+  // Larger than the GPU's 3-D texture limit along x: every sample as bricks
+  // (its one value in one shared slot), no warning; with bricking off,
+  // downsampled, with a warning.
   {
     auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
     const int limit = vtkTextureObject::GetMaximumTextureSize3D(glWindow);
     std::cout << "GL_MAX_3D_TEXTURE_SIZE " << limit << std::endl;
     auto image = MakeImage(limit + 5, 4, 4, 1, 4.0);
     image->SetSpacing(1.0 / limit, 0.2, 0.2);
-    expectError(
-      image, "exceeds the GPU's 3-D texture size", "an oversized volume is downsampled", true);
-    Check(!observer->GetError(), "an oversized volume is not an error");
+    observer->Clear();
+    mapper->SetInputData(image);
+    window->Render();
+    Check(!observer->GetError() && !observer->GetWarning() && mapper->GetVolumeBricked() &&
+        CountForeground(window) > sphereOnly,
+      "an oversized volume is drawn whole as bricks, without a warning");
+    mapper->SetVolumeBricking(vtkTransmittanceVolumeMapper::BRICKING_OFF);
+    expectError(image, "exceeds the GPU's 3-D texture size",
+      "an oversized volume, bricking off, is downsampled", true);
+    Check(
+      !observer->GetError() && !mapper->GetVolumeBricked(), "an oversized volume is not an error");
     Check(CountForeground(window) > sphereOnly, "the downsampled volume is drawn");
+    mapper->SetVolumeBricking(vtkTransmittanceVolumeMapper::BRICKING_AUTO);
   }
 
   // A NaN in the medium's settings (VTK's clamp macros let it through): an
