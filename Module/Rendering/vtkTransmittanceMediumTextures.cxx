@@ -77,7 +77,6 @@ bool Allocated(vtkTextureObject* texture)
   return width == static_cast<GLint>(texture->GetWidth());
 }
 
-// 2nd, 3rd, 4th, 11th, 21st ...
 // Whether the scalars reach the GPU read in place at every sample (no copy
 // of the volume first): 8- and 16-bit integers (UploadStored()), and float
 // scalars that need no cleaning (UploadFloats()).
@@ -98,6 +97,7 @@ bool UploadsInPlace(const vtkTyndallGridMedium& medium)
   }
 }
 
+// 2nd, 3rd, 4th, 11th, 21st ...
 std::string Ordinal(int n)
 {
   const int tens = n % 100, ones = n % 10;
