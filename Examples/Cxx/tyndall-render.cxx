@@ -255,6 +255,42 @@ int WriteFloatFrame(
 }
 #endif
 
+// Path tracing (--path-trace): renders still frames until the picture has
+// its samples per pixel (the first render drew the map-based frame); stops
+// early when a render fails or the picture stops growing (the tracer
+// refused the scene: its warning says why, and the map-based frame is the
+// picture). False when a render failed.
+bool RefinePaths(vtkRenderWindow* window, vtkTransmittanceVolumeMapper* mapper,
+  vtkTyndallErrorObserver* errors, bool verbose)
+{
+  if (!mapper->GetPathTracing())
+  {
+    return true;
+  }
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  const int target = mapper->GetPathTraceSamplesPerPixel();
+  int renders = 0;
+  for (int last = -1; mapper->GetLastPathTraceSamples() < target && !errors->HasErrors(); ++renders)
+  {
+    const int samples = mapper->GetLastPathTraceSamples();
+    if (renders > 0 && samples <= last)
+    {
+      break; // not path traced: the map-based frame stays
+    }
+    last = samples;
+    window->Render();
+  }
+  vtkOpenGLRenderWindow::SafeDownCast(window)->WaitForCompletion();
+  timer->StopTimer();
+  if (verbose && mapper->GetLastPathTraceSamples() > 0)
+  {
+    std::cerr << "path tracing: " << mapper->GetLastPathTraceSamples() << " samples per pixel in "
+              << renders << " frames, " << timer->GetElapsedTime() << " s\n";
+  }
+  return !errors->HasErrors();
+}
+
 // Renders the first frame (and --frames - 1 cached ones); reports errors.
 int RenderFrames(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
   vtkTyndallErrorObserver* errors, int frames, bool verbose)
@@ -280,6 +316,10 @@ int RenderFrames(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
                      ? std::to_string(mapper->GetLastMapBuildTime()) + " s"
                      : std::string("none"))
               << "; the rest: shader compilation, upload and ray casting)\n";
+  }
+  if (!RefinePaths(window, mapper, errors, verbose))
+  {
+    return Fail("path tracing failed: " + errors->GetMessages().front());
   }
   if (frames > 1)
   {
@@ -485,6 +525,7 @@ int RenderSequence(vtkRenderWindow* window, vtkTyndallSceneBuilder* builder,
     {
       window->Render();
     }
+    RefinePaths(window, mapper, errors, false);
     vtkOpenGLRenderWindow::SafeDownCast(window)->WaitForCompletion();
     timer->StopTimer();
     const double render = timer->GetElapsedTime();

@@ -405,6 +405,14 @@ private:
     this->Refine = averaged > 0 && grew &&
       averaged < static_cast<int>(this->Options->GetNumber("detail-frames"));
     this->LastAveraged = averaged;
+    // Path tracing: the map-based frame after a move (0 samples), then the
+    // paths up to --path-trace.
+    const int samples = this->Mapper->GetLastPathTraceSamples();
+    const bool traced = requested || samples > this->LastPathSamples;
+    this->Refine = this->Refine ||
+      (this->Mapper->GetPathTracing() && traced &&
+        samples < this->Mapper->GetPathTraceSamplesPerPixel());
+    this->LastPathSamples = samples;
   }
 
   // A time series (--sequence): the frame shown, playback.
@@ -447,6 +455,7 @@ private:
   // Sampled detail: whether the next frame only refines the still view, and
   // the frames the average held after the last frame.
   bool Refine = false;
+  int LastPathSamples = 0;
   int LastAveraged = 0;
   vtkParticipatingMediumProperty* Medium = nullptr; // the builder's
   vtkLight* Sun = nullptr;                          // the builder's key light
@@ -813,6 +822,11 @@ void Viewer::UpdateText()
   if (this->Mapper->GetLastImageReduction() > 1)
   {
     os << " | 1/" << this->Mapper->GetLastImageReduction() << " size";
+  }
+  if (this->Mapper->GetPathTracing())
+  {
+    os << " | paths " << this->Mapper->GetLastPathTraceSamples() << " / "
+       << this->Mapper->GetPathTraceSamplesPerPixel() << " spp";
   }
   this->Text->SetInput(os.str().c_str());
   this->Text->SetVisibility(this->ShowText ? 1 : 0);

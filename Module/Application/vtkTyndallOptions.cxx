@@ -237,6 +237,16 @@ const Spec kOptions[] = {
     "the volume's scalars on the GPU as the 8^3 bricks that vary, bricks of one value shared "
     "(sparse data: an OpenVDB cache, air around a CT): auto when that takes at most half the "
     "dense texture's bytes; same picture" },
+  { "path-trace", "", Kind::Integer, 0, 1000000, false, "", "SPP", "0", "Scattering", Both,
+    "0: off; SPP > 0: the cinematic mode, volumetric path tracing on the GPU (full multiple "
+    "scattering) refining a still picture up to SPP samples per pixel (tyndall-render renders "
+    "until it has them; the viewer refines a still view and shows the map-based frame while "
+    "anything moves)" },
+  { "path-bounces", "", Kind::Integer, 1, 1000, false, "", "N", "8", "Scattering", Both,
+    "with --path-trace: the most scattering events of a path (1: single scattering)" },
+  { "path-shadows", "", Kind::Choice, 0, 0, false, "maps|tracked", "M", "maps", "Scattering", Both,
+    "with --path-trace: the light's transmittance at a path's collisions read from the "
+    "transmittance maps (fast) or ratio tracked (unbiased)" },
   { "detail", "", Kind::Flag, 0, 0, false, "", "", "", "Procedural detail", Both,
     "multiply the medium's extinction by cosine noise evaluated in the shader, never voxelised "
     "(the volume becomes the coarse shape); light transmittance through it is exact with "
@@ -833,6 +843,10 @@ public:
       return input.empty()
         ? "--sequence needs an input (numbered files or a 4-D file)"
         : "--sequence renders frames FIRST to LAST into PNGs: give no --frame, --frames or --exr";
+    }
+    if ((set("path-bounces") || set("path-shadows")) && !set("path-trace"))
+    {
+      return "--path-bounces and --path-shadows need --path-trace";
     }
     if (set("skip-bad-frames") && !set("sequence"))
     {

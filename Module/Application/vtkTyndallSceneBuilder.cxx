@@ -942,6 +942,14 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
     "--bricking's choices are the mapper's order");
   mapper->SetVolumeBricking(o->GetChoice("bricking"));
   mapper->SetDetailSamplesPerPixel(static_cast<int>(o->GetNumber("detail-samples")));
+  const int pathSamples = static_cast<int>(o->GetNumber("path-trace"));
+  mapper->SetPathTracing(pathSamples > 0);
+  mapper->SetPathTraceSamplesPerPixel(std::max(pathSamples, 1));
+  mapper->SetPathTraceMaximumBounces(static_cast<int>(o->GetNumber("path-bounces")));
+  static_assert(vtkTransmittanceVolumeMapper::PATH_SHADOWS_FROM_MAPS == 0 &&
+      vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED == 1,
+    "--path-shadows's choices are the mapper's order");
+  mapper->SetPathTraceShadows(o->GetChoice("path-shadows"));
 }
 
 //------------------------------------------------------------------------------

@@ -216,6 +216,18 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittanceAccumulationPass::CompositeHistory(
+  const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  if (this->HistoryFrames <= 0 || !this->History)
+  {
+    vtkErrorWithObjectMacro(reporter, << "There is no running average to draw.");
+    return false;
+  }
+  return this->Composite(frame, this->History, nullptr, false, reporter);
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& frame,
   vtkTextureObject* image, vtkTextureObject* opacity, bool upscaled, vtkObject* reporter)
 {

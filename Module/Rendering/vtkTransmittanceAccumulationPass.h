@@ -89,6 +89,15 @@ public:
   /// Frames in the running average after the last Render() (0: no history kept).
   int GetHistoryFrames() const { return this->HistoryFrames; }
 
+  /**
+   * Composites the running average as it stands over the renderer's
+   * viewport, adding no frame (a progressive picture that has all the
+   * samples it was asked for); its size must be the viewport's. False
+   * (with an error through `reporter`) when there is no average or the
+   * compositing program does not compile.
+   */
+  bool CompositeHistory(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:

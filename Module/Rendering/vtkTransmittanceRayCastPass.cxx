@@ -86,7 +86,7 @@ bool vtkTransmittanceRayCastPass::Render(
   }
   vtkTransmittanceScopedTextures textures(
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
-  this->SetUniforms(frame, inputs, program);
+  SetUniforms(frame, inputs, program);
   int viewport[4];
   frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   const int width = (viewport[2] + reduction - 1) / reduction;
@@ -215,7 +215,7 @@ void vtkTransmittanceRayCastPass::DrawDirect(
 
 //------------------------------------------------------------------------------
 void vtkTransmittanceRayCastPass::SetUniforms(
-  const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const
+  const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program)
 {
   frame.SetMediumUniforms(program);
   if (inputs.Cache)

@@ -142,6 +142,23 @@ public:
    */
   static int DetailSamplesFor(const vtkTransmittanceFrame& frame, int requested);
 
+  /**
+   * The camera rays' shader variant for `inputs` (the maps, cache and
+   * occluders they read; the medium's colour switches, octaves, shading),
+   * accumulating or not; the path tracer (vtkTransmittancePathTracePass)
+   * takes it too.
+   */
+  static vtkTransmittanceShaderSource::Variant GetVariant(
+    const vtkTransmittanceFrame& frame, const Inputs& inputs, bool accumulate);
+
+  /**
+   * Sets the camera rays' uniforms but the camera's and the step's: the
+   * medium's, the maps' or cache's, the occluders', the integrator's and
+   * the lights'.
+   */
+  static void SetUniforms(
+    const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program);
+
 protected:
   vtkTransmittanceRayCastPass();
   ~vtkTransmittanceRayCastPass() override;
@@ -150,11 +167,7 @@ private:
   vtkTransmittanceRayCastPass(const vtkTransmittanceRayCastPass&) = delete;
   void operator=(const vtkTransmittanceRayCastPass&) = delete;
 
-  void SetUniforms(
-    const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program) const;
   static int StepsPerPass(const vtkTransmittanceFrame& frame);
-  static vtkTransmittanceShaderSource::Variant GetVariant(
-    const vtkTransmittanceFrame& frame, const Inputs& inputs, bool accumulate);
   void DrawDirect(const vtkTransmittanceFrame& frame, vtkShaderProgram* program, int steps);
 
   vtkTransmittanceShaderQuad Quad;

@@ -21,10 +21,12 @@
 #include "vtkTransmittanceLightsFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
+#include "vtkTransmittancePathTraceFS.h"
 #include "vtkTransmittancePeelCompositeFS.h"
 #include "vtkTransmittancePeelRangesFS.h"
 #include "vtkTransmittanceProjectionFS.h"
 #include "vtkTransmittanceRayCastFS.h"
+#include "vtkTransmittanceRayCastMainFS.h"
 #include "vtkTransmittanceSplatFS.h"
 #include "vtkTransmittanceSplatVS.h"
 #include "vtkTransmittanceSurfaceFS.h"
@@ -216,10 +218,17 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
       source += vtkTransmittanceLightsFS;
       source += vtkTransmittanceProjectionFS;
       break;
+    case PATH_TRACE:
+      source += vtkTransmittanceCameraRayFS;
+      source += vtkTransmittanceLightsFS;
+      source += vtkTransmittanceRayCastFS;
+      source += vtkTransmittancePathTraceFS;
+      break;
     default:
       source += vtkTransmittanceCameraRayFS;
       source += vtkTransmittanceLightsFS;
       source += vtkTransmittanceRayCastFS;
+      source += vtkTransmittanceRayCastMainFS;
       break;
   }
   vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(variant));

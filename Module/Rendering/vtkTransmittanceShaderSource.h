@@ -72,6 +72,9 @@
  *
  * The passes that march camera rays (RAY_CAST, PROJECTION) have
  * vtkTransmittanceCameraRayFS.glsl (the pixel's ray) before their own file.
+ * RAY_CAST is vtkTransmittanceRayCastFS.glsl's functions and
+ * vtkTransmittanceRayCastMainFS.glsl's march; PATH_TRACE the same
+ * functions and vtkTransmittancePathTraceFS.glsl's paths.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -91,11 +94,12 @@ public:
     MAP_BUILD,
     OCCLUSION,
     RAY_CAST,
-    LIGHT_CACHE,   // with the map variant of the camera rays' (MapCoefficients ...)
-    COMPOSITE,     // alone: it shares nothing with the others
-    PROJECTION,    // VTK's projection blend modes (Variant::Projection)
-    PEEL_RANGES,   // the depth ranges of a depth-peeling stage (vtkTransmittancePeelingPass)
-    PEEL_COMPOSITE // the ray-cast images into a depth-peeling stage's targets
+    LIGHT_CACHE,    // with the map variant of the camera rays' (MapCoefficients ...)
+    COMPOSITE,      // alone: it shares nothing with the others
+    PROJECTION,     // VTK's projection blend modes (Variant::Projection)
+    PEEL_RANGES,    // the depth ranges of a depth-peeling stage (vtkTransmittancePeelingPass)
+    PEEL_COMPOSITE, // the ray-cast images into a depth-peeling stage's targets
+    PATH_TRACE      // progressive path tracing (vtkTransmittancePathTracePass), RAY_CAST's variant
   };
 
   /// The compile-time variants of the shaders.

@@ -27,6 +27,7 @@
 #include "vtkTransmittanceMediumAdapters.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceOcclusionPass.h"
+#include "vtkTransmittancePathTracePass.h"
 #include "vtkTransmittancePeelingPass.h"
 #include "vtkTransmittanceProjectionPass.h"
 #include "vtkTransmittanceRayCastPass.h"
@@ -42,6 +43,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkTransmittanceVolumeMapper);
@@ -261,6 +263,7 @@ public:
   vtkNew<vtkTransmittanceLightCachePass> Cache;
   vtkNew<vtkTransmittanceDepthPass> Depth;
   vtkNew<vtkTransmittanceRayCastPass> RayCast;
+  vtkNew<vtkTransmittancePathTracePass> PathTracer;
   vtkNew<vtkTransmittanceProjectionPass> Projection;
   // The window the resources live in (weak: it may go before the mapper).
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
@@ -291,6 +294,28 @@ public:
     vtkVolume* volume, const vtkTransmittanceRayCastPass::Inputs& inputs) const;
   void UpdateStillFrame(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer,
     vtkVolume* volume, vtkTransmittanceRayCastPass::Inputs& inputs);
+  /// Whether two still-frame keys are equal (within a move no pixel shows).
+  static bool SameStillKey(const std::vector<double>& a, const std::vector<double>& b);
+
+  // Path tracing (PathTracing on): the key of the picture the running mean
+  // belongs to (empty: the next frame is the map-based one), the frames in
+  // it, the samples per pixel of the last picture (0: the map-based frame)
+  // and the refusal last said (vtkTransmittancePathTracePass::Refusal()).
+  std::vector<double> PathKey;
+  int PathFrames = 0;
+  int PathSamples = 0;
+  std::string PathRefusal;
+  /**
+   * Draws the frame of path-tracing mode and returns true, or returns
+   * false (the mode is off, or refused: said once) and draws nothing: the
+   * map-based frame when the picture's key changed since the last frame
+   * (something moves), else a frame of paths added to the running mean
+   * (or the mean redrawn once it has PathTraceSamplesPerPixel). Sets Complete.
+   */
+  bool TracePaths(vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume,
+    const vtkTransmittanceRayCastPass::Inputs& inputs, bool peeling);
+  /// Whether the frame cannot be path traced; says why once (a warning).
+  bool RefusePaths(vtkTransmittanceVolumeMapper* self, bool peeling);
   void ChooseDetail(vtkRenderer* renderer, vtkVolume* volume, bool adjust, int maximum,
     vtkTransmittanceRayCastPass::Inputs& inputs) const;
   bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter);
@@ -472,16 +497,88 @@ void vtkTransmittanceVolumeMapper::vtkInternals::UpdateStillFrame(
     return;
   }
   const std::vector<double> key = this->StillFrameKey(self, renderer, volume, inputs);
+  inputs.HistoryFrames =
+    SameStillKey(key, this->StillKey) ? this->RayCast->GetLastHistoryFrames() : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::SameStillKey(
+  const std::vector<double>& a, const std::vector<double>& b)
+{
   // The camera's matrix is recomputed each frame and differs in its last
   // float bits between renders (measured 3e-8 relative, alternating):
   // equal within 1e-6, relative, a move no pixel shows.
-  bool same = key.size() == this->StillKey.size();
-  for (size_t i = 0; same && i < key.size(); ++i)
+  bool same = a.size() == b.size();
+  for (size_t i = 0; same && i < a.size(); ++i)
   {
-    const double a = key[i], b = this->StillKey[i];
-    same = std::abs(a - b) <= 1e-6 * std::max({ 1.0, std::abs(a), std::abs(b) });
+    same = std::abs(a[i] - b[i]) <= 1e-6 * std::max({ 1.0, std::abs(a[i]), std::abs(b[i]) });
   }
-  inputs.HistoryFrames = same ? this->RayCast->GetLastHistoryFrames() : 0;
+  return same;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::RefusePaths(
+  vtkTransmittanceVolumeMapper* self, bool peeling)
+{
+  const std::string refusal = vtkTransmittancePathTracePass::Refusal(this->Frame, peeling);
+  if (!refusal.empty() && refusal != this->PathRefusal)
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Path tracing: " << refusal << "; the map-based frame is drawn instead.");
+  }
+  this->PathRefusal = refusal;
+  return !refusal.empty();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolumeMapper* self,
+  vtkRenderer* renderer, vtkVolume* volume, const vtkTransmittanceRayCastPass::Inputs& inputs,
+  bool peeling)
+{
+  this->PathSamples = 0;
+  if (!self->GetPathTracing() || this->RefusePaths(self, peeling))
+  {
+    this->PathKey.clear();
+    return false;
+  }
+  this->StillKey.clear();
+  // The paths' picture is full size, whatever the interactive reduction.
+  vtkTransmittanceRayCastPass::Inputs still = inputs;
+  still.Reduction = 1;
+  still.StepScale = 1.0;
+  if (!SameStillKey(this->StillFrameKey(self, renderer, volume, still), this->PathKey))
+  {
+    // Something moved: the map-based frame; the paths start at the next still one.
+    this->PathKey.clear();
+    this->PathFrames = 0;
+    this->Complete = this->CastRays(inputs, self->InteractiveAdjustment, self);
+    if (this->Complete)
+    {
+      this->PathKey = this->StillFrameKey(self, renderer, volume, still);
+    }
+    return true;
+  }
+  vtkTransmittancePathTracePass::Settings settings;
+  settings.SamplesPerFrame = self->GetPathTraceSamplesPerFrame();
+  settings.MaximumBounces = self->GetPathTraceMaximumBounces();
+  settings.TrackedShadows = self->GetPathTraceShadows() == PATH_SHADOWS_TRACKED;
+  const int perFrame = vtkTransmittancePathTracePass::SamplesFor(this->Frame, settings);
+  if (this->PathFrames > 0 && this->PathFrames * perFrame >= self->GetPathTraceSamplesPerPixel())
+  {
+    this->Complete = this->PathTracer->Redraw(this->Frame, self);
+  }
+  else
+  {
+    this->Complete = this->PathTracer->Render(this->Frame, still, settings, this->PathFrames, self);
+    this->PathFrames = this->Complete ? this->PathTracer->GetHistoryFrames() : 0;
+  }
+  this->PathKey.clear();
+  if (this->Complete)
+  {
+    this->PathSamples = this->PathFrames * perFrame;
+    this->PathKey = this->StillFrameKey(self, renderer, volume, still);
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -630,6 +727,9 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.Cache->ReleaseGraphicsResources(window);
   in.Depth->ReleaseGraphicsResources(window);
   in.RayCast->ReleaseGraphicsResources(window);
+  in.PathTracer->ReleaseGraphicsResources(window);
+  in.PathKey.clear();
+  in.PathFrames = 0;
   in.Projection->ReleaseGraphicsResources(window);
   in.Peeling->ReleaseGraphicsResources(window);
   in.Window = nullptr;
@@ -829,6 +929,12 @@ void vtkTransmittanceVolumeMapper::vtkInternals::RenderVolume(vtkTransmittanceVo
     this->Lit = true; // no map: a projection is unshadowed (its lights' method None)
     this->Projected = true;
     this->StillKey.clear();
+    this->PathKey.clear();
+    this->PathSamples = 0;
+    if (self->GetPathTracing())
+    {
+      this->RefusePaths(self, peel != nullptr);
+    }
     this->WarnDistributedProjection(self);
     this->Complete = this->Project(self, volume, self->InteractiveAdjustment, peel);
     return;
@@ -869,6 +975,10 @@ void vtkTransmittanceVolumeMapper::vtkInternals::RenderVolume(vtkTransmittanceVo
   this->ChooseDetail(
     renderer, volume, self->InteractiveAdjustment, self->MaximumImageReduction, inputs);
   this->WarnChromaticPeeling(self, peel != nullptr);
+  if (this->TracePaths(self, renderer, volume, inputs, peel != nullptr))
+  {
+    return;
+  }
   if (peel)
   {
     this->StillKey.clear();
@@ -1052,6 +1162,13 @@ int vtkTransmittanceVolumeMapper::GetAccumulatedFrames()
 void vtkTransmittanceVolumeMapper::ResetAccumulation()
 {
   this->Internals->StillKey.clear();
+  this->Internals->PathKey.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetLastPathTraceSamples()
+{
+  return this->Internals->Complete ? this->Internals->PathSamples : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -1165,6 +1282,12 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "VolumeBricking: " << this->VolumeBricking << "\n";
   os << indent << "DetailSamplesPerPixel: " << this->DetailSamplesPerPixel << "\n";
+  os << indent << "PathTracing: " << (this->PathTracing ? "On" : "Off") << "\n";
+  os << indent << "PathTraceSamplesPerPixel: " << this->PathTraceSamplesPerPixel << "\n";
+  os << indent << "PathTraceSamplesPerFrame: " << this->PathTraceSamplesPerFrame << "\n";
+  os << indent << "PathTraceMaximumBounces: " << this->PathTraceMaximumBounces << "\n";
+  os << indent << "PathTraceShadows: "
+     << (this->PathTraceShadows == PATH_SHADOWS_TRACKED ? "Tracked" : "FromMaps") << "\n";
   os << indent << "TransmittanceCache: " << (this->TransmittanceCache ? "On" : "Off") << "\n";
   os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";
   os << indent << "TransmittanceCacheBuildCount: " << this->GetTransmittanceCacheBuildCount()

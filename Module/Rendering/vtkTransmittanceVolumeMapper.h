@@ -383,6 +383,94 @@ public:
    */
   int GetLastDetailSamplesPerPixel();
 
+  ///@{
+  /**
+   * Path tracing, the cinematic mode (default off): a still picture is
+   * refined by volumetric path tracing on the GPU, full multiple
+   * scattering, until it has PathTraceSamplesPerPixel samples; while the
+   * camera, the lights, the data or any setting change, the map-based
+   * frame is drawn (never a noisy one), and the paths start anew at the
+   * first Render() after they stop (the same key as DetailSamplesPerPixel's
+   * average; ResetAccumulation()). An application renders again while
+   * GetLastPathTraceSamples() is below PathTraceSamplesPerPixel (a timer, or
+   * a loop: tyndall-render --path-trace). The paths are
+   * vtkVolumetricPathTracer's estimator (DELTA_TRACKING) on the GPU:
+   * delta tracking against the medium's majorant, next-event estimation
+   * towards every light at every collision, Henyey-Greenstein scattering,
+   * Russian roulette, the pixel's centre, the ambient term and the
+   * table's emission at every collision; the property's octaves are not
+   * used (the paths scatter for real). The picture is unbiased but noisy;
+   * its noise falls as 1 / sqrt(samples).
+   *
+   * Not path traced yet, each said once in a warning, the map-based frame
+   * drawn instead: a coloured extinction, an emission array, several
+   * volumes sharing their shadows (guests), VTK's depth peeling for
+   * volumes; and never (they are not media; the CPU tracer refuses them
+   * too): the projection and isosurface blend modes, a plain property's
+   * gradient shading (Shade on).
+   */
+  vtkSetMacro(PathTracing, bool);
+  vtkGetMacro(PathTracing, bool);
+  vtkBooleanMacro(PathTracing, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The samples per pixel a path-traced picture converges to, in [1,
+   * 1000000]; default 1024. Frames after it redraw the mean.
+   */
+  vtkSetClampMacro(PathTraceSamplesPerPixel, int, 1, 1000000);
+  vtkGetMacro(PathTraceSamplesPerPixel, int);
+  ///@}
+
+  ///@{
+  /**
+   * Paths per pixel one Render() traces, in [1, 64]; default 4. Fewer
+   * where a path's bound on loop iterations (the medium's optical depth
+   * across its box) would pass a fragment's budget (the ray-cast pass's
+   * IterationBudget).
+   */
+  vtkSetClampMacro(PathTraceSamplesPerFrame, int, 1, 64);
+  vtkGetMacro(PathTraceSamplesPerFrame, int);
+  ///@}
+
+  ///@{
+  /**
+   * The most scattering events of a path, in [1, 1000]; default 8 (the
+   * CPU tracer's). 1 is single scattering.
+   */
+  vtkSetClampMacro(PathTraceMaximumBounces, int, 1, 1000);
+  vtkGetMacro(PathTraceMaximumBounces, int);
+  ///@}
+
+  /// How a path's next-event estimation sees the light's transmittance.
+  enum PathTraceShadowModes
+  {
+    /// From the frame's maps (TransmittanceMethod; brute force marches): the fast default.
+    PATH_SHADOWS_FROM_MAPS = 0,
+    /// Ratio tracking to the light against the majorant: unbiased, the CPU tracer's.
+    PATH_SHADOWS_TRACKED = 1
+  };
+
+  ///@{
+  /**
+   * How paths see the lights' transmittance: PATH_SHADOWS_FROM_MAPS
+   * (default) or PATH_SHADOWS_TRACKED. A light whose method is NONE is
+   * unshadowed either way.
+   */
+  vtkSetClampMacro(PathTraceShadows, int, PATH_SHADOWS_FROM_MAPS, PATH_SHADOWS_TRACKED);
+  vtkGetMacro(PathTraceShadows, int);
+  void SetPathTraceShadowsToFromMaps() { this->SetPathTraceShadows(PATH_SHADOWS_FROM_MAPS); }
+  void SetPathTraceShadowsToTracked() { this->SetPathTraceShadows(PATH_SHADOWS_TRACKED); }
+  ///@}
+
+  /**
+   * The samples per pixel in the last Render()'s picture: 0 when it was
+   * the map-based frame (path tracing off or refused, something moved, or
+   * nothing rendered).
+   */
+  int GetLastPathTraceSamples();
+
   /**
    * The waves of procedural detail the last Render()'s camera samples
    * evaluated: with the footprint filter
@@ -581,6 +669,11 @@ protected:
   int MaximumTextureSize = 0;
   int VolumeBricking = BRICKING_AUTO;
   int DetailSamplesPerPixel = 0;
+  bool PathTracing = false;
+  int PathTraceSamplesPerPixel = 1024;
+  int PathTraceSamplesPerFrame = 4;
+  int PathTraceMaximumBounces = 8;
+  int PathTraceShadows = PATH_SHADOWS_FROM_MAPS;
 
 private:
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;

@@ -14,6 +14,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperBadInput.cxx
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOctaves.cxx
+  TestTransmittanceMapperPathTrace.cxx
   TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperChromatic.cxx

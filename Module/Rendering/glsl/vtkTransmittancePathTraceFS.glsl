@@ -1,0 +1,243 @@
+// Tyndall: progressive volumetric path tracing (appended after
+// vtkTransmittanceRayCastFS.glsl, whose camera samples, lights and light
+// transmittance it calls; vtkTransmittancePathTracePass). Each pixel
+// traces pathSamples paths from its camera ray (the pixel's centre, as the
+// CPU tracer's): free flights by delta tracking against one majorant,
+// next-event estimation towards every light at every collision (the light
+// transmittance from the frame's maps, lightTransmittance(), or ratio
+// tracked: pathTrackedShadows), Henyey-Greenstein scattering, a bounce
+// limit and Russian roulette. It writes the paths' mean radiance
+// (premultiplied) and 1 - the mean of their first flights' escapes (an
+// unbiased estimate of the view transmittance); the still frames' images
+// are averaged by vtkTransmittanceAccumulationPass. CPU twin:
+// vtkVolumetricPathTracer with DELTA_TRACKING (the same estimator, term by
+// term; Documentation/rendering-model.md, "Path tracing").
+//
+// Bounded work: every loop trip counts against pathBudget; a path still
+// running when the budget is spent is kept as far as it got (its later
+// bounces lost) and the pixel traces no more paths this frame.
+uniform int pathFrame;          // the still frame's index in the mean: picks its random numbers
+uniform int pathSamples;        // paths per pixel in this frame
+uniform int pathBounces;        // the most scattering events of a path
+uniform float pathMajorant;     // an upper bound of the extinction (per world unit)
+uniform int pathTrackedShadows; // 1: light transmittance ratio tracked; 0: lightTransmittance()
+uniform int pathBudget;         // loop trips one fragment may run
+
+int tyndallPathIterations = 0;
+uint tyndallPathState = 0u;
+
+// The PCG hash (O'Neill's output permutation of one LCG step; Jarzynski
+// and Olano, 2020): the random numbers' generator and the seeds' mixer.
+uint tyndallPcg(uint v)
+{
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
+// A uniform number in [0, 1) (24 bits).
+float tyndallRandom()
+{
+  tyndallPathState = tyndallPcg(tyndallPathState);
+  return float(tyndallPathState >> 8u) * (1.0 / 16777216.0);
+}
+
+// A loop trip: false once the fragment's budget is spent.
+bool tyndallPathStep()
+{
+  ++tyndallPathIterations;
+  return tyndallPathIterations <= pathBudget;
+}
+
+bool tyndallPathSpent()
+{
+  return tyndallPathIterations > pathBudget;
+}
+
+// Delta tracking from o along w over (t0, t1) against pathMajorant: true
+// at a real collision, at t, with the medium's camera sample there; false
+// when the flight leaves the segment or the budget is spent.
+bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out float t, out TyndallCameraSample s)
+{
+  t = t0;
+  s = tyndallCameraSample(o, o, w, 0.0);
+  for (int i = 0; i < pathBudget; ++i)
+  {
+    if (!tyndallPathStep())
+    {
+      return false;
+    }
+    t -= log(1.0 - tyndallRandom()) / pathMajorant;
+    if (!(t < t1))
+    {
+      return false;
+    }
+    vec3 x = o + t * w;
+    s = tyndallCameraSample(x, x, w, 0.0);
+    if (tyndallRandom() * pathMajorant < s.Sigma)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Ratio tracking from x along dir over (0, tEnd): an unbiased estimate of
+// the transmittance, with Russian roulette (survival 1/2) below 0.1 (the
+// CPU tracer's RatioTrack()).
+float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
+{
+  float T = 1.0;
+  float t = 0.0;
+  for (int i = 0; i < pathBudget; ++i)
+  {
+    if (!tyndallPathStep())
+    {
+      break;
+    }
+    t -= log(1.0 - tyndallRandom()) / pathMajorant;
+    if (!(t < tEnd))
+    {
+      break;
+    }
+    T *= max(0.0, 1.0 - tyndallSceneExtinction(x + t * dir, dir, 0.0) / pathMajorant);
+    if (T < 0.1)
+    {
+      if (T <= 0.0 || tyndallRandom() < 0.5)
+      {
+        return 0.0;
+      }
+      T *= 2.0;
+    }
+  }
+  return T;
+}
+
+// The light scattered at x against the path's direction w, per unit of
+// scattering: ambient + sum_l E_l p(mu_l) T_l (next-event estimation),
+// T_l from the frame's method (the maps, a brute-force march or none) or
+// ratio tracked to the light or the box's side (a light whose method is
+// None is unshadowed either way).
+vec3 tyndallPathInScattering(vec3 x, vec3 w)
+{
+  if (pathTrackedShadows == 0)
+  {
+    return inScattering(x, w, vec3(1.0));
+  }
+  vec3 sum = vec3(ambient);
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    vec3 toLight;
+    float distance;
+    vec3 E = lightIrradiance[l];
+    if (!tyndallLightAt(l, x, E, toLight, distance) || occluded(l, x))
+    {
+      continue;
+    }
+    float T = 1.0;
+    if (lightMethod[l] != TYNDALL_NONE)
+    {
+      T = tyndallRatioTrack(x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance));
+    }
+    sum += E * tyndallPhaseHG(anisotropy, dot(toLight, w)) * T;
+  }
+  return sum;
+}
+
+// A direction drawn from the Henyey-Greenstein phase function of
+// asymmetry g about w (the CPU tracer's SampleHenyeyGreenstein()).
+vec3 tyndallSampleHG(vec3 w, float g)
+{
+  g = clamp(g, -0.99, 0.99);
+  float u1 = tyndallRandom();
+  float u2 = tyndallRandom();
+  float mu = 1.0 - 2.0 * u1;
+  if (abs(g) >= 1e-5)
+  {
+    float s = (1.0 - g * g) / (1.0 - g + 2.0 * g * u1);
+    mu = (1.0 + g * g - s * s) / (2.0 * g);
+  }
+  mu = clamp(mu, -1.0, 1.0);
+  float sinTheta = sqrt(max(0.0, 1.0 - mu * mu));
+  float phi = 2.0 * TYNDALL_PI * u2;
+  vec3 a = abs(w.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 u = normalize(cross(w, a));
+  vec3 v = cross(w, u);
+  return normalize(sinTheta * cos(phi) * u + sinTheta * sin(phi) * v + mu * w);
+}
+
+// One path from the camera ray p0 + t w, t in [tNear, tFar]: adds its
+// radiance to `radiance` and its first flight's escape (1 or 0) to
+// `escaped`; false when the budget ran out on the way (the path is kept as
+// far as it got; a first flight cut short counts as an escape).
+bool tyndallTracePath(
+  vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radiance, inout float escaped)
+{
+  vec3 beta = vec3(1.0);
+  vec3 o = p0;
+  float t0 = tNear;
+  float t1 = tFar;
+  for (int bounce = 0; bounce < pathBounces; ++bounce)
+  {
+    float t;
+    TyndallCameraSample s;
+    if (!tyndallFreeFlight(o, w, t0, t1, t, s))
+    {
+      escaped += bounce == 0 ? 1.0 : 0.0;
+      break;
+    }
+    if (scatteringModel == 0)
+    {
+      radiance += beta * s.Color; // emission-absorption: the colour, and the path ends
+      break;
+    }
+    vec3 x = o + t * w;
+    radiance += beta * (s.Color * tyndallPathInScattering(x, w) + tyndallSampleEmission(s));
+    beta *= s.Color;
+    float q = max(beta.r, max(beta.g, beta.b));
+    if (bounce + 1 >= pathBounces || !(q > 0.0) || tyndallPathSpent())
+    {
+      break;
+    }
+    if (q < 0.25)
+    {
+      if (tyndallRandom() >= q)
+      {
+        break;
+      }
+      beta /= q;
+    }
+    w = tyndallSampleHG(w, anisotropy);
+    o = x;
+    t0 = 0.0;
+    t1 = tyndallIntersectCameraBox(x, w).y;
+  }
+  return !tyndallPathSpent();
+}
+
+void main()
+{
+  vec3 p0, w;
+  float tNear, tFar;
+  tyndallCameraRay(p0, w, tNear, tFar);
+  if (!(tNear < tFar))
+  {
+    discard; // the image was cleared: no radiance, transmittance 1
+  }
+  uvec2 pixel = uvec2(gl_FragCoord.xy);
+  vec3 radiance = vec3(0.0);
+  float escaped = 0.0;
+  int traced = 0;
+  for (int k = 0; k < pathSamples; ++k)
+  {
+    tyndallPathState =
+      tyndallPcg(pixel.x + tyndallPcg(pixel.y + tyndallPcg(uint(pathFrame * pathSamples + k))));
+    ++traced;
+    if (!tyndallTracePath(p0, w, tNear, tFar, radiance, escaped))
+    {
+      break;
+    }
+  }
+  float n = float(traced);
+  gl_FragData[0] = vec4(radiance / n, 1.0 - escaped / n);
+}

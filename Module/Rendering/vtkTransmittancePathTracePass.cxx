@@ -1,0 +1,160 @@
+#include "vtkTransmittancePathTracePass.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTransmittanceFrame.h"
+#include "vtkTransmittanceMapMath.h"
+#include "vtkTransmittanceMediumAdapter.h"
+#include "vtkTransmittanceScopedTextures.h"
+#include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallGridMedium.h"
+#include "vtkTyndallMedium.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkTransmittancePathTracePass);
+
+namespace
+{
+// A path's loop trips are bounded as if it scattered this many times (the
+// bound of each flight is already the whole box at the majorant).
+constexpr double kBoundedBounces = 4.0;
+// Brute-force light marches take this many samples per loop trip
+// (vtkTransmittanceRayCastFS.glsl).
+constexpr double kBruteForceUnroll = 8.0;
+// The majorant is raised by this factor: the GPU's single-precision
+// extinction may round above the CPU's double bound.
+constexpr double kMajorantMargin = 1.0 + 1e-4;
+}
+
+//------------------------------------------------------------------------------
+vtkTransmittancePathTracePass::vtkTransmittancePathTracePass() = default;
+vtkTransmittancePathTracePass::~vtkTransmittancePathTracePass() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkTransmittancePathTracePass::Refusal(const vtkTransmittanceFrame& frame, bool peeling)
+{
+  const vtkTyndallGridMedium& medium = *frame.Medium;
+  if (medium.GetProjection().Enabled())
+  {
+    return "a projection blend mode is not a medium";
+  }
+  if (medium.GetIsosurfaces().Enabled())
+  {
+    return "the isosurface blend mode draws surfaces, not a medium";
+  }
+  if (medium.GetShading().Enabled())
+  {
+    return "gradient shading (Shade on) is not a medium";
+  }
+  if (medium.GetParameters().GetChromatic())
+  {
+    return "a coloured extinction (ExtinctionColor) is not path traced yet";
+  }
+  if (medium.GetEmissionFromArray())
+  {
+    return "emission from an array (EmissionArrayName) is not path traced yet";
+  }
+  if (!frame.Guests.empty())
+  {
+    return "other volumes in the renderer (their shadows, SceneShadows) are not path traced yet";
+  }
+  if (peeling)
+  {
+    return "VTK's depth peeling for volumes draws the volume in parts, which one mean cannot "
+           "average";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittancePathTracePass::Majorant(const vtkTransmittanceFrame& frame)
+{
+  const double majorant = frame.OwnMedium->GetMajorant() * kMajorantMargin;
+  return std::isfinite(majorant) && majorant > 1e-30 ? majorant : 1e-30;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittancePathTracePass::SamplesFor(
+  const vtkTransmittanceFrame& frame, const Settings& settings)
+{
+  const double flight = 2.0 + Majorant(frame) * frame.Diagonal;
+  const double march = std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll);
+  double collision = 1.0;
+  for (const vtkTransmittanceFrame::Light& light : frame.Lights)
+  {
+    collision += 1.0;
+    if (settings.TrackedShadows)
+    {
+      collision += flight;
+    }
+    else if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
+    {
+      collision += march;
+    }
+  }
+  const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
+  const double path = bounces * (flight + collision);
+  const double fit = 0.5 * vtkTransmittanceRayCastPass::IterationBudget / path;
+  return std::max(1, std::min(settings.SamplesPerFrame, static_cast<int>(fit)));
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
+  const vtkTransmittanceRayCastPass::Inputs& inputs, const Settings& settings, int historyFrames,
+  vtkObject* reporter)
+{
+  vtkTransmittanceShaderSource::Variant variant =
+    vtkTransmittanceRayCastPass::GetVariant(frame, inputs, false);
+  variant.Octaves = 1;                   // the paths scatter for real
+  variant.DetailCameraGroups = -1;       // every wave: no pixel footprint filters a path
+  variant.OpacityCoversRadiance = false; // drawn into images
+  vtkShaderProgram* program = this->Quad.Ready(frame.Window,
+    vtkTransmittanceShaderSource::GetFragmentShader(
+      vtkTransmittanceShaderSource::PATH_TRACE, variant));
+  if (!program)
+  {
+    vtkErrorWithObjectMacro(reporter, << "The path-tracing shader did not compile.");
+    return false;
+  }
+  vtkTransmittanceScopedTextures textures(
+    { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
+  vtkTransmittanceRayCastPass::SetUniforms(frame, inputs, program);
+  int viewport[4];
+  frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  frame.SetCameraUniforms(program, inputs.Depth, false, viewport, viewport[2], viewport[3]);
+  this->LastSamplesPerFrame = SamplesFor(frame, settings);
+  program->SetUniformi("pathFrame", std::max(historyFrames, 0));
+  program->SetUniformi("pathSamples", this->LastSamplesPerFrame);
+  program->SetUniformi("pathBounces", std::max(settings.MaximumBounces, 1));
+  program->SetUniformf("pathMajorant", static_cast<float>(Majorant(frame)));
+  program->SetUniformi("pathTrackedShadows", settings.TrackedShadows ? 1 : 0);
+  program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
+  auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
+  return this->Accumulation->Render(
+    frame, viewport, viewport[2], viewport[3], 1, draw, reporter, std::max(historyFrames, 0));
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::Redraw(const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  return this->Accumulation->CompositeHistory(frame, reporter);
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittancePathTracePass::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Quad.Release(window);
+  this->Accumulation->ReleaseGraphicsResources(window);
+  this->LastSamplesPerFrame = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittancePathTracePass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "HistoryFrames: " << this->GetHistoryFrames() << "\n";
+  os << indent << "LastSamplesPerFrame: " << this->LastSamplesPerFrame << "\n";
+}

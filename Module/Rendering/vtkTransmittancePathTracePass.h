@@ -1,0 +1,130 @@
+/**
+ * @class   vtkTransmittancePathTracePass
+ * @brief   the progressive path-traced frame of vtkTransmittanceVolumeMapper
+ *
+ * One full-viewport quad (vtkTransmittancePathTraceFS.glsl, after the camera
+ * rays' functions of vtkTransmittanceRayCastFS.glsl): each pixel traces a
+ * few volumetric paths from its camera ray, with delta tracking against
+ * the medium's majorant (vtkTyndallMedium::GetMajorant()), next-event
+ * estimation towards every light at every collision (the light
+ * transmittance read from the frame's maps, or ratio tracked:
+ * Settings::TrackedShadows), Henyey-Greenstein scattering, a bounce limit
+ * and Russian roulette: the estimator of vtkVolumetricPathTracer
+ * (DELTA_TRACKING), its CPU twin. The frames' images are averaged into a
+ * running mean (vtkTransmittanceAccumulationPass), which is composited
+ * over the renderer's viewport.
+ *
+ * It is a fragment shader, not a compute shader: VTK's context is OpenGL
+ * 3.2 (GLSL 1.50) on every platform it supports (macOS stops at 4.1, which
+ * has no compute shaders), and the quad reuses the camera rays' code and
+ * uniforms unchanged. The work a fragment may run is bounded
+ * (vtkTransmittanceRayCastPass::IterationBudget loop trips: Mesa's
+ * llvmpipe ends a fragment's loops after 65535, and other drivers reset a
+ * GPU that runs too long): a frame traces fewer paths per pixel than asked
+ * where the medium's optical depth across its box makes a path's bound
+ * long (GetLastSamplesPerFrame()), and a path still running when the
+ * budget is spent is kept as far as it got.
+ *
+ * What it draws is what the CPU tracer draws: one medium (a grid, with its
+ * procedural detail, or a particle cloud's grid), participating-medium or
+ * emission-absorption, with the complete mapper's classification
+ * (components, 2-D functions, gradient opacity, labels, clipping, missing
+ * data). Refusal() names what it does not draw yet; the mapper then draws
+ * its map-based frame and says why once.
+ *
+ * Internal to Tyndall::Rendering.
+ */
+
+#ifndef vtkTransmittancePathTracePass_h
+#define vtkTransmittancePathTracePass_h
+
+#include "TyndallRenderingModule.h" // For export macro
+#include "vtkNew.h"                 // For vtkNew
+#include "vtkObject.h"
+#include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
+#include "vtkTransmittanceRayCastPass.h"      // For vtkTransmittanceRayCastPass::Inputs
+#include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
+
+#include <string> // For std::string
+
+class vtkTransmittanceFrame;
+class vtkWindow;
+
+class TYNDALLRENDERING_EXPORT vtkTransmittancePathTracePass : public vtkObject
+{
+public:
+  static vtkTransmittancePathTracePass* New();
+  vtkTypeMacro(vtkTransmittancePathTracePass, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The tracer's settings (the mapper's).
+  struct Settings
+  {
+    /// Paths per pixel a frame traces at most.
+    int SamplesPerFrame = 4;
+    /// The most scattering events of a path (1: single scattering).
+    int MaximumBounces = 8;
+    /// Light transmittance ratio tracked (true) or read from the frame's maps.
+    bool TrackedShadows = false;
+  };
+
+  /**
+   * Why the frame cannot be path traced (empty: it can): a projection or
+   * isosurface blend mode, a plain property's gradient shading (neither is
+   * a medium: the CPU tracer refuses them too), a coloured extinction, an
+   * emission array, other volumes in the scene (guests), depth peeling.
+   */
+  static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling);
+
+  /**
+   * Traces a frame of paths and adds it to the running mean, which it
+   * composites over the viewport; `historyFrames` frames are in the mean
+   * before it (0 starts a new mean; they must have been traced with the
+   * same settings and samples per frame). `inputs` are the camera rays'
+   * (their depth, maps or cache, occluders; reduction and step unused).
+   * False (with an error) when the shader does not compile or the images
+   * cannot be made.
+   */
+  bool Render(const vtkTransmittanceFrame& frame, const vtkTransmittanceRayCastPass::Inputs& inputs,
+    const Settings& settings, int historyFrames, vtkObject* reporter);
+
+  /// Composites the mean as it stands (no new paths); false (with an error) without one.
+  bool Redraw(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+
+  /// Frames in the mean after the last Render().
+  int GetHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
+
+  /// Paths per pixel the last Render() traced (0 before the first).
+  int GetLastSamplesPerFrame() const { return this->LastSamplesPerFrame; }
+
+  /// The samples per pixel in the mean: GetHistoryFrames() x GetLastSamplesPerFrame().
+  int GetSamples() const { return this->GetHistoryFrames() * this->LastSamplesPerFrame; }
+
+  /**
+   * The paths per pixel a frame traces when `requested` are asked for: at
+   * most `requested`, fewer where a path's bound on loop trips (its
+   * flights across the box at the majorant, the light loop and each
+   * light's march or ratio tracking, over up to four bounces) times the
+   * paths would pass half of IterationBudget; at least 1.
+   */
+  static int SamplesFor(const vtkTransmittanceFrame& frame, const Settings& settings);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+protected:
+  vtkTransmittancePathTracePass();
+  ~vtkTransmittancePathTracePass() override;
+
+private:
+  vtkTransmittancePathTracePass(const vtkTransmittancePathTracePass&) = delete;
+  void operator=(const vtkTransmittancePathTracePass&) = delete;
+
+  /// The majorant the paths track against (per world unit, above 0).
+  static double Majorant(const vtkTransmittanceFrame& frame);
+
+  vtkTransmittanceShaderQuad Quad;
+  vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
+  int LastSamplesPerFrame = 0;
+};
+
+#endif
