@@ -8,6 +8,7 @@
 #include "vtkTransmittanceMediumAdapter.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMedium.h"
 
@@ -61,12 +62,27 @@ std::string vtkTransmittancePathTracePass::Refusal(const vtkTransmittanceFrame& 
   {
     return "other volumes in the renderer (their shadows, SceneShadows) are not path traced yet";
   }
+  if (frame.Integrator.Reducer)
+  {
+    return "several processes draw the picture (a path would scatter between their pieces)";
+  }
   if (peeling)
   {
     return "VTK's depth peeling for volumes draws the volume in parts, which one mean cannot "
            "average";
   }
   return std::string();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::UsesBlocks(
+  const vtkTransmittanceFrame& frame, const vtkTransmittanceShaderSource::Variant& variant)
+{
+  // The blocks bound the grid's table extinction (times its density scale;
+  // gradient opacity only lowers it): not procedural detail (its noise
+  // rises above the shape), a 2-D function or labels (other tables).
+  return variant.SkipEmpty && variant.DetailGroups == 0 && !variant.Transfer2D &&
+    !variant.LabelMap && !(frame.Detail && frame.Detail->Enabled());
 }
 
 //------------------------------------------------------------------------------
@@ -77,28 +93,44 @@ double vtkTransmittancePathTracePass::Majorant(const vtkTransmittanceFrame& fram
 }
 
 //------------------------------------------------------------------------------
-int vtkTransmittancePathTracePass::SamplesFor(
+double vtkTransmittancePathTracePass::PathBound(
   const vtkTransmittanceFrame& frame, const Settings& settings)
 {
   const double flight = 2.0 + Majorant(frame) * frame.Diagonal;
-  const double march = std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll);
-  double collision = 1.0;
+  const double lights = static_cast<double>(frame.Lights.size());
+  const double collision =
+    1.0 + (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
+  const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
+  return bounces * (flight + collision);
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittancePathTracePass::CollisionCost(const vtkTransmittanceFrame& frame)
+{
+  const double march = frame.Adapter->GetLightMarchIterations(
+    *frame.OwnMedium, std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
+  double cost = 0.0;
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
   {
-    collision += 1.0;
-    if (settings.TrackedShadows)
-    {
-      collision += flight;
-    }
-    else if (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE)
-    {
-      collision += march;
-    }
+    cost += 1.0 + (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE ? march : 0.0);
   }
-  const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
-  const double path = bounces * (flight + collision);
-  const double fit = 0.5 * vtkTransmittanceRayCastPass::IterationBudget / path;
+  return cost;
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittancePathTracePass::SamplesFor(
+  const vtkTransmittanceFrame& frame, const Settings& settings)
+{
+  const double fit =
+    0.5 * vtkTransmittanceRayCastPass::IterationBudget / PathBound(frame, settings);
   return std::max(1, std::min(settings.SamplesPerFrame, static_cast<int>(fit)));
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::MayCutPaths(
+  const vtkTransmittanceFrame& frame, const Settings& settings)
+{
+  return PathBound(frame, settings) > vtkTransmittanceRayCastPass::IterationBudget;
 }
 
 //------------------------------------------------------------------------------
@@ -111,6 +143,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   variant.Octaves = 1;                   // the paths scatter for real
   variant.DetailCameraGroups = -1;       // every wave: no pixel footprint filters a path
   variant.OpacityCoversRadiance = false; // drawn into images
+  variant.PathBlocks = UsesBlocks(frame, variant);
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
       vtkTransmittanceShaderSource::PATH_TRACE, variant));
@@ -127,11 +160,18 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   frame.SetCameraUniforms(program, inputs.Depth, false, viewport, viewport[2], viewport[3]);
   this->LastSamplesPerFrame = SamplesFor(frame, settings);
   program->SetUniformi("pathFrame", std::max(historyFrames, 0));
+  program->SetUniformi("pathSeed", settings.Seed);
   program->SetUniformi("pathSamples", this->LastSamplesPerFrame);
   program->SetUniformi("pathBounces", std::max(settings.MaximumBounces, 1));
   program->SetUniformf("pathMajorant", static_cast<float>(Majorant(frame)));
+  if (variant.PathBlocks)
+  {
+    program->SetUniformf("pathBlockScale",
+      static_cast<float>(frame.Medium->GetParameters().DensityScale * kMajorantMargin));
+  }
   program->SetUniformi("pathTrackedShadows", settings.TrackedShadows ? 1 : 0);
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
+  program->SetUniformi("pathCollisionCost", static_cast<int>(std::ceil(CollisionCost(frame))));
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
   return this->Accumulation->Render(
     frame, viewport, viewport[2], viewport[3], 1, draw, reporter, std::max(historyFrames, 0));

@@ -5,7 +5,7 @@
  * One full-viewport quad (vtkTransmittancePathTraceFS.glsl, after the camera
  * rays' functions of vtkTransmittanceRayCastFS.glsl): each pixel traces a
  * few volumetric paths from its camera ray, with delta tracking against
- * the medium's majorant (vtkTyndallMedium::GetMajorant()), next-event
+ * the majorant grid's blocks (or the medium's majorant), next-event
  * estimation towards every light at every collision (the light
  * transmittance read from the frame's maps, or ratio tracked:
  * Settings::TrackedShadows), Henyey-Greenstein scattering, a bounce limit
@@ -44,6 +44,7 @@
 #include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
 #include "vtkTransmittanceRayCastPass.h"      // For vtkTransmittanceRayCastPass::Inputs
 #include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
+#include "vtkTransmittanceShaderSource.h"     // For vtkTransmittanceShaderSource::Variant
 
 #include <string> // For std::string
 
@@ -66,13 +67,16 @@ public:
     int MaximumBounces = 8;
     /// Light transmittance ratio tracked (true) or read from the frame's maps.
     bool TrackedShadows = false;
+    /// Picks the random numbers, with the frame's index and the pixel.
+    int Seed = 0;
   };
 
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode, a plain property's gradient shading (neither is
    * a medium: the CPU tracer refuses them too), a coloured extinction, an
-   * emission array, other volumes in the scene (guests), depth peeling.
+   * emission array, other volumes in the scene (guests), depth peeling, several
+   * processes (MPI).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling);
 
@@ -109,6 +113,13 @@ public:
    */
   static int SamplesFor(const vtkTransmittanceFrame& frame, const Settings& settings);
 
+  /**
+   * Whether one path's bound on loop trips (as SamplesFor() counts it)
+   * passes the whole budget: paths may then be cut short, their later
+   * bounces lost (a darker picture). The mapper says so in a warning.
+   */
+  static bool MayCutPaths(const vtkTransmittanceFrame& frame, const Settings& settings);
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:
@@ -121,6 +132,14 @@ private:
 
   /// The majorant the paths track against (per world unit, above 0).
   static double Majorant(const vtkTransmittanceFrame& frame);
+  /// Whether the paths track against the majorant grid's blocks (Variant::PathBlocks).
+  static bool UsesBlocks(
+    const vtkTransmittanceFrame& frame, const vtkTransmittanceShaderSource::Variant& variant);
+  /// The loop trips of a collision's light estimate from the maps (the light loop, brute-force
+  /// marches).
+  static double CollisionCost(const vtkTransmittanceFrame& frame);
+  /// SamplesFor()'s bound on one path's loop trips.
+  static double PathBound(const vtkTransmittanceFrame& frame, const Settings& settings);
 
   vtkTransmittanceShaderQuad Quad;
   vtkNew<vtkTransmittanceAccumulationPass> Accumulation;

@@ -105,6 +105,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("ISO_COUNT", variant.IsoCount);
   define("ISO_MAX_OPACITY", vtkTyndallIsosurfaces::MaximumOpacity);
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
+  define("PATH_BLOCKS", variant.SkipEmpty && variant.PathBlocks ? 1 : 0);
   using P = vtkTyndallProjection;
   define("PROJECTION", variant.Projection);
   define("PROJECTION_MAXIMUM", static_cast<int>(P::MAXIMUM));

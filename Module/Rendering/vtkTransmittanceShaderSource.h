@@ -66,6 +66,8 @@
  * - TYNDALL_ISOSURFACES: VTK's isosurface blend mode (vtkTyndallIsosurfaces):
  *   the camera samples (RAY_CAST) and the light (every pass) meet the
  *   TYNDALL_ISO_COUNT surfaces a step crosses instead of the medium;
+ * - TYNDALL_PATH_BLOCKS (PATH_TRACE only): free flights and ratio tracking
+ *   against the majorant grid's blocks (Variant::PathBlocks);
  * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
  *   one of TYNDALL_PROJECTION_MAXIMUM .. TYNDALL_PROJECTION_ADDITIVE
  *   (vtkTyndallProjection::Modes).
@@ -217,6 +219,12 @@ public:
     int IsoCount = 0;
     /// Transmittance-function maps of a coloured extinction: one set per channel.
     bool ChannelMaps = false;
+    /**
+     * The path tracer (PATH_TRACE) tracks against the majorant grid's
+     * blocks (with SkipEmpty: the grid's texture is bound) instead of one
+     * majorant.
+     */
+    bool PathBlocks = false;
   };
 
   /// The fragment shader of a pass, constants injected.

@@ -305,6 +305,8 @@ public:
   int PathFrames = 0;
   int PathSamples = 0;
   std::string PathRefusal;
+  bool WarnedCutPaths = false;
+  bool WarnedPathGeometry = false;
   /**
    * Draws the frame of path-tracing mode and returns true, or returns
    * false (the mode is off, or refused: said once) and draws nothing: the
@@ -536,7 +538,13 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   bool peeling)
 {
   this->PathSamples = 0;
-  if (!self->GetPathTracing() || this->RefusePaths(self, peeling))
+  if (!self->GetPathTracing())
+  {
+    this->PathKey.clear();
+    this->PathRefusal.clear();
+    return false;
+  }
+  if (this->RefusePaths(self, peeling))
   {
     this->PathKey.clear();
     return false;
@@ -562,7 +570,28 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   settings.SamplesPerFrame = self->GetPathTraceSamplesPerFrame();
   settings.MaximumBounces = self->GetPathTraceMaximumBounces();
   settings.TrackedShadows = self->GetPathTraceShadows() == PATH_SHADOWS_TRACKED;
+  settings.Seed = self->GetPathTraceSeed();
   const int perFrame = vtkTransmittancePathTracePass::SamplesFor(this->Frame, settings);
+  const bool cut = vtkTransmittancePathTracePass::MayCutPaths(this->Frame, settings);
+  if (cut && !this->WarnedCutPaths)
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Path tracing: delta tracking across the medium's box at its largest extinction "
+               "(optical depth "
+            << this->Frame.OwnMedium->GetMajorant() * this->Frame.Diagonal
+            << ") can take a path past a fragment's loop budget; a path cut short loses its later "
+               "bounces, or the rest of its first flight (a darker or more transparent picture). "
+               "Fewer bounces (PathTraceMaximumBounces), shadows from the maps or a lower "
+               "DensityScale shorten the paths.");
+  }
+  this->WarnedCutPaths = cut;
+  if (inputs.Occlusion && !this->WarnedPathGeometry)
+  {
+    vtkWarningWithObjectMacro(self,
+      << "Path tracing: opaque geometry stops the camera rays and shadows the lights, but the "
+         "scattered paths cross it.");
+  }
+  this->WarnedPathGeometry = inputs.Occlusion != nullptr;
   if (this->PathFrames > 0 && this->PathFrames * perFrame >= self->GetPathTraceSamplesPerPixel())
   {
     this->Complete = this->PathTracer->Redraw(this->Frame, self);
@@ -576,6 +605,8 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   if (this->Complete)
   {
     this->PathSamples = this->PathFrames * perFrame;
+    this->Reduction = 1; // the paths' picture is full size
+    this->StepScale = 1.0;
     this->PathKey = this->StillFrameKey(self, renderer, volume, still);
   }
   return true;
@@ -730,6 +761,7 @@ void vtkTransmittanceVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.PathTracer->ReleaseGraphicsResources(window);
   in.PathKey.clear();
   in.PathFrames = 0;
+  in.PathSamples = 0;
   in.Projection->ReleaseGraphicsResources(window);
   in.Peeling->ReleaseGraphicsResources(window);
   in.Window = nullptr;
@@ -1288,6 +1320,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PathTraceMaximumBounces: " << this->PathTraceMaximumBounces << "\n";
   os << indent << "PathTraceShadows: "
      << (this->PathTraceShadows == PATH_SHADOWS_TRACKED ? "Tracked" : "FromMaps") << "\n";
+  os << indent << "PathTraceSeed: " << this->PathTraceSeed << "\n";
   os << indent << "TransmittanceCache: " << (this->TransmittanceCache ? "On" : "Off") << "\n";
   os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";
   os << indent << "TransmittanceCacheBuildCount: " << this->GetTransmittanceCacheBuildCount()

@@ -405,7 +405,7 @@ public:
    * Not path traced yet, each said once in a warning, the map-based frame
    * drawn instead: a coloured extinction, an emission array, several
    * volumes sharing their shadows (guests), VTK's depth peeling for
-   * volumes; and never (they are not media; the CPU tracer refuses them
+   * volumes, several processes; and never (they are not media; the CPU tracer refuses them
    * too): the projection and isosurface blend modes, a plain property's
    * gradient shading (Shade on).
    */
@@ -462,6 +462,17 @@ public:
   vtkGetMacro(PathTraceShadows, int);
   void SetPathTraceShadowsToFromMaps() { this->SetPathTraceShadows(PATH_SHADOWS_FROM_MAPS); }
   void SetPathTraceShadowsToTracked() { this->SetPathTraceShadows(PATH_SHADOWS_TRACKED); }
+  ///@}
+
+  ///@{
+  /**
+   * The seed of the paths' random numbers (default 0): with the still
+   * frame's index and the pixel it picks every number, so a picture
+   * depends only on it and the settings; another seed gives an
+   * independent picture.
+   */
+  vtkSetMacro(PathTraceSeed, int);
+  vtkGetMacro(PathTraceSeed, int);
   ///@}
 
   /**
@@ -674,6 +685,7 @@ protected:
   int PathTraceSamplesPerFrame = 4;
   int PathTraceMaximumBounces = 8;
   int PathTraceShadows = PATH_SHADOWS_FROM_MAPS;
+  int PathTraceSeed = 0;
 
 private:
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;

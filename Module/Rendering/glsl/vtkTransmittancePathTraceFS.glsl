@@ -2,8 +2,8 @@
 // vtkTransmittanceRayCastFS.glsl, whose camera samples, lights and light
 // transmittance it calls; vtkTransmittancePathTracePass). Each pixel
 // traces pathSamples paths from its camera ray (the pixel's centre, as the
-// CPU tracer's): free flights by delta tracking against one majorant,
-// next-event estimation towards every light at every collision (the light
+// CPU tracer's): free flights by delta tracking against one majorant (or
+// the majorant grid's blocks: TYNDALL_PATH_BLOCKS), next-event estimation towards every light at every collision (the light
 // transmittance from the frame's maps, lightTransmittance(), or ratio
 // tracked: pathTrackedShadows), Henyey-Greenstein scattering, a bounce
 // limit and Russian roulette. It writes the paths' mean radiance
@@ -13,15 +13,19 @@
 // vtkVolumetricPathTracer with DELTA_TRACKING (the same estimator, term by
 // term; Documentation/rendering-model.md, "Path tracing").
 //
-// Bounded work: every loop trip counts against pathBudget; a path still
+// Bounded work: every loop trip counts against pathBudget (a collision's
+// light estimate from the maps as pathCollisionCost trips); a path still
 // running when the budget is spent is kept as far as it got (its later
-// bounces lost) and the pixel traces no more paths this frame.
+// bounces lost; a first flight cut short counts as an escape) and the pixel
+// traces no more paths this frame.
 uniform int pathFrame;          // the still frame's index in the mean: picks its random numbers
+uniform int pathSeed;           // and the mapper's seed
 uniform int pathSamples;        // paths per pixel in this frame
 uniform int pathBounces;        // the most scattering events of a path
 uniform float pathMajorant;     // an upper bound of the extinction (per world unit)
 uniform int pathTrackedShadows; // 1: light transmittance ratio tracked; 0: lightTransmittance()
 uniform int pathBudget;         // loop trips one fragment may run
+uniform int pathCollisionCost;  // trips of a collision's light estimate from the maps
 
 int tyndallPathIterations = 0;
 uint tyndallPathState = 0u;
@@ -54,31 +58,106 @@ bool tyndallPathSpent()
   return tyndallPathIterations > pathBudget;
 }
 
-// Delta tracking from o along w over (t0, t1) against pathMajorant: true
-// at a real collision, at t, with the medium's camera sample there; false
-// when the flight leaves the segment or the budget is spent.
-bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out float t, out TyndallCameraSample s)
+// The tentative collisions of delta and ratio tracking along o + t w, t
+// in (T, T1): against pathMajorant, or with TYNDALL_PATH_BLOCKS against
+// the majorant grid's blocks (vtkTyndallMajorantGrid: table units times
+// pathBlockScale), walked by DDA, so that a block of majorant 0 (empty)
+// costs one loop trip and a thin one few tentative collisions.
+struct TyndallWalk
 {
-  t = t0;
-  s = tyndallCameraSample(o, o, w, 0.0);
+  vec3 Origin;
+  vec3 Direction;
+  float T;  // the last tentative collision (the start at first)
+  float T1; // the segment's end
+#if TYNDALL_PATH_BLOCKS
+  vec3 BlockOrigin; // the ray in block coordinates (tyndallBlockRay())
+  vec3 BlockDirection;
+  float Nudge; // a ten-thousandth of a block along the ray: past a face
+#endif
+};
+
+#if TYNDALL_PATH_BLOCKS
+uniform float pathBlockScale;
+#endif
+
+TyndallWalk tyndallStartWalk(vec3 o, vec3 w, float t0, float t1)
+{
+  TyndallWalk walk;
+  walk.Origin = o;
+  walk.Direction = w;
+  walk.T = t0;
+  walk.T1 = t1;
+#if TYNDALL_PATH_BLOCKS
+  tyndallBlockRay(o, w, walk.BlockOrigin, walk.BlockDirection);
+  vec3 d = abs(walk.BlockDirection);
+  walk.Nudge = 1e-4 / max(max(d.x, d.y), max(d.z, 1e-30));
+#endif
+  return walk;
+}
+
+// Moves the walk to its next tentative collision: true, with the
+// majorant m there; false when the segment ends first or the budget is
+// spent.
+bool tyndallNextCollision(inout TyndallWalk walk, out float m)
+{
+#if TYNDALL_PATH_BLOCKS
+  float tau = -log(1.0 - tyndallRandom());
   for (int i = 0; i < pathBudget; ++i)
   {
-    if (!tyndallPathStep())
+    if (!tyndallPathStep() || !(walk.T < walk.T1))
     {
       return false;
     }
-    t -= log(1.0 - tyndallRandom()) / pathMajorant;
-    if (!(t < t1))
+    vec3 p = walk.BlockOrigin + (walk.T + walk.Nudge) * walk.BlockDirection;
+    vec3 cell = clamp(floor(p), vec3(0.0), blockCount - 1.0);
+    m = texelFetch(blockTexture, ivec3(cell), 0).r * pathBlockScale;
+    vec3 bd = walk.BlockDirection;
+    vec3 tFace = (cell + step(vec3(0.0), bd) - walk.BlockOrigin) / bd;
+    tFace = mix(vec3(1e30), tFace, notEqual(bd, vec3(0.0)));
+    float tExit = min(max(min(min(tFace.x, tFace.y), tFace.z), walk.T + walk.Nudge), walk.T1);
+    float depth = m * (tExit - walk.T);
+    if (depth > tau)
     {
-      return false;
+      walk.T += tau / m;
+      return true;
     }
-    vec3 x = o + t * w;
+    tau -= depth;
+    walk.T = tExit;
+  }
+  return false;
+#else
+  if (!tyndallPathStep())
+  {
+    return false;
+  }
+  m = pathMajorant;
+  walk.T -= log(1.0 - tyndallRandom()) / m;
+  return walk.T < walk.T1;
+#endif
+}
+
+// Delta tracking from o along w over (t0, t1): true at a real collision,
+// at t, with the medium's camera sample there; false when the flight
+// leaves the segment or the budget is spent.
+bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out float t, out TyndallCameraSample s)
+{
+  TyndallWalk walk = tyndallStartWalk(o, w, t0, t1);
+  float m;
+  for (int i = 0; i < pathBudget; ++i)
+  {
+    if (!tyndallNextCollision(walk, m))
+    {
+      break;
+    }
+    vec3 x = o + walk.T * w;
     s = tyndallCameraSample(x, x, w, 0.0);
-    if (tyndallRandom() * pathMajorant < s.Sigma)
+    if (tyndallRandom() * m < s.Sigma)
     {
+      t = walk.T;
       return true;
     }
   }
+  t = walk.T;
   return false;
 }
 
@@ -87,20 +166,16 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out float t, out Tynd
 // CPU tracer's RatioTrack()).
 float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
 {
+  TyndallWalk walk = tyndallStartWalk(x, dir, 0.0, tEnd);
   float T = 1.0;
-  float t = 0.0;
+  float m;
   for (int i = 0; i < pathBudget; ++i)
   {
-    if (!tyndallPathStep())
+    if (!tyndallNextCollision(walk, m))
     {
       break;
     }
-    t -= log(1.0 - tyndallRandom()) / pathMajorant;
-    if (!(t < tEnd))
-    {
-      break;
-    }
-    T *= max(0.0, 1.0 - tyndallSceneExtinction(x + t * dir, dir, 0.0) / pathMajorant);
+    T *= max(0.0, 1.0 - tyndallSceneExtinction(x + walk.T * dir, dir, 0.0) / m);
     if (T < 0.1)
     {
       if (T <= 0.0 || tyndallRandom() < 0.5)
@@ -122,11 +197,17 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
 {
   if (pathTrackedShadows == 0)
   {
+    // The light loop and its brute-force marches, counted at once.
+    tyndallPathIterations += pathCollisionCost;
     return inScattering(x, w, vec3(1.0));
   }
   vec3 sum = vec3(ambient);
   for (int l = 0; l < numberOfLights; ++l)
   {
+    if (!tyndallPathStep())
+    {
+      break;
+    }
     vec3 toLight;
     float distance;
     vec3 E = lightIrradiance[l];
@@ -230,8 +311,8 @@ void main()
   int traced = 0;
   for (int k = 0; k < pathSamples; ++k)
   {
-    tyndallPathState =
-      tyndallPcg(pixel.x + tyndallPcg(pixel.y + tyndallPcg(uint(pathFrame * pathSamples + k))));
+    tyndallPathState = tyndallPcg(pixel.x +
+      tyndallPcg(pixel.y + tyndallPcg(uint(k) + tyndallPcg(uint(pathFrame) + tyndallPcg(uint(pathSeed))))));
     ++traced;
     if (!tyndallTracePath(p0, w, tNear, tFar, radiance, escaped))
     {

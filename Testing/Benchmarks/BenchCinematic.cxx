@@ -1,0 +1,305 @@
+// BenchCinematic: the mapper's path-traced mode (vtkTransmittanceVolumeMapper::
+// PathTracing) beside its CPU twin, vtkVolumetricPathTracer (DELTA_TRACKING,
+// the same estimator and bounce limit), on the built-in cloud and the dense
+// medium (the tests' scenes: a sun of intensity 1.5, ambient 0.05, g 0.4).
+//
+// For each scene, at W x W pixels:
+// 1. the converged picture: the GPU's, ratio-tracked shadows, at --reference
+//    samples per pixel (default 1024); and its PSNR against the CPU tracer's
+//    at --cpu-spp (default 256), the CPU's standard error beside it;
+// 2. the map-based frame (AdaptiveETM, single scattering: what the mapper
+//    draws while anything moves): its time and its PSNR against the
+//    converged picture;
+// 3. for each light transmittance (the maps, ratio tracked): frames of
+//    paths from a new start, the time and samples per pixel at which the
+//    picture first reaches 30 dB against the converged one (the issue's
+//    "time to 30 dB"), and the GPU's paths per second;
+// 4. the CPU tracer's paths per second (one thread count: the machine's),
+//    and the ratio GPU / CPU measured in this run.
+//
+// Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
+//   [--bounces B] [--frame-spp K] [--help]
+// --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp: every
+// render works, never a timing or a PSNR.
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallDisplay.h"
+#include "vtkVolume.h"
+#include "vtkVolumetricPathTracer.h"
+#include "vtkWindowToImageFilter.h"
+
+#include "TyndallTestImage.h"
+#include "TyndallTestScene.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace
+{
+struct Options
+{
+  bool Quick = false;
+  int Size = 128;
+  int Reference = 1024;
+  int CpuSamples = 256;
+  int Bounces = 8;
+  int FrameSamples = 16;
+};
+
+double Seconds(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool Parse(int argc, char* argv[], Options& o)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&](int& value, int low, int high)
+    {
+      if (i + 1 >= argc)
+      {
+        return false;
+      }
+      value = std::atoi(argv[++i]);
+      return value >= low && value <= high;
+    };
+    bool ok = true;
+    if (a == "--quick")
+    {
+      o.Quick = true;
+      o.Size = 24;
+      o.Reference = 64;
+      o.CpuSamples = 16;
+    }
+    else if (a == "--size")
+    {
+      ok = next(o.Size, 8, 2048);
+    }
+    else if (a == "--reference")
+    {
+      ok = next(o.Reference, 1, 1000000);
+    }
+    else if (a == "--cpu-spp")
+    {
+      ok = next(o.CpuSamples, 1, 1000000);
+    }
+    else if (a == "--bounces")
+    {
+      ok = next(o.Bounces, 1, 1000);
+    }
+    else if (a == "--frame-spp")
+    {
+      ok = next(o.FrameSamples, 1, 64);
+    }
+    else
+    {
+      ok = false;
+    }
+    if (!ok)
+    {
+      std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
+                  "[--bounces B] [--frame-spp K] [--help]\n");
+      return false;
+    }
+  }
+  return true;
+}
+
+struct Scene
+{
+  std::string Name;
+  vtkNew<vtkTransmittanceVolumeMapper> Mapper;
+  vtkSmartPointer<vtkParticipatingMediumProperty> Property;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene(const char* name, vtkImageData* data, double peakOpacity, const Options& o,
+    vtkTyndallDisplay* display)
+    : Name(name)
+    , Property(tyndall_test::MakeCloudProperty(peakOpacity))
+  {
+    this->Mapper->SetInputData(data);
+    this->Mapper->JitterOff();
+    this->Mapper->InteractiveAdjustmentOff();
+    this->Mapper->SetPathTraceMaximumBounces(o.Bounces);
+    this->Mapper->SetPathTraceSamplesPerFrame(o.FrameSamples);
+    this->Property->SetScatteringAnisotropy(0.4);
+    this->Property->SetAmbientIntensity(0.05);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Volume->RotateY(15.0);
+    this->Renderer->AddVolume(this->Volume);
+    this->Renderer->SetBackground(0.2, 0.3, 0.45);
+    this->Renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3, 1.5));
+    tyndall_test::SetTestCamera(this->Renderer);
+    display->Attach(this->Window);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(o.Size, o.Size);
+    this->Window->AddRenderer(this->Renderer);
+  }
+
+  vtkSmartPointer<vtkImageData> Picture()
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(this->Window);
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->Update();
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->DeepCopy(grab->GetOutput());
+    return image;
+  }
+
+  // Path tracing from a new start: renders the map-based frame, then frames
+  // of paths until `samples`; calls `frame(samples, seconds)` after each
+  // frame of paths (seconds since the first of them began).
+  template <typename F>
+  void Trace(int samples, int shadows, F frame)
+  {
+    this->Mapper->PathTracingOn();
+    this->Mapper->SetPathTraceShadows(shadows);
+    this->Mapper->SetPathTraceSamplesPerPixel(samples);
+    this->Mapper->ResetAccumulation();
+    this->Window->Render(); // the map-based frame
+    const auto start = std::chrono::steady_clock::now();
+    for (int f = 0; f < 2 * samples + 2; ++f)
+    {
+      this->Window->Render();
+      const int n = this->Mapper->GetLastPathTraceSamples();
+      if (frame(n, Seconds(start)) || n >= samples || n == 0)
+      {
+        return;
+      }
+    }
+  }
+};
+
+bool Run(Scene& s, const Options& o)
+{
+  std::printf("%s, %d x %d, up to %d bounces:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces);
+  // 1. the converged picture (its own random numbers).
+  s.Mapper->SetPathTraceSeed(1);
+  double seconds = 0.0;
+  int samples = 0;
+  s.Trace(o.Reference, vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED,
+    [&](int n, double t)
+    {
+      samples = n;
+      seconds = t;
+      return false;
+    });
+  if (samples < o.Reference)
+  {
+    std::printf("FAILED: the GPU traced %d of %d samples per pixel\n", samples, o.Reference);
+    return false;
+  }
+  vtkSmartPointer<vtkImageData> converged = s.Picture();
+  s.Mapper->SetPathTraceSeed(0);
+  vtkNew<vtkVolumetricPathTracer> cpu;
+  cpu->SetDistanceSampling(vtkVolumetricPathTracer::DELTA_TRACKING);
+  cpu->SetSamplesPerPixel(o.CpuSamples);
+  cpu->SetMaximumBounces(o.Bounces);
+  const auto cpuStart = std::chrono::steady_clock::now();
+  if (!cpu->Render(s.Renderer, s.Volume, o.Size, o.Size))
+  {
+    std::printf("FAILED: the CPU tracer did not render\n");
+    return false;
+  }
+  const double cpuSeconds = Seconds(cpuStart);
+  const double pixels = double(o.Size) * o.Size;
+  const double cpuRate = pixels * o.CpuSamples / cpuSeconds;
+  std::printf(
+    "  converged: GPU %d spp (tracked shadows, seed 1) in %.1f s; against the CPU tracer at %d "
+    "spp %.1f dB\n",
+    samples, seconds, o.CpuSamples, tyndall_test::PSNR(converged, cpu->Composite()));
+  // 2. the map-based frame.
+  s.Mapper->PathTracingOff();
+  s.Window->Render();
+  const auto mapStart = std::chrono::steady_clock::now();
+  s.Window->Render();
+  const double mapSeconds = Seconds(mapStart);
+  std::printf("  map-based frame (AdaptiveETM, single scattering): %.3f s, %.1f dB against the "
+              "converged picture\n",
+    mapSeconds, tyndall_test::PSNR(s.Picture(), converged));
+  // 3. time to 30 dB, each light transmittance (seed 0).
+  double gpuRate = 0.0;
+  for (int shadows : { vtkTransmittanceVolumeMapper::PATH_SHADOWS_FROM_MAPS,
+         vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED })
+  {
+    double reached = -1.0, last = 0.0, psnr = 0.0;
+    const bool tracked = shadows == vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED;
+    int at = 0, traced = 0;
+    s.Trace(o.Reference, shadows,
+      [&](int n, double t)
+      {
+        traced = n;
+        last = t;
+        psnr = tyndall_test::PSNR(s.Picture(), converged);
+        if (psnr >= 30.0 && reached < 0.0)
+        {
+          reached = t;
+          at = n;
+        }
+        return reached >= 0.0 && n >= 4 * at; // a little past it: the rate
+      });
+    const char* how = tracked ? "tracked shadows" : "shadows from the maps";
+    if (tracked && traced > 0)
+    {
+      gpuRate = pixels * traced / last;
+    }
+    if (reached >= 0.0)
+    {
+      std::printf("  %s: 30 dB after %.2f s (%d spp); %d spp in %.2f s (%.1f dB): %.3g paths/s\n",
+        how, reached, at, traced, last, psnr, pixels * traced / last);
+    }
+    else
+    {
+      std::printf("  %s: below 30 dB at %d spp (%.1f dB, %.2f s): %.3g paths/s\n", how, traced,
+        psnr, last, traced > 0 ? pixels * traced / last : 0.0);
+    }
+  }
+  // 4. the rates.
+  std::printf("  paths per second: GPU %.3g (tracked shadows), CPU %.3g (%d "
+              "threads): GPU / CPU %.2fx\n",
+    gpuRate, cpuRate, vtkSMPTools::GetEstimatedNumberOfThreads(), gpuRate / cpuRate);
+  return true;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  if (!Parse(argc, argv, o))
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkTyndallDisplay> display;
+  if (!display->Open())
+  {
+    std::printf("FAILED: no display (%s)\n", display->GetErrorMessage());
+    return EXIT_FAILURE;
+  }
+  const int resolution = o.Quick ? 24 : 64;
+  Scene cloud("Built-in cloud", tyndall_test::MakeCloud(resolution), 0.5, o, display);
+  Scene dense("Dense medium", tyndall_test::MakeDenseMedium(resolution), 0.9, o, display);
+  for (Scene* s : { &cloud, &dense })
+  {
+    if (!Run(*s, o))
+    {
+      return EXIT_FAILURE;
+    }
+  }
+  return EXIT_SUCCESS;
+}
