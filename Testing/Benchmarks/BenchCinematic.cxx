@@ -35,6 +35,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include "TyndallTestImage.h"
+#include "TyndallTestPathScene.h"
 #include "TyndallTestScene.h"
 
 #include <chrono>
@@ -116,73 +117,28 @@ bool Parse(int argc, char* argv[], Options& o)
   return true;
 }
 
-struct Scene
+// The tests' scene (TyndallTestPathScene.h), named, in the display's window.
+struct Scene : tyndall_test::PathScene
 {
   std::string Name;
-  vtkNew<vtkTransmittanceVolumeMapper> Mapper;
-  vtkSmartPointer<vtkParticipatingMediumProperty> Property;
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
 
   Scene(const char* name, vtkImageData* data, double peakOpacity, const Options& o,
     vtkTyndallDisplay* display)
-    : Name(name)
-    , Property(tyndall_test::MakeCloudProperty(peakOpacity))
+    : tyndall_test::PathScene(data, peakOpacity, o.Size)
+    , Name(name)
   {
-    this->Mapper->SetInputData(data);
-    this->Mapper->JitterOff();
-    this->Mapper->InteractiveAdjustmentOff();
     this->Mapper->SetPathTraceMaximumBounces(o.Bounces);
     this->Mapper->SetPathTraceSamplesPerFrame(o.FrameSamples);
-    this->Property->SetScatteringAnisotropy(0.4);
-    this->Property->SetAmbientIntensity(0.05);
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Volume->RotateY(15.0);
-    this->Renderer->AddVolume(this->Volume);
-    this->Renderer->SetBackground(0.2, 0.3, 0.45);
-    this->Renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3, 1.5));
-    tyndall_test::SetTestCamera(this->Renderer);
     display->Attach(this->Window);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(o.Size, o.Size);
-    this->Window->AddRenderer(this->Renderer);
   }
 
-  vtkSmartPointer<vtkImageData> Picture()
-  {
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->ReadFrontBufferOff();
-    grab->ShouldRerenderOff();
-    grab->Update();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(grab->GetOutput());
-    return image;
-  }
-
-  // Path tracing from a new start: renders the map-based frame, then frames
-  // of paths until `samples`; calls `frame(samples, seconds)` after each
-  // frame of paths (seconds since the first of them began).
+  // Trace() with `frame(samples, seconds since the first frame of paths
+  // began)` after each frame of paths (true: stop).
   template <typename F>
-  void Trace(int samples, int shadows, F frame)
+  void Timed(int samples, int shadows, F frame)
   {
-    this->Mapper->PathTracingOn();
     this->Mapper->SetPathTraceShadows(shadows);
-    this->Mapper->SetPathTraceSamplesPerPixel(samples);
-    this->Mapper->ResetAccumulation();
-    this->Window->Render(); // the map-based frame
-    const auto start = std::chrono::steady_clock::now();
-    for (int f = 0; f < 2 * samples + 2; ++f)
-    {
-      this->Window->Render();
-      const int n = this->Mapper->GetLastPathTraceSamples();
-      if (frame(n, Seconds(start)) || n >= samples || n == 0)
-      {
-        return;
-      }
-    }
+    this->Trace(samples, [&](int n) { return frame(n, Seconds(this->PathsStart)); });
   }
 };
 
@@ -193,7 +149,7 @@ bool Run(Scene& s, const Options& o)
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;
   int samples = 0;
-  s.Trace(o.Reference, vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED,
+  s.Timed(o.Reference, vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED,
     [&](int n, double t)
     {
       samples = n;
@@ -241,7 +197,7 @@ bool Run(Scene& s, const Options& o)
     double reached = -1.0, last = 0.0, psnr = 0.0;
     const bool tracked = shadows == vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED;
     int at = 0, traced = 0;
-    s.Trace(o.Reference, shadows,
+    s.Timed(o.Reference, shadows,
       [&](int n, double t)
       {
         traced = n;

@@ -31,6 +31,7 @@
 
 #include "TyndallTestCheck.h"
 #include "TyndallTestImage.h"
+#include "TyndallTestPathScene.h"
 #include "TyndallTestScene.h"
 
 #include <algorithm>
@@ -57,68 +58,14 @@ public:
   std::string Last;
 };
 
-struct Scene
+using Scene = tyndall_test::PathScene;
+
+// Traces `samples` per pixel from a new start; the picture.
+vtkSmartPointer<vtkImageData> Trace(Scene& scene, int samples)
 {
-  vtkNew<vtkTransmittanceVolumeMapper> Mapper;
-  vtkSmartPointer<vtkParticipatingMediumProperty> Property;
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  int Frames = 0; // the last Trace()'s renders but the last
-
-  Scene(vtkImageData* data, double peakOpacity, int size)
-    : Property(tyndall_test::MakeCloudProperty(peakOpacity))
-  {
-    this->Mapper->SetInputData(data);
-    this->Mapper->JitterOff();
-    this->Mapper->InteractiveAdjustmentOff();
-    this->Mapper->PathTracingOn();
-    this->Property->SetScatteringAnisotropy(0.4);
-    this->Property->SetAmbientIntensity(0.05);
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Volume->RotateY(15.0);
-    this->Renderer->AddVolume(this->Volume);
-    this->Renderer->SetBackground(0.2, 0.3, 0.45);
-    this->Renderer->AddLight(tyndall_test::MakeSun(1.0, 0.5, 0.3, 1.5));
-    tyndall_test::SetTestCamera(this->Renderer);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(size, size);
-    this->Window->AddRenderer(this->Renderer);
-  }
-
-  // Renders until the picture has `samples` samples per pixel (the first
-  // frame after a change is the map-based one); the picture.
-  vtkSmartPointer<vtkImageData> Trace(int samples)
-  {
-    this->Mapper->SetPathTraceSamplesPerPixel(samples);
-    this->Mapper->ResetAccumulation();
-    for (this->Frames = 0; this->Frames < 2 * samples + 2; ++this->Frames)
-    {
-      this->Window->Render();
-      if (this->Mapper->GetLastPathTraceSamples() >= samples)
-      {
-        break;
-      }
-    }
-    Check(this->Mapper->GetLastPathTraceSamples() >= samples, "the picture has its samples");
-    return this->Picture();
-  }
-
-  // The picture as the last Render() left it (tyndall_test::Grab() renders
-  // again: a still frame would add paths).
-  vtkSmartPointer<vtkImageData> Picture()
-  {
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->ReadFrontBufferOff();
-    grab->ShouldRerenderOff();
-    grab->Update();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(grab->GetOutput());
-    return image;
-  }
-};
+  Check(scene.Trace(samples) >= samples, "the picture has its samples");
+  return scene.Picture();
+}
 
 vtkSmartPointer<vtkVolumetricPathTracer> MakeTracer(Scene& scene, int samples)
 {
@@ -158,7 +105,7 @@ void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int si
     scene.Mapper->SetPathTraceShadows(shadows);
     const bool tracked = shadows == vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED;
     const char* how = tracked ? "tracked shadows" : "shadows from the maps";
-    vtkSmartPointer<vtkImageData> gpu = scene.Trace(1024);
+    vtkSmartPointer<vtkImageData> gpu = Trace(scene, 1024);
     const double psnr = tyndall_test::PSNR(gpu, truth);
     std::cout << "  GPU 1024 spp (" << scene.Frames << " frames), " << how << ": " << psnr << " dB"
               << std::endl;
@@ -189,7 +136,7 @@ void MeanAgainstCpu(const char* name, vtkImageData* data, double peakOpacity, in
   }
   scene.Mapper->SetPathTraceShadowsToTracked();
   scene.Mapper->SetPathTraceSamplesPerFrame(16);
-  vtkSmartPointer<vtkImageData> gpu = scene.Trace(samples);
+  vtkSmartPointer<vtkImageData> gpu = Trace(scene, samples);
   vtkDataArray* L = traced->GetPointData()->GetArray("Radiance");
   vtkDataArray* E = traced->GetPointData()->GetArray("RadianceStandardError");
   vtkDataArray* T = traced->GetPointData()->GetArray("Transmittance");
