@@ -29,7 +29,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperDetail 42
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 41
   Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace 40
-  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 41
+  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 70
   Tyndall::RenderingCxx-TestTransmittanceMapperOctaves 37
   Tyndall::RenderingCxx-TestTransmittanceMapperTransmittanceCache 25
   TyndallParaView-MPI 24
@@ -94,7 +94,7 @@ set(tyndall_no_sanitizer_tests
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneRules
   # 47 s: the detail medium (TestTyndallDetailMedium, TyndallCLI-Detail*)
   Tyndall::RenderingCxx-TestTransmittanceMapperDetail
-  # 41 s unsanitized: the CPU path tracer at 4096 spp beside the GPU's paths
+  # 70 s unsanitized: the CPU path tracer at 4096 spp beside the GPU's paths
   # (TestVolumetricPathTracer; the mapper's path-tracing mode: TyndallCLI-PathTrace*)
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace
   # 38 s: the majorant grid (TyndallCLI-*, every rendering test kept: skipping is on by default)

@@ -6,10 +6,12 @@
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMediumAdapter.h"
+#include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
+#include "vtkTyndallMajorantGrid.h"
 #include "vtkTyndallMedium.h"
 
 #include <algorithm>
@@ -35,7 +37,8 @@ vtkTransmittancePathTracePass::vtkTransmittancePathTracePass() = default;
 vtkTransmittancePathTracePass::~vtkTransmittancePathTracePass() = default;
 
 //------------------------------------------------------------------------------
-std::string vtkTransmittancePathTracePass::Refusal(const vtkTransmittanceFrame& frame, bool peeling)
+std::string vtkTransmittancePathTracePass::Refusal(
+  const vtkTransmittanceFrame& frame, bool peeling, bool distributed)
 {
   const vtkTyndallGridMedium& medium = *frame.Medium;
   if (medium.GetProjection().Enabled())
@@ -62,7 +65,7 @@ std::string vtkTransmittancePathTracePass::Refusal(const vtkTransmittanceFrame& 
   {
     return "other volumes in the renderer (their shadows, SceneShadows) are not path traced yet";
   }
-  if (frame.Integrator.Reducer)
+  if (distributed)
   {
     return "several processes draw the picture (a path would scatter between their pieces)";
   }
@@ -75,12 +78,13 @@ std::string vtkTransmittancePathTracePass::Refusal(const vtkTransmittanceFrame& 
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittancePathTracePass::UsesBlocks(
-  const vtkTransmittanceFrame& frame, const vtkTransmittanceShaderSource::Variant& variant)
+bool vtkTransmittancePathTracePass::UsesBlocks(const vtkTransmittanceFrame& frame)
 {
   // The blocks bound the grid's table extinction (times its density scale;
   // gradient opacity only lowers it): not procedural detail (its noise
-  // rises above the shape), a 2-D function or labels (other tables).
+  // rises above the shape); a 2-D function and labels are left to the one
+  // majorant too (their tables' bounds are the blocks' as well, untested).
+  const vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
   return variant.SkipEmpty && variant.DetailGroups == 0 && !variant.Transfer2D &&
     !variant.LabelMap && !(frame.Detail && frame.Detail->Enabled());
 }
@@ -96,7 +100,14 @@ double vtkTransmittancePathTracePass::Majorant(const vtkTransmittanceFrame& fram
 double vtkTransmittancePathTracePass::PathBound(
   const vtkTransmittanceFrame& frame, const Settings& settings)
 {
-  const double flight = 2.0 + Majorant(frame) * frame.Diagonal;
+  // A flight's tentative collisions across the whole box at the majorant,
+  // and with the blocks a trip per block it crosses.
+  double flight = 2.0 + Majorant(frame) * frame.Diagonal;
+  if (UsesBlocks(frame))
+  {
+    const int* counts = frame.Textures->GetMajorantGrid().GetBlockCounts();
+    flight += counts[0] + counts[1] + counts[2] + 3.0;
+  }
   const double lights = static_cast<double>(frame.Lights.size());
   const double collision =
     1.0 + (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
@@ -143,7 +154,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   variant.Octaves = 1;                   // the paths scatter for real
   variant.DetailCameraGroups = -1;       // every wave: no pixel footprint filters a path
   variant.OpacityCoversRadiance = false; // drawn into images
-  variant.PathBlocks = UsesBlocks(frame, variant);
+  variant.PathBlocks = UsesBlocks(frame);
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
       vtkTransmittanceShaderSource::PATH_TRACE, variant));

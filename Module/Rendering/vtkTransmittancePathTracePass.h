@@ -75,10 +75,10 @@ public:
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode, a plain property's gradient shading (neither is
    * a medium: the CPU tracer refuses them too), a coloured extinction, an
-   * emission array, other volumes in the scene (guests), depth peeling, several
-   * processes (MPI).
+   * emission array, other volumes in the scene (guests), depth peeling
+   * (`peeling`), several processes (`distributed`).
    */
-  static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling);
+  static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
 
   /**
    * Traces a frame of paths and adds it to the running mean, which it
@@ -133,8 +133,7 @@ private:
   /// The majorant the paths track against (per world unit, above 0).
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the paths track against the majorant grid's blocks (Variant::PathBlocks).
-  static bool UsesBlocks(
-    const vtkTransmittanceFrame& frame, const vtkTransmittanceShaderSource::Variant& variant);
+  static bool UsesBlocks(const vtkTransmittanceFrame& frame);
   /// The loop trips of a collision's light estimate from the maps (the light loop, brute-force
   /// marches).
   static double CollisionCost(const vtkTransmittanceFrame& frame);

@@ -522,7 +522,8 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::SameStillKey(
 bool vtkTransmittanceVolumeMapper::vtkInternals::RefusePaths(
   vtkTransmittanceVolumeMapper* self, bool peeling)
 {
-  const std::string refusal = vtkTransmittancePathTracePass::Refusal(this->Frame, peeling);
+  const std::string refusal =
+    vtkTransmittancePathTracePass::Refusal(this->Frame, peeling, this->Distributed() != nullptr);
   if (!refusal.empty() && refusal != this->PathRefusal)
   {
     vtkWarningWithObjectMacro(

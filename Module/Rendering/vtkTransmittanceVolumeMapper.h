@@ -395,7 +395,7 @@ public:
    * GetLastPathTraceSamples() is below PathTraceSamplesPerPixel (a timer, or
    * a loop: tyndall-render --path-trace). The paths are
    * vtkVolumetricPathTracer's estimator (DELTA_TRACKING) on the GPU:
-   * delta tracking against the medium's majorant, next-event estimation
+   * delta tracking against the majorant grid's blocks, next-event estimation
    * towards every light at every collision, Henyey-Greenstein scattering,
    * Russian roulette, the pixel's centre, the ambient term and the
    * table's emission at every collision; the property's octaves are not

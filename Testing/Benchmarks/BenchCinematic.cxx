@@ -5,8 +5,8 @@
 //
 // For each scene, at W x W pixels:
 // 1. the converged picture: the GPU's, ratio-tracked shadows, at --reference
-//    samples per pixel (default 1024); and its PSNR against the CPU tracer's
-//    at --cpu-spp (default 256), the CPU's standard error beside it;
+//    samples per pixel (default 1024), another seed; and its PSNR against the
+//    CPU tracer's at --cpu-spp (default 256);
 // 2. the map-based frame (AdaptiveETM, single scattering: what the mapper
 //    draws while anything moves): its time and its PSNR against the
 //    converged picture;
@@ -15,7 +15,10 @@
 //    picture first reaches 30 dB against the converged one (the issue's
 //    "time to 30 dB"), and the GPU's paths per second;
 // 4. the CPU tracer's paths per second (one thread count: the machine's),
-//    and the ratio GPU / CPU measured in this run.
+//    and the ratio GPU / CPU measured in this run. Paths per second count
+//    every pixel's samples (the rays that miss the box too, on both).
+// Times are the frames of paths alone, each finished on the GPU
+// (WaitForCompletion), without the readbacks and PSNRs between them.
 //
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
 //   [--bounces B] [--frame-spp K] [--help]
@@ -23,6 +26,7 @@
 // render works, never a timing or a PSNR.
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -132,14 +136,27 @@ struct Scene : tyndall_test::PathScene
     display->Attach(this->Window);
   }
 
-  // Trace() with `frame(samples, seconds since the first frame of paths
-  // began)` after each frame of paths (true: stop).
+  // Trace() with `frame(samples, seconds)` after each frame of paths
+  // (true: stop): the seconds the frames of paths took so far, each
+  // finished on the GPU, without the time `frame` itself takes.
   template <typename F>
   void Timed(int samples, int shadows, F frame)
   {
     this->Mapper->SetPathTraceShadows(shadows);
-    this->Trace(samples, [&](int n) { return frame(n, Seconds(this->PathsStart)); });
+    double excluded = 0.0;
+    this->Trace(samples,
+      [&](int n)
+      {
+        this->Finish();
+        const double seconds = Seconds(this->PathsStart) - excluded;
+        const auto start = std::chrono::steady_clock::now();
+        const bool stop = frame(n, seconds);
+        excluded += Seconds(start);
+        return stop;
+      });
   }
+
+  void Finish() { vtkOpenGLRenderWindow::SafeDownCast(this->Window)->WaitForCompletion(); }
 };
 
 bool Run(Scene& s, const Options& o)
@@ -183,8 +200,10 @@ bool Run(Scene& s, const Options& o)
   // 2. the map-based frame.
   s.Mapper->PathTracingOff();
   s.Window->Render();
+  s.Finish();
   const auto mapStart = std::chrono::steady_clock::now();
   s.Window->Render();
+  s.Finish();
   const double mapSeconds = Seconds(mapStart);
   std::printf("  map-based frame (AdaptiveETM, single scattering): %.3f s, %.1f dB against the "
               "converged picture\n",

@@ -2,9 +2,9 @@
 // against its CPU twin, vtkVolumetricPathTracer (DELTA_TRACKING, the same
 // estimator and bounce limit):
 // 1. converged: the GPU's picture at 1024 samples per pixel against the CPU
-//    tracer's at many more, 40 dB or more (the target), on the
-//    built-in cloud and on a dense medium, with the light transmittance
-//    ratio tracked and read from the maps;
+//    tracer's at 4096, as close as the CPU's own at 1024 (about 40 dB, the
+//    issue's target), on the built-in cloud and on a dense medium, with the
+//    light transmittance ratio tracked and read from the maps;
 // 2. unbiased: at 64 samples the image sums of both agree within their
 //    noise (4.5 standard errors);
 // 3. the mode: the frame after a change is the map-based one (identical to
@@ -13,6 +13,7 @@
 //    frame the tracer refuses (a plain property's Shade) says so and
 //    draws the map-based frame.
 #include "vtkCamera.h"
+#include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -60,6 +61,29 @@ public:
 
 using Scene = tyndall_test::PathScene;
 
+// The image's point scalars as the cell scalars of an image one sample
+// larger, its cells centred where the points were (its box half a sample
+// wider: the block grid starts outside the samples).
+vtkSmartPointer<vtkImageData> CellScalars(vtkImageData* points)
+{
+  int dims[3];
+  double spacing[3], origin[3];
+  points->GetDimensions(dims);
+  points->GetSpacing(spacing);
+  points->GetOrigin(origin);
+  auto cells = vtkSmartPointer<vtkImageData>::New();
+  cells->SetDimensions(dims[0] + 1, dims[1] + 1, dims[2] + 1);
+  cells->SetSpacing(spacing);
+  cells->SetOrigin(
+    origin[0] - 0.5 * spacing[0], origin[1] - 0.5 * spacing[1], origin[2] - 0.5 * spacing[2]);
+  vtkDataArray* scalars = points->GetPointData()->GetScalars();
+  vtkSmartPointer<vtkDataArray> copy;
+  copy.TakeReference(scalars->NewInstance());
+  copy->DeepCopy(scalars);
+  cells->GetCellData()->SetScalars(copy);
+  return cells;
+}
+
 // Traces `samples` per pixel from a new start; the picture.
 vtkSmartPointer<vtkImageData> Trace(Scene& scene, int samples)
 {
@@ -76,42 +100,63 @@ vtkSmartPointer<vtkVolumetricPathTracer> MakeTracer(Scene& scene, int samples)
   return tracer;
 }
 
-// 1. on one scene: the GPU at 1024 samples and the CPU at 1024 (another
-// seed) against the CPU at 4096. At 1024 the estimator's own noise is
-// about 40 dB on these scenes (the CPU's figure): the GPU must come within
-// `margin` dB of it (a bias lowers it: the maps' approximation on the
-// dense medium, 36 dB, is measured, not checked).
+// The mean squared error (8-bit levels^2) of `a` against `b`, from the PSNR.
+double MeanSquaredError(vtkImageData* a, vtkImageData* b)
+{
+  return 255.0 * 255.0 / std::pow(10.0, tyndall_test::PSNR(a, b) / 10.0);
+}
+
+// 1. on one scene: the GPU at 1024 samples and the CPU at 1024 against the
+// CPU at 4096, each the mean squared error over three seeds (one seed's
+// PSNR at this noise level varies by +-0.8 dB, fireflies). At 1024 the
+// estimator's own noise is about 40 dB on these scenes (the CPU's figure):
+// the GPU's error must be at most `ratio` times the CPU's (1.76 dB; three
+// seeds' means differ by about 16 % for one estimator). A bias raises it:
+// the maps' approximation on the dense medium, 36 dB, is measured, not
+// checked.
 void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int size, bool mapsAlike)
 {
   Scene scene(data, peakOpacity, size);
   auto converged = MakeTracer(scene, 4096);
-  auto cpu = MakeTracer(scene, 1024);
-  cpu->SetSeed(7);
-  if (!converged->Render(scene.Renderer, scene.Volume, size, size) ||
-    !cpu->Render(scene.Renderer, scene.Volume, size, size))
+  if (!converged->Render(scene.Renderer, scene.Volume, size, size))
   {
     Check(false, std::string(name) + ": the CPU tracer renders");
     return;
   }
   vtkSmartPointer<vtkImageData> truth = converged->Composite();
-  const double own = tyndall_test::PSNR(cpu->Composite(), truth);
-  std::cout << name << " (" << size << "^2): CPU 1024 spp against CPU 4096 spp " << own << " dB"
-            << std::endl;
+  const int seeds = 3;
+  double own = 0.0;
+  for (int seed = 0; seed < seeds; ++seed)
+  {
+    auto cpu = MakeTracer(scene, 1024);
+    cpu->SetSeed(7 + seed);
+    cpu->Render(scene.Renderer, scene.Volume, size, size);
+    own += MeanSquaredError(cpu->Composite(), truth) / seeds;
+  }
+  auto psnrOf = [](double mse) { return 10.0 * std::log10(255.0 * 255.0 / mse); };
+  std::cout << name << " (" << size << "^2): CPU 1024 spp against CPU 4096 spp " << psnrOf(own)
+            << " dB (" << seeds << " seeds)" << std::endl;
   scene.Mapper->SetPathTraceSamplesPerFrame(16);
-  const double margin = 1.0;
+  const double ratio = 1.5;
   for (int shadows : { vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED,
          vtkTransmittanceVolumeMapper::PATH_SHADOWS_FROM_MAPS })
   {
     scene.Mapper->SetPathTraceShadows(shadows);
     const bool tracked = shadows == vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED;
     const char* how = tracked ? "tracked shadows" : "shadows from the maps";
-    vtkSmartPointer<vtkImageData> gpu = Trace(scene, 1024);
-    const double psnr = tyndall_test::PSNR(gpu, truth);
-    std::cout << "  GPU 1024 spp (" << scene.Frames << " frames), " << how << ": " << psnr << " dB"
-              << std::endl;
+    double error = 0.0;
+    std::cout << "  GPU 1024 spp, " << how << ":";
+    for (int seed = 0; seed < seeds; ++seed)
+    {
+      scene.Mapper->SetPathTraceSeed(seed);
+      const double e = MeanSquaredError(Trace(scene, 1024), truth);
+      std::cout << " " << psnrOf(e) << " dB (" << scene.Frames << " frames)";
+      error += e / seeds;
+    }
+    std::cout << "; mean " << psnrOf(error) << " dB" << std::endl;
     if (tracked || mapsAlike)
     {
-      Check(psnr >= own - margin,
+      Check(error <= ratio * own,
         std::string(name) + ", " + how + ": as close to the converged picture as the CPU tracer");
     }
   }
@@ -123,9 +168,12 @@ void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int si
 // error squared plus bg^2 T (1 - T) / n (the view transmittance's escapes;
 // their covariance with the radiance, negative, is left out: a larger
 // variance) and an 8-bit rounding's 1/12 level^2, for each picture.
-void MeanAgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int size)
+void MeanAgainstCpu(
+  const char* name, vtkImageData* data, double peakOpacity, int size, bool blocks = true)
 {
   Scene scene(data, peakOpacity, size);
+  // Without empty-space skipping the paths track against one majorant.
+  scene.Mapper->SetEmptySpaceSkipping(blocks);
   const int samples = 64;
   auto cpu = MakeTracer(scene, samples);
   vtkImageData* traced = cpu->Render(scene.Renderer, scene.Volume, size, size);
@@ -224,8 +272,10 @@ int TestTransmittanceMapperPathTrace(int, char*[])
 {
   Mode();
   MeanAgainstCpu("Built-in cloud", tyndall_test::MakeCloud(32), 0.5, 32);
+  MeanAgainstCpu("Built-in cloud, one majorant", tyndall_test::MakeCloud(32), 0.5, 32, false);
+  MeanAgainstCpu("Built-in cloud, cell scalars", CellScalars(tyndall_test::MakeCloud(32)), 0.5, 32);
   MeanAgainstCpu("Dense medium", tyndall_test::MakeDenseMedium(32), 0.9, 24);
-  AgainstCpu("Built-in cloud", tyndall_test::MakeCloud(32), 0.5, 32, true);
+  AgainstCpu("Built-in cloud", tyndall_test::MakeCloud(32), 0.5, 24, true);
   AgainstCpu("Dense medium", tyndall_test::MakeDenseMedium(32), 0.9, 24, false);
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -30,20 +30,27 @@ uniform int pathCollisionCost;  // trips of a collision's light estimate from th
 int tyndallPathIterations = 0;
 uint tyndallPathState = 0u;
 
-// The PCG hash (O'Neill's output permutation of one LCG step; Jarzynski
-// and Olano, 2020): the random numbers' generator and the seeds' mixer.
-uint tyndallPcg(uint v)
+// O'Neill's PCG output permutation (RXS-M-XS) of a 32-bit state.
+uint tyndallPcgOutput(uint state)
 {
-  uint state = v * 747796405u + 2891336453u;
   uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
 }
 
-// A uniform number in [0, 1) (24 bits).
+// The PCG hash (the permutation of one LCG step; Jarzynski and Olano,
+// 2020): the seeds' mixer.
+uint tyndallPcg(uint v)
+{
+  return tyndallPcgOutput(v * 747796405u + 2891336453u);
+}
+
+// A uniform number in [0, 1) (24 bits): PCG32, its LCG state stepped (one
+// cycle of 2^32 through every state: two paths' numbers never merge, as
+// the iterates of a hash do) and permuted.
 float tyndallRandom()
 {
-  tyndallPathState = tyndallPcg(tyndallPathState);
-  return float(tyndallPathState >> 8u) * (1.0 / 16777216.0);
+  tyndallPathState = tyndallPathState * 747796405u + 2891336453u;
+  return float(tyndallPcgOutput(tyndallPathState) >> 8u) * (1.0 / 16777216.0);
 }
 
 // A loop trip: false once the fragment's budget is spent.
@@ -65,9 +72,9 @@ bool tyndallPathSpent()
 // costs one loop trip and a thin one few tentative collisions.
 struct TyndallWalk
 {
-  vec3 Origin;
+  vec3 Origin;    // the segment's start: T is measured from it (precision far from the camera)
   vec3 Direction;
-  float T;  // the last tentative collision (the start at first)
+  float T;  // the last tentative collision (0 at first)
   float T1; // the segment's end
 #if TYNDALL_PATH_BLOCKS
   vec3 BlockOrigin; // the ray in block coordinates (tyndallBlockRay())
@@ -83,12 +90,12 @@ uniform float pathBlockScale;
 TyndallWalk tyndallStartWalk(vec3 o, vec3 w, float t0, float t1)
 {
   TyndallWalk walk;
-  walk.Origin = o;
+  walk.Origin = o + t0 * w;
   walk.Direction = w;
-  walk.T = t0;
-  walk.T1 = t1;
+  walk.T = 0.0;
+  walk.T1 = t1 - t0;
 #if TYNDALL_PATH_BLOCKS
-  tyndallBlockRay(o, w, walk.BlockOrigin, walk.BlockDirection);
+  tyndallBlockRay(walk.Origin, w, walk.BlockOrigin, walk.BlockDirection);
   vec3 d = abs(walk.BlockDirection);
   walk.Nudge = 1e-4 / max(max(d.x, d.y), max(d.z, 1e-30));
 #endif
@@ -108,13 +115,20 @@ bool tyndallNextCollision(inout TyndallWalk walk, out float m)
     {
       return false;
     }
-    vec3 p = walk.BlockOrigin + (walk.T + walk.Nudge) * walk.BlockDirection;
+    // The least step: a ten-thousandth of a block, or past T's rounding.
+    float least = max(walk.Nudge, abs(walk.T) * 4e-7);
+    vec3 p = walk.BlockOrigin + (walk.T + least) * walk.BlockDirection;
     vec3 cell = clamp(floor(p), vec3(0.0), blockCount - 1.0);
     m = texelFetch(blockTexture, ivec3(cell), 0).r * pathBlockScale;
+    // The edge blocks reach outward without end (outside the grid the
+    // medium reads the edge samples or nothing): a ray outside it is one
+    // block, not a stall at a face behind it.
+    vec3 low = mix(cell, vec3(-1e30), equal(cell, vec3(0.0)));
+    vec3 high = mix(cell + 1.0, vec3(1e30), equal(cell, blockCount - 1.0));
     vec3 bd = walk.BlockDirection;
-    vec3 tFace = (cell + step(vec3(0.0), bd) - walk.BlockOrigin) / bd;
+    vec3 tFace = (mix(low, high, step(vec3(0.0), bd)) - walk.BlockOrigin) / bd;
     tFace = mix(vec3(1e30), tFace, notEqual(bd, vec3(0.0)));
-    float tExit = min(max(min(min(tFace.x, tFace.y), tFace.z), walk.T + walk.Nudge), walk.T1);
+    float tExit = min(max(min(min(tFace.x, tFace.y), tFace.z), walk.T + least), walk.T1);
     float depth = m * (tExit - walk.T);
     if (depth > tau)
     {
@@ -137,9 +151,9 @@ bool tyndallNextCollision(inout TyndallWalk walk, out float m)
 }
 
 // Delta tracking from o along w over (t0, t1): true at a real collision,
-// at t, with the medium's camera sample there; false when the flight
+// at x, with the medium's camera sample there; false when the flight
 // leaves the segment or the budget is spent.
-bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out float t, out TyndallCameraSample s)
+bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out TyndallCameraSample s)
 {
   TyndallWalk walk = tyndallStartWalk(o, w, t0, t1);
   float m;
@@ -149,15 +163,14 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out float t, out Tynd
     {
       break;
     }
-    vec3 x = o + walk.T * w;
+    x = walk.Origin + walk.T * w;
     s = tyndallCameraSample(x, x, w, 0.0);
     if (tyndallRandom() * m < s.Sigma)
     {
-      t = walk.T;
       return true;
     }
   }
-  t = walk.T;
+  x = walk.Origin + walk.T * w;
   return false;
 }
 
@@ -175,7 +188,7 @@ float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
     {
       break;
     }
-    T *= max(0.0, 1.0 - tyndallSceneExtinction(x + walk.T * dir, dir, 0.0) / m);
+    T *= max(0.0, 1.0 - tyndallSceneExtinction(walk.Origin + walk.T * dir, dir, 0.0) / m);
     if (T < 0.1)
     {
       if (T <= 0.0 || tyndallRandom() < 0.5)
@@ -260,9 +273,9 @@ bool tyndallTracePath(
   float t1 = tFar;
   for (int bounce = 0; bounce < pathBounces; ++bounce)
   {
-    float t;
+    vec3 x;
     TyndallCameraSample s;
-    if (!tyndallFreeFlight(o, w, t0, t1, t, s))
+    if (!tyndallFreeFlight(o, w, t0, t1, x, s))
     {
       escaped += bounce == 0 ? 1.0 : 0.0;
       break;
@@ -272,7 +285,6 @@ bool tyndallTracePath(
       radiance += beta * s.Color; // emission-absorption: the colour, and the path ends
       break;
     }
-    vec3 x = o + t * w;
     radiance += beta * (s.Color * tyndallPathInScattering(x, w) + tyndallSampleEmission(s));
     beta *= s.Color;
     float q = max(beta.r, max(beta.g, beta.b));
