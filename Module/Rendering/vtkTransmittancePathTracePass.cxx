@@ -5,7 +5,6 @@
 #include "vtkShaderProgram.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
-#include "vtkTransmittanceMediumAdapter.h"
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
@@ -24,9 +23,6 @@ namespace
 // A path's loop trips are bounded as if it scattered this many times (the
 // bound of each flight is already the whole box at the majorant).
 constexpr double kBoundedBounces = 4.0;
-// Brute-force light marches take this many samples per loop trip
-// (vtkTransmittanceRayCastFS.glsl).
-constexpr double kBruteForceUnroll = 8.0;
 // The majorant is raised by this factor: the GPU's single-precision
 // extinction may round above the CPU's double bound.
 constexpr double kMajorantMargin = 1.0 + 1e-4;
@@ -118,8 +114,7 @@ double vtkTransmittancePathTracePass::PathBound(
 //------------------------------------------------------------------------------
 double vtkTransmittancePathTracePass::CollisionCost(const vtkTransmittanceFrame& frame)
 {
-  const double march = frame.Adapter->GetLightMarchIterations(
-    *frame.OwnMedium, std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
+  const double march = vtkTransmittanceRayCastPass::LightMarchIterations(frame);
   double cost = 0.0;
   for (const vtkTransmittanceFrame::Light& light : frame.Lights)
   {

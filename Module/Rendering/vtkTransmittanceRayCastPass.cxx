@@ -181,14 +181,20 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceRayCastPass::GetVariant(
 }
 
 //------------------------------------------------------------------------------
+double vtkTransmittanceRayCastPass::LightMarchIterations(const vtkTransmittanceFrame& frame)
+{
+  return frame.Adapter->GetLightMarchIterations(
+    *frame.OwnMedium, std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
+}
+
+//------------------------------------------------------------------------------
 int vtkTransmittanceRayCastPass::StepsPerPass(const vtkTransmittanceFrame& frame)
 {
   // Loop iterations of one camera step: the step, the light loop, and a
   // brute-force light march per brute-force light (with procedural detail:
   // what the medium's adapter says).
   double perStep = 1.0 + static_cast<double>(frame.Lights.size());
-  const double march = frame.Adapter->GetLightMarchIterations(
-    *frame.OwnMedium, std::ceil(frame.Integrator.LightSampleCount / kBruteForceUnroll));
+  const double march = LightMarchIterations(frame);
   // A medium's Shade runs the light loop twice (its scattering, then its
   // surface term: vtkTyndallShading::GetAdditive()).
   const vtkTyndallShading& shading = frame.Medium->GetShading();

@@ -143,6 +143,13 @@ public:
   static int DetailSamplesFor(const vtkTransmittanceFrame& frame, int requested);
 
   /**
+   * The loop iterations of one brute-force light march of the frame's
+   * medium (LightSampleCount / 8 unrolled trips, or what the medium's
+   * adapter says); the budgets of the march and of the path tracer count it.
+   */
+  static double LightMarchIterations(const vtkTransmittanceFrame& frame);
+
+  /**
    * The camera rays' shader variant for `inputs` (the maps, cache and
    * occluders they read; the medium's colour switches, octaves, shading),
    * accumulating or not; the path tracer (vtkTransmittancePathTracePass)
