@@ -21,10 +21,12 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
+#include "vtkRenderPass.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTimerLog.h"
 #include "vtkTransferFunctionFileReader.h"
@@ -254,6 +256,14 @@ int WriteFloatFrame(
   return EXIT_SUCCESS;
 }
 #endif
+
+// Whether the options ask for a display transform (the mapper's Exposure,
+// ToneCurve, EncodeSRGB) other than the identity.
+bool DisplayTransformed(vtkTyndallOptions* options)
+{
+  return options->GetNumber("exposure") != 0.0 || options->GetChoice("tone-curve") != 0 ||
+    options->GetFlag("srgb");
+}
 
 // Path tracing (--path-trace): renders still frames until the picture has
 // its samples per pixel (the first render drew the map-based frame); stops
@@ -665,6 +675,9 @@ int main(int argc, char* argv[])
   // camera, lights and background.
   vtkNew<vtkTyndallSceneBuilder> builder;
   builder->SetOptions(options);
+  // With --exr the float frame is drawn linear (the EXR), then the PNG
+  // with the display transform (after WriteFloatFrame(), below).
+  builder->SetLinearOutput(!exr.empty());
   if (series)
   {
     builder->SetFrame(
@@ -743,6 +756,7 @@ int main(int argc, char* argv[])
   // frame buffer, which the PNG reads.
   vtkNew<vtkFramebufferPass> floatPass;
   vtkNew<vtkRenderStepsPass> steps;
+  vtkSmartPointer<vtkRenderPass> builderPass = renderer->GetPass(); // --ground's, or none
   if (!exr.empty())
   {
     floatPass->SetColorFormat(vtkTextureObject::Float32);
@@ -789,10 +803,6 @@ int main(int argc, char* argv[])
     return status;
   }
   int status = RenderFrames(window, builder, errors, frames, verbose);
-  if (status == EXIT_SUCCESS)
-  {
-    status = WritePng(output, window, verbose);
-  }
 #ifdef TYNDALL_HAVE_OPENEXR
   if (status == EXIT_SUCCESS && !exr.empty())
   {
@@ -802,7 +812,21 @@ int main(int argc, char* argv[])
   if (!exr.empty())
   {
     floatPass->ReleaseGraphicsResources(window);
-    renderer->SetPass(nullptr);
+    renderer->SetPass(builderPass);
+    if (status == EXIT_SUCCESS && DisplayTransformed(options))
+    {
+      // The PNG with the transform: the linear EXR's frame, mapped (a path-
+      // traced picture keeps its samples; a map-based one is drawn again).
+      builder->SetLinearOutput(false);
+      builder->ApplyDisplayOptions();
+      window->Render();
+      status = errors->HasErrors() ? Fail("rendering failed: " + errors->GetMessages().front())
+                                   : EXIT_SUCCESS;
+    }
+  }
+  if (status == EXIT_SUCCESS)
+  {
+    status = WritePng(output, window, verbose);
   }
   window->Finalize(); // before the display connection closes
   if (status == EXIT_SUCCESS)

@@ -934,8 +934,8 @@ void Viewer::LogFrame()
             << this->Mapper->GetNumberOfCoefficients() << " reduction "
             << this->Mapper->GetLastImageReduction() << " sequence-frame "
             << (this->Sequenced ? std::to_string(this->ShownFrame) : std::string("-"))
-            << " command " << (this->CurrentCommand.empty() ? "-" : this->CurrentCommand)
-            << std::endl;
+            << " path-samples " << this->Mapper->GetLastPathTraceSamples() << " command "
+            << (this->CurrentCommand.empty() ? "-" : this->CurrentCommand) << std::endl;
 }
 
 //------------------------------------------------------------------------------
@@ -1103,6 +1103,10 @@ void Viewer::Key(int key)
   {
     this->Playing = false;
     this->StepFrame(name == "next-frame" ? 1 : -1);
+  }
+  else if (name == "exposure")
+  {
+    this->Builder->ApplyDisplayOptions(); // keeps the path-traced picture's samples
   }
   else
   {

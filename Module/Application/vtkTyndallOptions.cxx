@@ -340,9 +340,22 @@ const Spec kOptions[] = {
     "coordinates that receives its shadow" },
   { "background2", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
     "top colour: makes the background a vertical gradient" },
+  { "exposure", "", Kind::Number, -20, 20, false, "", "EV", "0", "Image", Both,
+    "the medium's radiance times 2^EV before the tone curve (the mapper's Exposure; the scene's "
+    "geometry and background are not changed)",
+    KeyMode::Add, "e", "w", 0.5 },
+  { "tone-curve", "", Kind::Choice, 0, 0, false, "linear|reinhard|aces", "C", "linear", "Image",
+    Both,
+    "the medium's tone curve: linear (none: above 1 clips in 8 bits), reinhard (x / (1 + x)) or "
+    "aces (Narkowicz's filmic fit of ACES); tyndall-render's EXR stays linear, its PNG gets "
+    "the curve" },
+  { "srgb", "", Kind::Flag, 0, 0, false, "", "", "", "Image", Both,
+    "encode the medium's light with the sRGB transfer function (8-bit output; the EXR stays "
+    "linear)" },
   { "output", "-o", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,
     "the PNG: the 8-bit frame buffer, i.e. linear radiance clamped to [0, 1] and quantised "
-    "[default scene: tyndall-cloud.png; data: <input name>.png in the current directory]" },
+    "(--exposure, --tone-curve, --srgb map the medium's light first) [default scene: "
+    "tyndall-cloud.png; data: <input name>.png in the current directory]" },
   { "exr", "", Kind::Text, 0, 0, false, "", "FILE", "", "Output", Render,
     "also write a linear float OpenEXR image (RGB, 32-bit float, unclamped radiance) captured "
     "from a float frame buffer" },

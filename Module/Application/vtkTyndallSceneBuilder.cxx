@@ -950,6 +950,38 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
       vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED == 1,
     "--path-shadows's choices are the mapper's order");
   mapper->SetPathTraceShadows(o->GetChoice("path-shadows"));
+  this->ApplyDisplayOptions(mapper);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyDisplayOptions(vtkTransmittanceVolumeMapper* mapper)
+{
+  vtkTyndallOptions* o = this->Options;
+  static_assert(vtkTransmittanceVolumeMapper::TONE_CURVE_LINEAR == 0 &&
+      vtkTransmittanceVolumeMapper::TONE_CURVE_ACES == 2,
+    "--tone-curve's choices are the mapper's order");
+  const bool linear = this->LinearOutput;
+  mapper->SetExposure(linear ? 0.0 : o->GetNumber("exposure"));
+  mapper->SetToneCurve(
+    linear ? vtkTransmittanceVolumeMapper::TONE_CURVE_LINEAR : o->GetChoice("tone-curve"));
+  mapper->SetEncodeSRGB(!linear && o->GetFlag("srgb"));
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyDisplayOptions()
+{
+  if (!this->Options)
+  {
+    return;
+  }
+  if (this->Mapper)
+  {
+    this->ApplyDisplayOptions(this->Mapper);
+  }
+  for (const AddedVolume& added : this->AddedVolumes)
+  {
+    this->ApplyDisplayOptions(added.Mapper);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1141,8 +1173,14 @@ void vtkTyndallSceneBuilder::ApplyDetail()
   noise->SetFrequency(frequency > 0.0 ? frequency : 1.0);
   // Offset 1, and the amplitudes scaled so that the factor's standard
   // deviation (random phases: sqrt(sum a^2 / 2)) is the contrast.
-  noise->SetAmplitude(1.0);
-  const double deviation = noise->GetStandardDeviation();
+  // (The deviation is linear in the amplitude: measured at the amplitude
+  // the noise has, which an unchanged contrast keeps, so that applying the
+  // options again does not modify the medium.)
+  if (!(noise->GetAmplitude() > 0.0))
+  {
+    noise->SetAmplitude(1.0);
+  }
+  const double deviation = noise->GetStandardDeviation() / noise->GetAmplitude();
   noise->SetAmplitude(deviation > 0.0 ? o->GetNumber("detail-contrast") / deviation : 0.0);
   noise->SetOffset(1.0);
   noise->SetExtinctionScale(1.0);

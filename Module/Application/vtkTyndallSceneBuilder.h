@@ -99,6 +99,24 @@ public:
    */
   void ApplyOptions();
 
+  /**
+   * Sets only the mappers' display transform (--exposure, --tone-curve,
+   * --srgb; the identity with LinearOutput) from the options: a
+   * path-traced picture keeps its samples.
+   */
+  void ApplyDisplayOptions();
+
+  ///@{
+  /**
+   * Linear output: the mappers' display transform (--exposure, --tone-curve,
+   * --srgb) left at the identity, whatever the options say (tyndall-render
+   * draws its linear EXR so, then the PNG with the transform). Default
+   * off; takes effect at Build() or ApplyOptions().
+   */
+  vtkSetMacro(LinearOutput, bool);
+  vtkGetMacro(LinearOutput, bool);
+  ///@}
+
   ///@{
   /**
    * A time series (tyndall-render --sequence): SetFrame() names the file
@@ -161,6 +179,7 @@ protected:
   vtkTyndallOptions* Options = nullptr;
   bool DefaultScene = true;
   bool BadOptions = false;
+  bool LinearOutput = false;
   std::vector<double> IsoValues; // --iso-values (ReadIsoValues())
   std::string TransferFunctionDescription;
   std::string ProgressLabel;
@@ -175,6 +194,7 @@ private:
   void GetSceneBounds(double bounds[6]);
   vtkSmartPointer<vtkVolumeFileReader> MakeReader(const char* path);
   void ApplyMapperOptions(vtkTransmittanceVolumeMapper* mapper);
+  void ApplyDisplayOptions(vtkTransmittanceVolumeMapper* mapper);
   void ApplyMediumOptions(vtkParticipatingMediumProperty* medium);
   // The --emission-... options: the first volume's emission.
   void ApplyEmission();

@@ -134,6 +134,8 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
     vtkTransmittanceScopedTextures bind({ image });
     program->SetUniformi("accumulated", image->GetTextureUnit());
     program->SetUniformi("opacityCoversRadiance", 0); // an image, not the picture
+    program->SetUniformi("chromaticBehind", 0);
+    frame.SetOutputUniforms(program, false);
     this->Quad.Render();
   }
   glBlendColor(0.0f, 0.0f, 0.0f, 0.0f); // GL's default; VTK does not track it
@@ -251,6 +253,8 @@ bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& fr
     vtkTransmittanceScopedTextures bind({ image });
     program->SetUniformi("accumulated", image->GetTextureUnit());
     program->SetUniformi("opacityCoversRadiance", covers);
+    program->SetUniformi("chromaticBehind", 0);
+    frame.SetOutputUniforms(program, true);
     this->Quad.RenderOver(frame.State);
     return true;
   }
@@ -259,12 +263,19 @@ bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& fr
     vtkTransmittanceScopedTextures bind({ opacity });
     program->SetUniformi("accumulated", opacity->GetTextureUnit());
     program->SetUniformi("opacityCoversRadiance", 0);
+    program->SetUniformi("chromaticBehind", 0);
+    frame.SetOutputUniforms(program, false); // a transmittance, not light
     this->Quad.RenderOver(
       frame.State, GL_ZERO, GL_ONE_MINUS_SRC_COLOR, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
   }
-  vtkTransmittanceScopedTextures bind({ image });
+  // (The display transform sees the background through the transmittance
+  // per channel, as the draw before applied it.)
+  vtkTransmittanceScopedTextures bind({ image, opacity });
   program->SetUniformi("accumulated", image->GetTextureUnit());
   program->SetUniformi("opacityCoversRadiance", covers);
+  program->SetUniformi("chromaticBehind", 1);
+  program->SetUniformi("transmittanceImage", opacity->GetTextureUnit());
+  frame.SetOutputUniforms(program, true);
   this->Quad.RenderOver(frame.State, GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   return true;
 }

@@ -16,8 +16,10 @@
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallParticleMedium.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkTyndallToneMapping.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace
 {
@@ -485,6 +487,51 @@ void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
   program->SetUniform3fv("lightAxisX", kMaxLights, axisX);
   program->SetUniform3fv("lightAxisY", kMaxLights, axisY);
   program->SetUniform3fv("lightAxisZ", kMaxLights, axisZ);
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetOutputUniforms(vtkShaderProgram* program, bool toWindow) const
+{
+  static_assert(vtkTyndallToneMapping::LINEAR == 0 && vtkTyndallToneMapping::ACES == 2,
+    "the mapper's ToneCurve numbers are vtkTyndallToneMapping's");
+  const Settings& s = this->Integrator;
+  const bool identity = !toWindow ||
+    (s.Exposure == 0.0 && s.ToneCurve == vtkTyndallToneMapping::LINEAR && !s.EncodeSRGB);
+  program->SetUniformi("outputTransform", identity ? 0 : 1);
+  program->SetUniformf("outputScale", static_cast<float>(std::exp2(s.Exposure)));
+  program->SetUniformi("outputCurve", s.ToneCurve);
+  program->SetUniformi("outputSRGB", s.EncodeSRGB ? 1 : 0);
+  // The background the renderer drew under the medium (vtkOpenGLRenderer::
+  // Clear()): its clear colour, or its gradient from Background (bottom) to
+  // Background2 (top) over the viewport, of colours truncated to 8 bits.
+  // Unknown (taken as black) where the renderer keeps the colour buffer or
+  // draws a texture.
+  vtkRenderer* r = this->Renderer;
+  const bool known = r && !r->Transparent() && r->GetErase() && !r->GetTexturedBackground();
+  float bottom[3] = { 0.0f, 0.0f, 0.0f }, top[3] = { 0.0f, 0.0f, 0.0f };
+  float viewportY[2] = { 0.0f, 1.0f };
+  if (known)
+  {
+    const bool gradient = r->GetGradientBackground();
+    const double* b = r->GetBackground();
+    const double* t = gradient ? r->GetBackground2() : b;
+    for (int k = 0; k < 3; ++k)
+    {
+      // (VTK gives the gradient's corners as unsigned chars: truncated.)
+      bottom[k] =
+        gradient ? std::floor(static_cast<float>(b[k] * 255)) / 255.0f : static_cast<float>(b[k]);
+      top[k] =
+        gradient ? std::floor(static_cast<float>(t[k] * 255)) / 255.0f : static_cast<float>(t[k]);
+    }
+    int size[2], origin[2];
+    r->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+    viewportY[0] = static_cast<float>(origin[1]);
+    viewportY[1] = static_cast<float>(std::max(size[1], 1));
+  }
+  program->SetUniformi("outputBackground", known ? 1 : 0);
+  program->SetUniform3f("outputBottom", bottom);
+  program->SetUniform3f("outputTop", top);
+  program->SetUniform2f("outputViewportY", viewportY);
 }
 
 //------------------------------------------------------------------------------

@@ -76,6 +76,10 @@ public:
     bool OpacityCoversRadiance = false;
     bool HasMapBounds = false;
     double MapBounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+    /// The display transform (vtkTyndallToneMapping): stops, curve, sRGB.
+    double Exposure = 0.0;
+    int ToneCurve = 0;
+    bool EncodeSRGB = false;
   };
 
   /// A guest (vtkTyndallSceneReader::GetGuests()): another medium the light crosses.
@@ -134,6 +138,13 @@ public:
    * medium's gradient shading (vtkTyndallShading) its coefficients.
    */
   void SetLightUniforms(vtkShaderProgram* program) const;
+
+  /**
+   * Sets the display transform's uniforms (vtkTransmittanceOutputFS.glsl):
+   * the mapper's where `toWindow` (the program draws into the renderer's
+   * frame buffer), else the identity (an image of the mapper's own).
+   */
+  void SetOutputUniforms(vtkShaderProgram* program, bool toWindow) const;
 
   /**
    * Sets the camera ray's uniforms (vtkTransmittanceCameraRayFS.glsl):

@@ -77,6 +77,7 @@ bool vtkTransmittanceProjectionPass::Render(
   program->SetUniformi("endStep", static_cast<int>(std::ceil(frame.Diagonal / step)) + 2);
   this->SetUniforms(frame, program);
   frame.SetLightUniforms(program);
+  frame.SetOutputUniforms(program, direct);
   if (direct)
   {
     this->Quad.RenderOver(frame.State);

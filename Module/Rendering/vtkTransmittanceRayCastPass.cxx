@@ -93,6 +93,7 @@ bool vtkTransmittanceRayCastPass::Render(
   const int height = (viewport[3] + reduction - 1) / reduction;
   frame.SetCameraUniforms(program, inputs.Depth, direct, viewport, width, height);
   program->SetUniformf("stepLength", static_cast<float>(step));
+  frame.SetOutputUniforms(program, direct);
   if (sampled)
   {
     program->SetUniformi("detailFrame", inputs.HistoryFrames);

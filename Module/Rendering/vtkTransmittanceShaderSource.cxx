@@ -10,6 +10,7 @@
 #include "vtkTyndallIsosurfaces.h"
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkTyndallToneMapping.h"
 #include "vtkTyndallTransferTable.h"
 
 // The GLSL sources, embedded at build time from glsl/*.glsl.
@@ -21,6 +22,7 @@
 #include "vtkTransmittanceLightsFS.h"
 #include "vtkTransmittanceMapBuildFS.h"
 #include "vtkTransmittanceOcclusionFS.h"
+#include "vtkTransmittanceOutputFS.h"
 #include "vtkTransmittancePathTraceFS.h"
 #include "vtkTransmittancePeelCompositeFS.h"
 #include "vtkTransmittancePeelRangesFS.h"
@@ -166,6 +168,19 @@ std::string vtkTransmittanceShaderSource::GetPeelingConstants()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetOutputSource()
+{
+  using T = vtkTyndallToneMapping;
+  std::ostringstream os;
+  os << "#define TYNDALL_TONE_LINEAR " << T::LINEAR << "\n"
+     << "#define TYNDALL_TONE_REINHARD " << T::REINHARD << "\n"
+     << "#define TYNDALL_TONE_ACES " << T::ACES << "\n"
+     << std::setprecision(9) << std::showpoint << "#define TYNDALL_TONE_LARGEST " << T::Largest
+     << "\n";
+  return os.str() + vtkTransmittanceOutputFS;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkTransmittanceShaderSource::GetLightMapLookup(const Variant& variant)
 {
   return GetConstants(variant) + vtkTransmittanceLightMapFS;
@@ -193,13 +208,16 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
 {
   if (pass == COMPOSITE)
   {
-    return vtkTransmittanceCompositeFS;
+    std::string source = vtkTransmittanceCompositeFS;
+    vtkShaderProgram::Substitute(source, "//TYNDALL::Output", GetOutputSource());
+    return source;
   }
   if (pass == PEEL_RANGES || pass == PEEL_COMPOSITE)
   {
     std::string source =
       pass == PEEL_RANGES ? vtkTransmittancePeelRangesFS : vtkTransmittancePeelCompositeFS;
     vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetPeelingConstants());
+    vtkShaderProgram::Substitute(source, "//TYNDALL::Output", GetOutputSource());
     return source;
   }
   std::string source = vtkTransmittanceCommonFS;
@@ -235,5 +253,6 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
   vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetConstants(variant));
   vtkShaderProgram::Substitute(source, "//TYNDALL::LightMaps", vtkTransmittanceLightMapFS);
   vtkShaderProgram::Substitute(source, "//TYNDALL::Medium", variant.MediumCode);
+  vtkShaderProgram::Substitute(source, "//TYNDALL::Output", GetOutputSource());
   return source;
 }

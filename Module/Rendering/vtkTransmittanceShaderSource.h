@@ -269,6 +269,14 @@ public:
   };
   static std::string GetPeelingConstants();
 
+  /**
+   * The display transform's constants and functions
+   * (vtkTransmittanceOutputFS.glsl, tyndallDisplay()) that replace
+   * `//TYNDALL::Output` in the shaders that draw into the renderer's frame
+   * buffer (RAY_CAST, PROJECTION, COMPOSITE, PEEL_COMPOSITE).
+   */
+  static std::string GetOutputSource();
+
   /// What an occlusion texel holds where the light's ray meets no opaque surface.
   static constexpr float NoOccluder = 1.0e30f;
 

@@ -35,6 +35,7 @@
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkTyndallToneMapping.h"
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
@@ -458,9 +459,13 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   key.insert(key.end(),
     { double(size[0]), double(size[1]), double(origin[0]), double(origin[1]),
       double(inputs.Reduction), inputs.StepScale });
+  // The volume's placement by its matrix, not its MTime: ParaView's LOD
+  // volume (vtkPVLODVolume) sets its inner volume's state every render.
+  vtkMatrix4x4* placement = volume->GetMatrix();
+  key.insert(key.end(), placement->GetData(), placement->GetData() + 16);
   key.insert(key.end(),
-    { double(self->GetMTime()), double(volume->GetMTime()),
-      double(volume->GetProperty()->GetMTime()), double(input ? input->GetMTime() : 0),
+    { double(self->GetSceneMTime()), double(volume->GetProperty()->GetMTime()),
+      double(input ? input->GetMTime() : 0),
       double(this->GetUsedMaps()->GetBuildSerial()), double(this->Cache->GetBuildCount()) });
   const std::vector<double>& clip = this->Scene.GetMedium().GetClipRegion().GetKey();
   key.insert(key.end(), clip.begin(), clip.end());
@@ -473,12 +478,14 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   }
   // The 3-D props (opaque geometry hides the medium); 2-D overlays such as
   // a frame counter's text change every frame and do not touch the medium.
+  // The volume itself is in the key above (its redraw time has the mapper's
+  // whole MTime, which a change of the display transform moves).
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator pit;
   props->InitTraversal(pit);
   while (vtkProp* prop = props->GetNextProp(pit))
   {
-    if (vtkProp3D::SafeDownCast(prop))
+    if (vtkProp3D::SafeDownCast(prop) && prop != volume)
     {
       key.push_back(prop->GetVisibility() ? double(prop->GetRedrawMTime()) : -1.0);
     }
@@ -862,6 +869,9 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::PrepareFrame(vtkTransmittanceVo
   settings.Jitter = self->Jitter;
   settings.SkipEmptySpace = self->EmptySpaceSkipping;
   settings.CacheSize = self->TransmittanceCache ? self->TransmittanceCacheSize : 0;
+  settings.Exposure = self->Exposure;
+  settings.ToneCurve = self->ToneCurve;
+  settings.EncodeSRGB = self->EncodeSRGB;
   if (vtkTransmittanceMapReducer* reducer = this->Distributed())
   {
     settings.Reducer = this->Reducing ? reducer : nullptr;
@@ -1199,6 +1209,49 @@ void vtkTransmittanceVolumeMapper::ResetAccumulation()
 }
 
 //------------------------------------------------------------------------------
+template <typename T>
+void vtkTransmittanceVolumeMapper::SetDisplayValue(T& member, T value)
+{
+  if (member == value)
+  {
+    return;
+  }
+  const vtkMTimeType before = this->GetSceneMTime();
+  member = value;
+  this->Modified();
+  this->DisplayMTime = this->GetMTime();
+  this->MTimeBeforeDisplay = before;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkTransmittanceVolumeMapper::GetSceneMTime()
+{
+  const vtkMTimeType now = this->GetMTime();
+  return now == this->DisplayMTime ? this->MTimeBeforeDisplay : now;
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::SetExposure(double stops)
+{
+  const double limit = vtkTyndallToneMapping::MaximumExposure;
+  this->SetDisplayValue(
+    this->Exposure, std::isnan(stops) ? 0.0 : std::min(std::max(stops, -limit), limit));
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::SetToneCurve(int curve)
+{
+  this->SetDisplayValue(
+    this->ToneCurve, std::min(std::max(curve, int(TONE_CURVE_LINEAR)), int(TONE_CURVE_ACES)));
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::SetEncodeSRGB(bool encode)
+{
+  this->SetDisplayValue(this->EncodeSRGB, encode);
+}
+
+//------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastPathTraceSamples()
 {
   return this->Internals->Complete ? this->Internals->PathSamples : 0;
@@ -1322,6 +1375,9 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PathTraceShadows: "
      << (this->PathTraceShadows == PATH_SHADOWS_TRACKED ? "Tracked" : "FromMaps") << "\n";
   os << indent << "PathTraceSeed: " << this->PathTraceSeed << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneCurve: " << vtkTyndallToneMapping::GetCurveName(this->ToneCurve) << "\n";
+  os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";
   os << indent << "TransmittanceCache: " << (this->TransmittanceCache ? "On" : "Off") << "\n";
   os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";
   os << indent << "TransmittanceCacheBuildCount: " << this->GetTransmittanceCacheBuildCount()

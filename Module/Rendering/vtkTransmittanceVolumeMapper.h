@@ -475,6 +475,47 @@ public:
   vtkGetMacro(PathTraceSeed, int);
   ///@}
 
+  ///@{
+  /**
+   * The display transform of the mapper's frame (vtkTyndallToneMapping, its
+   * CPU twin): per channel, the medium's linear radiance times
+   * 2^Exposure, then the tone curve, then the sRGB encoding, applied to
+   * what the mapper draws into the renderer's frame buffer (the map-based
+   * frame, the path-traced one, every blend mode), the opacity unchanged.
+   * Blended over the renderer's background B, the pixel becomes
+   * D(L + (1 - a) D^-1(B)) (L the medium's radiance, a its opacity, D the
+   * transform): B where there is no medium, D(L) over black
+   * (vtkTyndallToneMapping::MapOver(); Documentation/mapper.md, "Exposure,
+   * tone curve and sRGB").
+   *
+   * - Exposure: stops, [-20, 20], default 0;
+   * - ToneCurve: TONE_CURVE_LINEAR (default: none, values above 1 kept in
+   *   a float frame buffer), TONE_CURVE_REINHARD (x / (1 + x)) or
+   *   TONE_CURVE_ACES (Narkowicz's fit of the ACES curves);
+   * - EncodeSRGB: the sRGB transfer function for 8-bit output, default off.
+   *
+   * The defaults leave VTK's and Tyndall's pictures unchanged. Changing
+   * them does not restart the running averages (the path-traced picture,
+   * sampled detail): they only change how the mean is shown.
+   */
+  enum ToneCurves
+  {
+    TONE_CURVE_LINEAR = 0,
+    TONE_CURVE_REINHARD = 1,
+    TONE_CURVE_ACES = 2
+  };
+  void SetExposure(double stops);
+  vtkGetMacro(Exposure, double);
+  void SetToneCurve(int curve);
+  vtkGetMacro(ToneCurve, int);
+  void SetToneCurveToLinear() { this->SetToneCurve(TONE_CURVE_LINEAR); }
+  void SetToneCurveToReinhard() { this->SetToneCurve(TONE_CURVE_REINHARD); }
+  void SetToneCurveToACES() { this->SetToneCurve(TONE_CURVE_ACES); }
+  void SetEncodeSRGB(bool encode);
+  vtkGetMacro(EncodeSRGB, bool);
+  vtkBooleanMacro(EncodeSRGB, bool);
+  ///@}
+
   /**
    * The samples per pixel in the last Render()'s picture: 0 when it was
    * the map-based frame (path tracing off or refused, something moved, or
@@ -686,8 +727,26 @@ protected:
   int PathTraceMaximumBounces = 8;
   int PathTraceShadows = PATH_SHADOWS_FROM_MAPS;
   int PathTraceSeed = 0;
+  double Exposure = 0.0;
+  int ToneCurve = TONE_CURVE_LINEAR;
+  bool EncodeSRGB = false;
+  // The modification time a change of the display transform set, and the
+  // time before it: such a change keeps the running averages
+  // (GetSceneMTime()).
+  vtkMTimeType DisplayMTime = 0;
+  vtkMTimeType MTimeBeforeDisplay = 0;
+
+  /**
+   * The modification time of what the picture shows: GetMTime(), except
+   * where the last change was to the display transform (Exposure,
+   * ToneCurve, EncodeSRGB), which changes only how the picture is shown.
+   */
+  vtkMTimeType GetSceneMTime();
 
 private:
+  template <typename T>
+  void SetDisplayValue(T& member, T value);
+
   vtkTransmittanceVolumeMapper(const vtkTransmittanceVolumeMapper&) = delete;
   void operator=(const vtkTransmittanceVolumeMapper&) = delete;
 

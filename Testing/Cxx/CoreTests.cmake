@@ -7,7 +7,8 @@ vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseSource.cxx
   TestCosineNoiseBadInput.cxx
   TestParticleKernel.cxx
-  TestTransmittanceMapMath.cxx)
+  TestTransmittanceMapMath.cxx
+  TestTyndallToneMapping.cxx)
 vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseCloudRender.cxx)
 vtk_test_cxx_executable(TyndallCoreCxxTests tests

@@ -15,6 +15,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperReference.cxx
   TestTransmittanceMapperOctaves.cxx
   TestTransmittanceMapperPathTrace.cxx
+  TestTransmittanceMapperToneMapping.cxx
   TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperChromatic.cxx

@@ -108,6 +108,7 @@ changes = [("TyndallTransmittanceMethod", 0), ("TyndallNumberOfCoefficients", 2)
            ("TyndallTransmittanceMapSize", 16), ("TyndallScatteringModel", 0),
            ("TyndallDensityScale", 2.0), ("TyndallAnisotropy", -0.5), ("TyndallLightScale", 20.0),
            ("TyndallAmbient", 0.5), ("TyndallEmission", 0.5), ("TyndallOctaves", 1),
+           ("TyndallExposure", 1.0), ("TyndallToneCurve", 2), ("TyndallEncodeSRGB", 1),
            ("Shade", 1)]
 for name, value in changes:
     # GetData(): a value, or an enumeration's text (GetPropertyValue would
@@ -120,6 +121,26 @@ for name, value in changes:
     check(value_db < 60.0, "%s = %s changes the picture: %.1f dB from it" % (name, value, value_db))
 again, _ = screenshot(view, "plugin-smoke-again.png")
 check(scene.psnr(again, picture) == float("inf"), "the settings set back give the first picture")
+
+# The path-traced mode: still renders add samples up to the property's
+# count (the information property reads them back), the picture is not the
+# map-based one, and turning it off gives the first picture again.
+display.TyndallPathTraceSamples = 8
+display.TyndallPathTraceBounces = 4
+display.TyndallPathTracing = 1
+samples = []
+for _ in range(6):
+    simple.Render(view)
+    display.UpdatePropertyInformation()
+    samples.append(display.GetProperty("TyndallPathTraceSamplesDone").GetData())
+traced, _ = screenshot(view, "plugin-smoke-paths.png")
+check(samples[0] == 0 and samples[-1] == 8 and samples == sorted(samples),
+      "still renders refine the path-traced picture to 8 samples: %s" % samples)
+value_db = scene.psnr(traced, picture)
+check(value_db < 40.0, "the path-traced picture is not the map-based one: %.1f dB" % value_db)
+display.TyndallPathTracing = 0
+again, _ = screenshot(view, "plugin-smoke-paths-off.png")
+check(scene.psnr(again, picture) == float("inf"), "path tracing off gives the first picture")
 
 # 3. A state-file round trip.
 state = os.path.join(output, "plugin-smoke.pvsm")

@@ -87,17 +87,20 @@ def psnr(a, b):
 
 
 def parse_frames(stdout):
-    """The viewer's per-frame lines: frame N render-ms T map-builds B ... command TEXT."""
+    """The viewer's per-frame lines: frame N render-ms T map-builds B ... path-samples P
+    command TEXT."""
     frames = []
     for line in stdout.splitlines():
         words = line.split()
         if len(words) < 12 or words[0] != "frame" or "command" not in words:
             continue
         at = words.index("command")
+        samples = words.index("path-samples") if "path-samples" in words[:at] else -1
         frames.append({
             "number": int(words[1]),
             "ms": float(words[3]),
             "builds": int(words[5]),
+            "paths": int(words[samples + 1]) if samples >= 0 else None,
             "command": words[at + 1:],
         })
     return frames
@@ -249,28 +252,27 @@ def sequence_mode(args):
     return failures
 
 
-def slice_mode(args):
-    """The slice blend mode: the viewer's plane at start and after five
-    presses of "]" (--slice-offset +0.02 each) against tyndall-render's
-    pictures at --slice-offset 0 and 0.1; the two planes must differ."""
+def key_against_render(args, common, option, values, key, presses, what):
+    """The viewer's picture at start and after `presses` presses of `key`
+    against tyndall-render's pictures with `option` at values["start"] and
+    values["moved"] (both with the options `common`); the two must differ."""
     failures = []
     os.makedirs(args.output_dir, exist_ok=True)
     size = [str(args.size[0]), str(args.size[1])]
     out = lambda name: os.path.join(args.output_dir, name)
-    offsets = {"start": 0.0, "moved": 0.1}
-    for key in offsets:
-        for name in ("render_%s.png" % key, "viewer_%s.png" % key):
+    for state in values:
+        for name in ("render_%s.png" % state, "viewer_%s.png" % state):
             if os.path.exists(out(name)):
                 os.remove(out(name))
-    for key, offset in offsets.items():
-        result = run([args.render, "-q", "-s"] + size + ["--blend-mode", "slice", "--slice-offset",
-                      str(offset), "-o", out("render_%s.png" % key), args.input])
+    for state, value in values.items():
+        result = run([args.render, "-q", "-s"] + size + common + [option, str(value), "-o",
+                      out("render_%s.png" % state), args.input])
         if result.returncode != 0:
             return ["tyndall-render exited with %d" % result.returncode]
-    events = ["hud off", "screenshot " + out("viewer_start.png")] + ["key ]"] * 5
+    events = ["hud off", "screenshot " + out("viewer_start.png")] + ["key " + key] * presses
     events += ["screenshot " + out("viewer_moved.png"), "quit"]
-    result = run([args.viewer, "-s"] + size + ["--blend-mode", "slice", args.input,
-                  "--events", "; ".join(events)])
+    result = run([args.viewer, "-s"] + size + common + [args.input, "--events",
+                  "; ".join(events)])
     if result.returncode != 0:
         failures.append("the viewer exited with %d" % result.returncode)
     pictures = {}
@@ -278,15 +280,68 @@ def slice_mode(args):
         pictures[name] = read_png(out(name + ".png"))
         if pictures[name] is None:
             return failures + ["cannot read %s.png" % name]
-    for key in offsets:
-        value = psnr(pictures["viewer_" + key], pictures["render_" + key])
-        print("viewer_%s against render_%s: %s dB (floor %s dB)" % (key, key, value, args.min_psnr))
+    for state in values:
+        value = psnr(pictures["viewer_" + state], pictures["render_" + state])
+        print("viewer_%s against render_%s: %s dB (floor %s dB)" % (state, state, value,
+                                                                   args.min_psnr))
         if value is None or not value >= args.min_psnr:
-            failures.append("the viewer's %s slice is not tyndall-render's (%s dB)" % (key, value))
+            failures.append("the viewer's %s %s is not tyndall-render's (%s dB)" % (state, what,
+                                                                                  value))
     value = psnr(pictures["viewer_start"], pictures["viewer_moved"])
     print("viewer_start against viewer_moved: %s dB (they must differ: below 35 dB)" % value)
     if value is None or value >= 35.0:
-        failures.append("the key ']' did not move the slice (%s dB)" % value)
+        failures.append("the key '%s' did not change the %s (%s dB)" % (key, what, value))
+    return failures
+
+
+def slice_mode(args):
+    """The slice blend mode: the viewer's plane at start and after five
+    presses of "]" (--slice-offset +0.02 each) against tyndall-render's
+    pictures at --slice-offset 0 and 0.1."""
+    return key_against_render(args, ["--blend-mode", "slice"], "--slice-offset",
+                              {"start": 0.0, "moved": 0.1}, "]", 5, "slice")
+
+
+def exposure_mode(args):
+    """The display transform: the viewer's picture with the ACES curve and
+    sRGB at start and after three presses of "e" (--exposure +0.5 each)
+    against tyndall-render's pictures at --exposure 0 and 1.5."""
+    return key_against_render(args, ["--tone-curve", "aces", "--srgb"], "--exposure",
+                              {"start": 0.0, "moved": 1.5}, "e", 3, "exposure")
+
+
+def paths_mode(args):
+    """The path-traced mode while the user drags (--path-trace): still
+    frames refine the picture (its samples per pixel grow), every frame of a
+    drag is the map-based frame (0 samples: no frame while dragging is
+    noisier than it), and the paths start again after the drag."""
+    events = ["frames 4"] + ["drag left -8 3"] * 4 + ["frames 4", "quit"]
+    result = run([args.viewer, "-s", "64", "64", "-r", "32", "--no-detail", "--path-trace",
+                  "64", "--events", "; ".join(events)])
+    if result.returncode != 0:
+        return ["the viewer exited with %d" % result.returncode]
+    frames = parse_frames(result.stdout)
+    if len(frames) < 12 or any(f["paths"] is None for f in frames):
+        return ["the viewer printed %d frame lines with path samples" % len(frames)]
+    for f in frames:
+        print("frame %d: %s samples per pixel (%s)" % (f["number"], f["paths"],
+                                                      " ".join(f["command"]) or "-"))
+    failures = []
+    drags = [f for f in frames if f["command"][:1] == ["drag"]]
+    still = [f for f in frames if f["command"][:1] == ["frames"]]
+    if len(drags) != 4 or any(f["paths"] != 0 for f in drags):
+        failures.append("a frame while dragging was not the map-based frame: %s"
+                        % [f["paths"] for f in drags])
+    before = [f["paths"] for f in still[:4]]
+    after = [f["paths"] for f in still[4:]]
+    grows = lambda samples: all(b > a for a, b in zip(samples, samples[1:]))
+    # The first frame is the map-based one; the paths refine the next.
+    if len(before) != 4 or before[0] != 0 or not grows(before):
+        failures.append("the still frames before the drag did not refine the picture: %s" % before)
+    # The drag's last frame drew the map-based frame of the view they show:
+    # the paths start again from their first frame.
+    if len(after) != 4 or not grows(after) or not 0 < after[0] < before[-1]:
+        failures.append("the paths did not start again after the drag: %s" % after)
     return failures
 
 
@@ -335,7 +390,8 @@ def main():
     # The modes that compare the viewer with tyndall-render.
     q = sub.add_parser("sequence")
     c = sub.add_parser("slice")
-    for p in (q, c):
+    e = sub.add_parser("exposure")
+    for p in (q, c, e):
         p.add_argument("--viewer", required=True)
         p.add_argument("--render", required=True)
         p.add_argument("--input", required=True)
@@ -346,10 +402,12 @@ def main():
     q.add_argument("--last", type=int, required=True)
     f = sub.add_parser("failures")
     f.add_argument("--viewer", required=True)
+    t = sub.add_parser("paths")
+    t.add_argument("--viewer", required=True)
     args = parser.parse_args()
 
     modes = {"scripted": scripted, "sequence": sequence_mode, "slice": slice_mode,
-             "failures": failures_mode}
+             "exposure": exposure_mode, "paths": paths_mode, "failures": failures_mode}
     failures = modes[args.mode](args)
     for message in failures:
         print("FAIL:", message)

@@ -184,6 +184,48 @@ void vtkTyndallVolumeRepresentation::SetTransmittanceMapSize(int size)
 }
 
 //------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetExposure(double stops)
+{
+  this->TyndallMapper->SetExposure(stops);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetToneCurve(int curve)
+{
+  this->TyndallMapper->SetToneCurve(curve);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetEncodeSRGB(int encode)
+{
+  this->TyndallMapper->SetEncodeSRGB(encode != 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetPathTracing(int on)
+{
+  this->TyndallMapper->SetPathTracing(on != 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetPathTraceSamplesPerPixel(int samples)
+{
+  this->TyndallMapper->SetPathTraceSamplesPerPixel(samples);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetPathTraceMaximumBounces(int bounces)
+{
+  this->TyndallMapper->SetPathTraceMaximumBounces(bounces);
+}
+
+//------------------------------------------------------------------------------
+int vtkTyndallVolumeRepresentation::GetLastPathTraceSamples()
+{
+  return this->TyndallMapper->GetLastPathTraceSamples();
+}
+
+//------------------------------------------------------------------------------
 void vtkTyndallVolumeRepresentation::SetScatteringModel(int model)
 {
   this->Medium->SetScatteringModel(model);

@@ -72,6 +72,34 @@ public:
 
   ///@{
   /**
+   * The mapper's display transform (vtkTransmittanceVolumeMapper, which
+   * clamps them): exposure in stops ([-20, 20]; default 0), the tone curve
+   * (TONE_CURVE_LINEAR, TONE_CURVE_REINHARD or TONE_CURVE_ACES; default
+   * linear) and the sRGB encoding (default off).
+   */
+  void SetExposure(double stops);
+  void SetToneCurve(int curve);
+  void SetEncodeSRGB(int encode);
+  ///@}
+
+  ///@{
+  /**
+   * The mapper's path-traced mode (vtkTransmittanceVolumeMapper's
+   * PathTracing, default off): each still render adds samples to the
+   * picture up to PathTraceSamplesPerPixel ([1, 1e6]; default 1024), with
+   * at most PathTraceMaximumBounces scattering events per path ([1, 1000];
+   * default 8). ParaView renders a still view once: render again (pvpython:
+   * Render() in a loop) to refine it. GetLastPathTraceSamples(): the
+   * samples per pixel of the last picture (0: the map-based frame).
+   */
+  void SetPathTracing(int on);
+  void SetPathTraceSamplesPerPixel(int samples);
+  void SetPathTraceMaximumBounces(int bounces);
+  int GetLastPathTraceSamples();
+  ///@}
+
+  ///@{
+  /**
    * The medium's settings (vtkParticipatingMediumProperty, which clamps
    * them): the scattering model (EMISSION_ABSORPTION or SINGLE_SCATTERING;
    * default SINGLE_SCATTERING), the density scale ([0, 1e6]; default 1),

@@ -20,13 +20,17 @@ uniform sampler2D depthRangeTex;
 uniform int peelStage; // TYNDALL_PEEL_INITIALIZING ..
 uniform int opacityCoversRadiance;
 //VTK::Output::Dec
+//TYNDALL::Output
 
 // A premultiplied colour as the pass's 8-bit targets take it: the opacity at
 // least the radiance for an 8-bit compositor downstream (IceT, as
 // vtkTransmittanceCompositeFS.glsl does), else at least 1/255 where there
-// is radiance (the pass drops back fragments whose 8-bit opacity is 0).
+// is radiance (the pass drops back fragments whose 8-bit opacity is 0);
+// the colour through the mapper's display transform first (each range's
+// light is mapped before VTK blends the peels).
 vec4 tyndallPeelColor(vec4 c)
 {
+  c = tyndallDisplay(c);
   float radiance = max(c.r, max(c.g, c.b));
   if (opacityCoversRadiance == 1)
   {

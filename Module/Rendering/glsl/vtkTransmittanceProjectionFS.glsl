@@ -320,6 +320,8 @@ TyndallProjection tyndallGather(vec3 p0, vec3 w, float tNear, float tFar)
   return gathered;
 }
 
+//TYNDALL::Output
+
 void main()
 {
   vec3 p0, w;
@@ -336,5 +338,5 @@ void main()
     discard;
   }
   tyndallProjectionSurface(gathered, w, pixel);
-  gl_FragData[0] = pixel;
+  gl_FragData[0] = tyndallDisplay(pixel);
 }

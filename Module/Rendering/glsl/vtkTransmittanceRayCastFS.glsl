@@ -71,6 +71,10 @@ float tyndallOutputOpacity(vec3 radiance, float opacity)
 #endif
 }
 
+//TYNDALL::Output
+
+// (The display transform acts only where the pass draws straight into the
+// window: outputTransform is 0 for images.)
 void tyndallWrite(vec3 radiance, TyndallTransmittance Tv)
 {
 #if TYNDALL_CHROMATIC
@@ -78,7 +82,8 @@ void tyndallWrite(vec3 radiance, TyndallTransmittance Tv)
   gl_FragData[0] = vec4(radiance, opacity);
   gl_FragData[1] = vec4(1.0 - Tv, opacity);
 #else
-  gl_FragData[0] = vec4(radiance, tyndallOutputOpacity(radiance, 1.0 - Tv));
+  vec4 shown = tyndallDisplay(vec4(radiance, 1.0 - Tv));
+  gl_FragData[0] = vec4(shown.rgb, tyndallOutputOpacity(shown.rgb, shown.a));
 #endif
 }
 
