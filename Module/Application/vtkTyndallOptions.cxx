@@ -341,8 +341,8 @@ const Spec kOptions[] = {
   { "background2", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
     "top colour: makes the background a vertical gradient" },
   { "exposure", "", Kind::Number, -20, 20, false, "", "EV", "0", "Image", Both,
-    "the medium's radiance times 2^EV before the tone curve (the mapper's Exposure; the scene's "
-    "geometry and background are not changed)",
+    "the medium's radiance times 2^EV before the tone curve (the mapper's Exposure; the "
+    "background and geometry keep their colours where there is no medium)",
     KeyMode::Add, "e", "w", 0.5 },
   { "tone-curve", "", Kind::Choice, 0, 0, false, "linear|reinhard|aces", "C", "linear", "Image",
     Both,

@@ -1181,7 +1181,11 @@ void vtkTyndallSceneBuilder::ApplyDetail()
     noise->SetAmplitude(1.0);
   }
   const double deviation = noise->GetStandardDeviation() / noise->GetAmplitude();
-  noise->SetAmplitude(deviation > 0.0 ? o->GetNumber("detail-contrast") / deviation : 0.0);
+  const double amplitude = deviation > 0.0 ? o->GetNumber("detail-contrast") / deviation : 0.0;
+  if (std::abs(amplitude - noise->GetAmplitude()) > 1e-12 * amplitude)
+  {
+    noise->SetAmplitude(amplitude); // (not for a last bit's rounding)
+  }
   noise->SetOffset(1.0);
   noise->SetExtinctionScale(1.0);
   this->Property->SetDetailNoise(noise);

@@ -5,8 +5,12 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkSkybox.h"
 #include "vtkTextureObject.h"
 #include "vtkTransmittanceLightFrustum.h"
 #include "vtkTransmittanceMapMath.h"
@@ -17,6 +21,7 @@
 #include "vtkTyndallParticleMedium.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtkTyndallToneMapping.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -490,7 +495,36 @@ void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
 }
 
 //------------------------------------------------------------------------------
-void vtkTransmittanceFrame::SetOutputUniforms(vtkShaderProgram* program, bool toWindow) const
+namespace
+{
+// Whether the frame buffer holds the renderer's background colour or
+// gradient under the volume (vtkOpenGLRenderer::Clear() drew it, and no
+// skybox over it).
+bool BackgroundKnown(vtkRenderer* r)
+{
+  vtkRenderWindow* w = r ? r->GetRenderWindow() : nullptr;
+  if (!w || r->Transparent() || !r->GetErase() || !w->GetErase() || r->GetTexturedBackground() ||
+    r->GetBackgroundAlpha() < 1.0)
+  {
+    return false;
+  }
+  vtkPropCollection* props = r->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (vtkSkybox::SafeDownCast(prop) && prop->GetVisibility())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetOutputUniforms(
+  vtkShaderProgram* program, bool toWindow, bool background) const
 {
   static_assert(vtkTyndallToneMapping::LINEAR == 0 && vtkTyndallToneMapping::ACES == 2,
     "the mapper's ToneCurve numbers are vtkTyndallToneMapping's");
@@ -504,10 +538,11 @@ void vtkTransmittanceFrame::SetOutputUniforms(vtkShaderProgram* program, bool to
   // The background the renderer drew under the medium (vtkOpenGLRenderer::
   // Clear()): its clear colour, or its gradient from Background (bottom) to
   // Background2 (top) over the viewport, of colours truncated to 8 bits.
-  // Unknown (taken as black) where the renderer keeps the colour buffer or
-  // draws a texture.
+  // Unknown (taken as black) where the renderer or the window keeps the
+  // colour buffer, draws a texture or a skybox, clears to a transparent
+  // background, or the caller says so (depth peeling's targets).
   vtkRenderer* r = this->Renderer;
-  const bool known = r && !r->Transparent() && r->GetErase() && !r->GetTexturedBackground();
+  const bool known = background && BackgroundKnown(r);
   float bottom[3] = { 0.0f, 0.0f, 0.0f }, top[3] = { 0.0f, 0.0f, 0.0f };
   float viewportY[2] = { 0.0f, 1.0f };
   if (known)
@@ -523,10 +558,12 @@ void vtkTransmittanceFrame::SetOutputUniforms(vtkShaderProgram* program, bool to
       top[k] =
         gradient ? std::floor(static_cast<float>(t[k] * 255)) / 255.0f : static_cast<float>(t[k]);
     }
-    int size[2], origin[2];
-    r->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-    viewportY[0] = static_cast<float>(origin[1]);
-    viewportY[1] = static_cast<float>(std::max(size[1], 1));
+    // gl_FragCoord is relative to the frame buffer drawn into: the
+    // viewport the draw uses.
+    GLint viewport[4] = { 0, 0, 1, 1 };
+    this->State->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+    viewportY[0] = static_cast<float>(viewport[1]);
+    viewportY[1] = static_cast<float>(std::max(viewport[3], 1));
   }
   program->SetUniformi("outputBackground", known ? 1 : 0);
   program->SetUniform3f("outputBottom", bottom);

@@ -142,9 +142,11 @@ public:
   /**
    * Sets the display transform's uniforms (vtkTransmittanceOutputFS.glsl):
    * the mapper's where `toWindow` (the program draws into the renderer's
-   * frame buffer), else the identity (an image of the mapper's own).
+   * frame buffer), else the identity (an image of the mapper's own). With
+   * `background` false the background is taken as black (targets that are
+   * not drawn over the renderer's background: depth peeling's).
    */
-  void SetOutputUniforms(vtkShaderProgram* program, bool toWindow) const;
+  void SetOutputUniforms(vtkShaderProgram* program, bool toWindow, bool background = true) const;
 
   /**
    * Sets the camera ray's uniforms (vtkTransmittanceCameraRayFS.glsl):

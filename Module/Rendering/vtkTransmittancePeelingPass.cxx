@@ -180,7 +180,9 @@ bool vtkTransmittancePeelingPass::Composite(const vtkTransmittanceFrame& frame,
   program->SetUniformi("backImage", back->GetTextureUnit());
   program->SetUniformi("peelStage", stage);
   program->SetUniformi("opacityCoversRadiance", opacityCoversRadiance ? 1 : 0);
-  frame.SetOutputUniforms(program, true);
+  // (Each peel's light is mapped alone, before VTK blends the peels; over
+  // black, as the peels are not drawn over the background.)
+  frame.SetOutputUniforms(program, true, false);
   pass->SetShaderParameters(program, mapper, volume, nullptr);
   // The pass's targets, blending and viewport as it set them; no depth test.
   vtkOpenGLState::ScopedglEnableDisable depth(frame.State, GL_DEPTH_TEST);

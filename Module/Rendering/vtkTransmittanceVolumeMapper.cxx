@@ -465,8 +465,8 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   key.insert(key.end(), placement->GetData(), placement->GetData() + 16);
   key.insert(key.end(),
     { double(self->GetSceneMTime()), double(volume->GetProperty()->GetMTime()),
-      double(input ? input->GetMTime() : 0),
-      double(this->GetUsedMaps()->GetBuildSerial()), double(this->Cache->GetBuildCount()) });
+      double(input ? input->GetMTime() : 0), double(this->GetUsedMaps()->GetBuildSerial()),
+      double(this->Cache->GetBuildCount()) });
   const std::vector<double>& clip = this->Scene.GetMedium().GetClipRegion().GetKey();
   key.insert(key.end(), clip.begin(), clip.end());
   vtkLightCollection* lights = renderer->GetLights();
@@ -485,10 +485,28 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   props->InitTraversal(pit);
   while (vtkProp* prop = props->GetNextProp(pit))
   {
-    if (vtkProp3D::SafeDownCast(prop) && prop != volume)
+    if (!vtkProp3D::SafeDownCast(prop) || prop == volume)
     {
-      key.push_back(prop->GetVisibility() ? double(prop->GetRedrawMTime()) : -1.0);
+      continue;
     }
+    // Another Tyndall volume: its redraw time without its mapper's display
+    // transform (vtkTyndallSceneBuilder sets every mapper's).
+    vtkVolume* other = vtkVolume::SafeDownCast(prop);
+    auto* tyndall =
+      other ? vtkTransmittanceVolumeMapper::SafeDownCast(other->GetMapper()) : nullptr;
+    vtkMTimeType redraw = 0;
+    if (tyndall)
+    {
+      vtkDataObject* data = tyndall->GetInputDataObject(0, 0);
+      redraw = std::max({ other->GetMTime(), tyndall->GetSceneMTime(),
+        other->GetProperty() ? other->GetProperty()->GetMTime() : vtkMTimeType(0),
+        data ? data->GetMTime() : vtkMTimeType(0) });
+    }
+    else
+    {
+      redraw = prop->GetRedrawMTime();
+    }
+    key.push_back(prop->GetVisibility() ? double(redraw) : -1.0);
   }
   return key;
 }

@@ -16,7 +16,7 @@ uniform int outputSRGB;
 uniform int outputBackground;       // 0: none known (black), 1: outputBottom to outputTop
 uniform vec3 outputBottom;          // the background at the viewport's bottom edge
 uniform vec3 outputTop;             // ... and top edge (a gradient; else the same)
-uniform vec2 outputViewportY;       // the viewport's first row and height, in window pixels
+uniform vec2 outputViewportY;       // the drawn viewport's first row and height (gl_FragCoord's)
 
 float tyndallToneCurve(float x)
 {
