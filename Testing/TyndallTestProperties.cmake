@@ -30,6 +30,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 41
   Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace 40
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 70
+  Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 8
   Tyndall::RenderingCxx-TestTransmittanceMapperOctaves 37
   Tyndall::RenderingCxx-TestTransmittanceMapperTransmittanceCache 25
   TyndallParaView-MPI 24
@@ -97,6 +98,9 @@ set(tyndall_no_sanitizer_tests
   # 70 s unsanitized: the CPU path tracer at 4096 spp beside the GPU's paths
   # (TestVolumetricPathTracer; the mapper's path-tracing mode: TyndallCLI-PathTrace*)
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace
+  # 8 s unsanitized: 1024 spp of paths at 64^2 (the denoiser's twin: TestTyndallDenoiser;
+  # the mapper's denoised paths: TyndallCLI-PathTraceDenoise)
+  Tyndall::RenderingCxx-TestTransmittanceMapperDenoise
   # 38 s: the majorant grid (TyndallCLI-*, every rendering test kept: skipping is on by default)
   Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace
   # 28 s: the CPU twin of the maps (TestTransmittanceMapMath, TestTransmittanceLightFrustum)

@@ -1104,7 +1104,7 @@ void Viewer::Key(int key)
     this->Playing = false;
     this->StepFrame(name == "next-frame" ? 1 : -1);
   }
-  else if (name == "exposure")
+  else if (name == "exposure" || name == "path-denoise")
   {
     this->Builder->ApplyDisplayOptions(); // keeps the path-traced picture's samples
   }

@@ -247,6 +247,11 @@ const Spec kOptions[] = {
   { "path-shadows", "", Kind::Choice, 0, 0, false, "maps|tracked", "M", "maps", "Scattering", Both,
     "with --path-trace: the light's transmittance at a path's collisions read from the "
     "transmittance maps (fast) or ratio tracked (unbiased)" },
+  { "path-denoise", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "with --path-trace: show the paths' picture denoised, an edge-avoiding filter of what the "
+    "paths add to the map-based frame, which guides it (its edges; noise-free); the filter "
+    "narrows as the samples grow; the EXR is denoised too",
+    KeyMode::Toggle, "x" },
   { "detail", "", Kind::Flag, 0, 0, false, "", "", "", "Procedural detail", Both,
     "multiply the medium's extinction by cosine noise evaluated in the shader, never voxelised "
     "(the volume becomes the coarse shape); light transmittance through it is exact with "
@@ -857,9 +862,9 @@ public:
         ? "--sequence needs an input (numbered files or a 4-D file)"
         : "--sequence renders frames FIRST to LAST into PNGs: give no --frame, --frames or --exr";
     }
-    if ((set("path-bounces") || set("path-shadows")) && !set("path-trace"))
+    if ((set("path-bounces") || set("path-shadows") || set("path-denoise")) && !set("path-trace"))
     {
-      return "--path-bounces and --path-shadows need --path-trace";
+      return "--path-bounces, --path-shadows and --path-denoise need --path-trace";
     }
     if (set("skip-bad-frames") && !set("sequence"))
     {

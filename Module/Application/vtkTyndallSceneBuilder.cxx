@@ -965,6 +965,7 @@ void vtkTyndallSceneBuilder::ApplyDisplayOptions(vtkTransmittanceVolumeMapper* m
   mapper->SetToneCurve(
     linear ? vtkTransmittanceVolumeMapper::TONE_CURVE_LINEAR : o->GetChoice("tone-curve"));
   mapper->SetEncodeSRGB(!linear && o->GetFlag("srgb"));
+  mapper->SetPathTraceDenoise(o->GetFlag("path-denoise")); // the EXR's too
 }
 
 //------------------------------------------------------------------------------

@@ -100,9 +100,10 @@ public:
   void ApplyOptions();
 
   /**
-   * Sets only the mappers' display transform (--exposure, --tone-curve,
-   * --srgb; the identity with LinearOutput) from the options: a
-   * path-traced picture keeps its samples.
+   * Sets only how the mappers show their picture from the options: the
+   * display transform (--exposure, --tone-curve, --srgb; the identity with
+   * LinearOutput) and the paths' denoiser (--path-denoise, whatever
+   * LinearOutput). A path-traced picture keeps its samples.
    */
   void ApplyDisplayOptions();
 

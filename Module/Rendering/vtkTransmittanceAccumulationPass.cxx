@@ -214,7 +214,7 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
         chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr, upscaled, reporter);
   }
   return this->AddToHistory(frame, result, width, height, historyFrames, reporter) &&
-    this->Composite(frame, this->History, nullptr, upscaled, reporter);
+    (!composite || this->Composite(frame, this->History, nullptr, upscaled, reporter));
 }
 
 //------------------------------------------------------------------------------
@@ -227,6 +227,13 @@ bool vtkTransmittanceAccumulationPass::CompositeHistory(
     return false;
   }
   return this->Composite(frame, this->History, nullptr, false, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceAccumulationPass::CompositeImage(
+  const vtkTransmittanceFrame& frame, vtkTextureObject* image, vtkObject* reporter)
+{
+  return this->Composite(frame, image, nullptr, false, reporter);
 }
 
 //------------------------------------------------------------------------------

@@ -72,8 +72,8 @@ public:
    * `historyFrames` results before it instead (a history of another size
    * restarts at this frame). `chromatic`: the passes draw a second image of
    * per-channel opacity (then `historyFrames` must be negative). With
-   * `composite` false (and `historyFrames` negative) the result is kept in
-   * GetResult() and not composited. False (with an error through
+   * `composite` false nothing is composited: the result is kept in
+   * GetResult() (and the mean in GetHistory()). False (with an error through
    * `reporter`) when the images or their framebuffer cannot be made.
    */
   bool Render(const vtkTransmittanceFrame& frame, const int viewport[4], int width, int height,
@@ -98,6 +98,27 @@ public:
    */
   bool CompositeHistory(const vtkTransmittanceFrame& frame, vtkObject* reporter);
 
+  /**
+   * Makes `image` a width x height RGBA32F image in the frame's window
+   * (clamped to its edges), keeping the one it holds when it has that size
+   * and context. False (with an error through `reporter`) when it cannot be
+   * allocated (`image` then null).
+   */
+  static bool AllocateImage(const vtkTransmittanceFrame& frame,
+    vtkSmartPointer<vtkTextureObject>& image, int width, int height, vtkObject* reporter);
+
+  /**
+   * Composites `image` (premultiplied radiance and opacity, the viewport's
+   * size) over the renderer's viewport, as the running average is
+   * (CompositeHistory()). False (with an error through `reporter`) when the
+   * compositing program does not compile.
+   */
+  bool CompositeImage(
+    const vtkTransmittanceFrame& frame, vtkTextureObject* image, vtkObject* reporter);
+
+  /// The running average (null before the first Render() that keeps one).
+  vtkTextureObject* GetHistory() const { return this->HistoryFrames > 0 ? this->History : nullptr; }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
 protected:
@@ -116,8 +137,6 @@ private:
   bool Composite(const vtkTransmittanceFrame& frame, vtkTextureObject* image,
     vtkTextureObject* opacity, bool upscaled, vtkObject* reporter);
 
-  bool AllocateImage(const vtkTransmittanceFrame& frame, vtkSmartPointer<vtkTextureObject>& image,
-    int width, int height, vtkObject* reporter);
   /// The texture-copy program, bound; nullptr (with an error) when it does not compile.
   vtkShaderProgram* CompositeProgram(const vtkTransmittanceFrame& frame, vtkObject* reporter);
   bool AddToHistory(const vtkTransmittanceFrame& frame, vtkTextureObject* image, int width,

@@ -8,6 +8,7 @@
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallDenoiser.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMajorantGrid.h"
@@ -179,14 +180,51 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
   program->SetUniformi("pathCollisionCost", static_cast<int>(std::ceil(CollisionCost(frame))));
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
-  return this->Accumulation->Render(
-    frame, viewport, viewport[2], viewport[3], 1, draw, reporter, std::max(historyFrames, 0));
+  if (historyFrames <= 0)
+  {
+    this->GuideReady = false; // a new mean: a new view
+  }
+  if (!this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw, reporter,
+        std::max(historyFrames, 0), false, !settings.Denoise))
+  {
+    return false;
+  }
+  return !settings.Denoise || this->ShowDenoised(frame, inputs, reporter);
 }
 
 //------------------------------------------------------------------------------
-bool vtkTransmittancePathTracePass::Redraw(const vtkTransmittanceFrame& frame, vtkObject* reporter)
+bool vtkTransmittancePathTracePass::Redraw(const vtkTransmittanceFrame& frame,
+  const vtkTransmittanceRayCastPass::Inputs& inputs, const Settings& settings, vtkObject* reporter)
 {
+  if (settings.Denoise && this->Accumulation->GetHistory())
+  {
+    return this->ShowDenoised(frame, inputs, reporter);
+  }
   return this->Accumulation->CompositeHistory(frame, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& frame,
+  const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter)
+{
+  if (!this->GuideReady)
+  {
+    vtkTransmittanceRayCastPass::Inputs guide = inputs;
+    guide.Offscreen = true;
+    guide.Reduction = 1;
+    guide.StepScale = 1.0;
+    guide.DetailSamples = 0; // marched: no noise of its own
+    guide.HistoryFrames = 0;
+    this->GuideReady = this->GuideCast->Render(frame, guide, reporter);
+    if (!this->GuideReady)
+    {
+      return false;
+    }
+  }
+  vtkTextureObject* denoised = this->Denoiser->Filter(frame, this->Accumulation->GetHistory(),
+    this->GuideCast->GetImage(0), vtkTyndallDenoiser::DefaultIterations,
+    vtkTyndallDenoiser::EdgeStopFor(this->GetSamples()), reporter);
+  return denoised && this->Accumulation->CompositeImage(frame, denoised, reporter);
 }
 
 //------------------------------------------------------------------------------
@@ -194,6 +232,9 @@ void vtkTransmittancePathTracePass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Quad.Release(window);
   this->Accumulation->ReleaseGraphicsResources(window);
+  this->GuideCast->ReleaseGraphicsResources(window);
+  this->Denoiser->ReleaseGraphicsResources(window);
+  this->GuideReady = false;
   this->LastSamplesPerFrame = 0;
 }
 

@@ -32,6 +32,12 @@
  * data). Refusal() names what it does not draw yet; the mapper then draws
  * its map-based frame and says why once.
  *
+ * With Settings::Denoise the mean is composited through the denoiser
+ * (vtkTransmittanceDenoisePass, vtkTyndallDenoiser): the map-based frame of
+ * the same view, drawn once when the mean starts (marched, full size), is
+ * its noise-free guide; the mean itself is kept, so turning it on or off
+ * keeps the samples.
+ *
  * Internal to Tyndall::Rendering.
  */
 
@@ -42,6 +48,7 @@
 #include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
 #include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
+#include "vtkTransmittanceDenoisePass.h"      // For vtkTransmittanceDenoisePass
 #include "vtkTransmittanceRayCastPass.h"      // For vtkTransmittanceRayCastPass::Inputs
 #include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
 #include "vtkTransmittanceShaderSource.h"     // For vtkTransmittanceShaderSource::Variant
@@ -69,6 +76,11 @@ public:
     bool TrackedShadows = false;
     /// Picks the random numbers, with the frame's index and the pixel.
     int Seed = 0;
+    /**
+     * The mean is shown denoised (vtkTransmittanceDenoisePass, guided by the
+     * map-based frame); it stays the mean of the paths.
+     */
+    bool Denoise = false;
   };
 
   /**
@@ -92,8 +104,14 @@ public:
   bool Render(const vtkTransmittanceFrame& frame, const vtkTransmittanceRayCastPass::Inputs& inputs,
     const Settings& settings, int historyFrames, vtkObject* reporter);
 
-  /// Composites the mean as it stands (no new paths); false (with an error) without one.
-  bool Redraw(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+  /**
+   * Composites the mean as it stands (no new paths), denoised with
+   * Settings::Denoise; false (with an error) without one. `inputs` as
+   * Render()'s (the denoiser's guide is drawn from them when the mean has
+   * none yet).
+   */
+  bool Redraw(const vtkTransmittanceFrame& frame, const vtkTransmittanceRayCastPass::Inputs& inputs,
+    const Settings& settings, vtkObject* reporter);
 
   /// Frames in the mean after the last Render().
   int GetHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
@@ -139,9 +157,19 @@ private:
   static double CollisionCost(const vtkTransmittanceFrame& frame);
   /// SamplesFor()'s bound on one path's loop trips.
   static double PathBound(const vtkTransmittanceFrame& frame, const Settings& settings);
+  /**
+   * Composites the mean denoised: the guide (the map-based frame, full
+   * size, marched) drawn first when the mean has none, then the filter at
+   * the mean's samples.
+   */
+  bool ShowDenoised(const vtkTransmittanceFrame& frame,
+    const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
 
   vtkTransmittanceShaderQuad Quad;
   vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
+  vtkNew<vtkTransmittanceRayCastPass> GuideCast; // the denoiser's guide, kept in its image
+  vtkNew<vtkTransmittanceDenoisePass> Denoiser;
+  bool GuideReady = false; // GuideCast's image is the mean's map-based frame
   int LastSamplesPerFrame = 0;
 };
 

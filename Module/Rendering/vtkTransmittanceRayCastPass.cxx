@@ -55,8 +55,8 @@ bool vtkTransmittanceRayCastPass::Render(
   const int passes = (steps + perPass - 1) / perPass;
   // A coloured extinction needs a second render target: never drawn direct.
   const bool chromatic = frame.Medium->GetParameters().GetChromatic();
-  const bool direct =
-    !sampled && passes == 1 && reduction == 1 && !chromatic && !inputs.DepthRanges;
+  const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic &&
+    !inputs.DepthRanges && !inputs.Offscreen;
   // A ray drawn in one pass into an image (a reduced one, a depth-peeling
   // part) needs no earlier state: the shader of the direct draw, which
   // discards the rays that miss (the image is cleared). llvmpipe draws it 3
@@ -124,7 +124,8 @@ bool vtkTransmittanceRayCastPass::Render(
   };
   vtkTransmittanceAccumulationPass* accumulation = this->Accumulation[inputs.Segment == 1 ? 1 : 0];
   return accumulation->Render(frame, viewport, width, height, passes, draw, reporter,
-    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic, !inputs.DepthRanges);
+    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic,
+    !inputs.DepthRanges && !inputs.Offscreen);
 }
 
 //------------------------------------------------------------------------------

@@ -88,6 +88,8 @@ public:
      */
     bool DepthRanges = false;
     int Segment = 0;
+    /// The image kept in GetImage(0), not composited (the path tracer's denoising guide).
+    bool Offscreen = false;
   };
 
   /**

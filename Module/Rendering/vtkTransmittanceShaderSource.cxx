@@ -6,6 +6,7 @@
 #include "vtkTransmittanceVolumeBricks.h"
 #include "vtkTyndallClipRegion.h"
 #include "vtkTyndallComponents.h"
+#include "vtkTyndallDenoiser.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallIsosurfaces.h"
 #include "vtkTyndallProjection.h"
@@ -17,6 +18,7 @@
 #include "vtkTransmittanceCameraRayFS.h"
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceCompositeFS.h"
+#include "vtkTransmittanceDenoiseFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceLightMapFS.h"
 #include "vtkTransmittanceLightsFS.h"
@@ -168,6 +170,18 @@ std::string vtkTransmittanceShaderSource::GetPeelingConstants()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkTransmittanceShaderSource::GetDenoiseConstants()
+{
+  using D = vtkTyndallDenoiser;
+  std::ostringstream os;
+  os << std::setprecision(9) << std::showpoint << "#define TYNDALL_DENOISE_EPSILON " << D::Epsilon
+     << "\n#define TYNDALL_DENOISE_KERNEL_0 " << D::KernelWeight(0)
+     << "\n#define TYNDALL_DENOISE_KERNEL_1 " << D::KernelWeight(1)
+     << "\n#define TYNDALL_DENOISE_KERNEL_2 " << D::KernelWeight(2) << "\n";
+  return os.str();
+}
+
+//------------------------------------------------------------------------------
 std::string vtkTransmittanceShaderSource::GetOutputSource()
 {
   using T = vtkTyndallToneMapping;
@@ -210,6 +224,12 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
   {
     std::string source = vtkTransmittanceCompositeFS;
     vtkShaderProgram::Substitute(source, "//TYNDALL::Output", GetOutputSource());
+    return source;
+  }
+  if (pass == DENOISE)
+  {
+    std::string source = vtkTransmittanceDenoiseFS;
+    vtkShaderProgram::Substitute(source, "//TYNDALL::Constants", GetDenoiseConstants());
     return source;
   }
   if (pass == PEEL_RANGES || pass == PEEL_COMPOSITE)

@@ -101,7 +101,8 @@ public:
     PROJECTION,     // VTK's projection blend modes (Variant::Projection)
     PEEL_RANGES,    // the depth ranges of a depth-peeling stage (vtkTransmittancePeelingPass)
     PEEL_COMPOSITE, // the ray-cast images into a depth-peeling stage's targets
-    PATH_TRACE      // progressive path tracing (vtkTransmittancePathTracePass), RAY_CAST's variant
+    PATH_TRACE,     // progressive path tracing (vtkTransmittancePathTracePass), RAY_CAST's variant
+    DENOISE         // a pass of the path-traced picture's denoiser (vtkTransmittanceDenoisePass)
   };
 
   /// The compile-time variants of the shaders.
@@ -276,6 +277,9 @@ public:
    * buffer (RAY_CAST, PROJECTION, COMPOSITE, PEEL_COMPOSITE).
    */
   static std::string GetOutputSource();
+
+  /// The denoiser's constants (vtkTyndallDenoiser's kernel and floor) for DENOISE's shader.
+  static std::string GetDenoiseConstants();
 
   /// What an occlusion texel holds where the light's ray meets no opaque surface.
   static constexpr float NoOccluder = 1.0e30f;

@@ -597,6 +597,7 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   settings.MaximumBounces = self->GetPathTraceMaximumBounces();
   settings.TrackedShadows = self->GetPathTraceShadows() == PATH_SHADOWS_TRACKED;
   settings.Seed = self->GetPathTraceSeed();
+  settings.Denoise = self->GetPathTraceDenoise();
   const int perFrame = vtkTransmittancePathTracePass::SamplesFor(this->Frame, settings);
   const bool cut = vtkTransmittancePathTracePass::MayCutPaths(this->Frame, settings);
   if (cut && !this->WarnedCutPaths)
@@ -620,7 +621,7 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   this->WarnedPathGeometry = inputs.Occlusion != nullptr;
   if (this->PathFrames > 0 && this->PathFrames * perFrame >= self->GetPathTraceSamplesPerPixel())
   {
-    this->Complete = this->PathTracer->Redraw(this->Frame, self);
+    this->Complete = this->PathTracer->Redraw(this->Frame, still, settings, self);
   }
   else
   {
@@ -1270,6 +1271,12 @@ void vtkTransmittanceVolumeMapper::SetEncodeSRGB(bool encode)
 }
 
 //------------------------------------------------------------------------------
+void vtkTransmittanceVolumeMapper::SetPathTraceDenoise(bool denoise)
+{
+  this->SetDisplayValue(this->PathTraceDenoise, denoise);
+}
+
+//------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastPathTraceSamples()
 {
   return this->Internals->Complete ? this->Internals->PathSamples : 0;
@@ -1393,6 +1400,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PathTraceShadows: "
      << (this->PathTraceShadows == PATH_SHADOWS_TRACKED ? "Tracked" : "FromMaps") << "\n";
   os << indent << "PathTraceSeed: " << this->PathTraceSeed << "\n";
+  os << indent << "PathTraceDenoise: " << (this->PathTraceDenoise ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneCurve: " << vtkTyndallToneMapping::GetCurveName(this->ToneCurve) << "\n";
   os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";

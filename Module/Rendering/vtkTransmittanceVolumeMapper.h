@@ -477,6 +477,23 @@ public:
 
   ///@{
   /**
+   * Shows the path-traced picture denoised (default off): an edge-avoiding
+   * a-trous filter of what the paths add to the map-based frame, that frame
+   * (noise free, with the same silhouette, shadows and classification) its
+   * guide: guide + A(mean - guide) (vtkTyndallDenoiser, its CPU twin and
+   * its description). The filter narrows as the samples grow, so the
+   * picture tends to the paths' mean; the mean itself is kept, and turning
+   * the denoiser on or off keeps its samples (as the display transform
+   * does). Costs one map-based frame when the paths start and two
+   * filtering passes per frame. Off in the tests unless a test asks.
+   */
+  void SetPathTraceDenoise(bool denoise);
+  vtkGetMacro(PathTraceDenoise, bool);
+  vtkBooleanMacro(PathTraceDenoise, bool);
+  ///@}
+
+  ///@{
+  /**
    * The display transform of the mapper's frame (vtkTyndallToneMapping, its
    * CPU twin): per channel, the medium's linear radiance times
    * 2^Exposure, then the tone curve, then the sRGB encoding, applied to
@@ -727,6 +744,7 @@ protected:
   int PathTraceMaximumBounces = 8;
   int PathTraceShadows = PATH_SHADOWS_FROM_MAPS;
   int PathTraceSeed = 0;
+  bool PathTraceDenoise = false;
   double Exposure = 0.0;
   int ToneCurve = TONE_CURVE_LINEAR;
   bool EncodeSRGB = false;
@@ -739,7 +757,8 @@ protected:
   /**
    * The modification time of what the picture shows: GetMTime(), except
    * where the last change was to the display transform (Exposure,
-   * ToneCurve, EncodeSRGB), which changes only how the picture is shown.
+   * ToneCurve, EncodeSRGB) or the denoiser (PathTraceDenoise), which change
+   * only how the picture is shown.
    */
   vtkMTimeType GetSceneMTime();
 

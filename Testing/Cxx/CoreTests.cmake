@@ -8,6 +8,7 @@ vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseBadInput.cxx
   TestParticleKernel.cxx
   TestTransmittanceMapMath.cxx
+  TestTyndallDenoiser.cxx
   TestTyndallToneMapping.cxx)
 vtk_add_test_cxx(TyndallCoreCxxTests tests
   TestCosineNoiseCloudRender.cxx)

@@ -16,6 +16,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperOctaves.cxx
   TestTransmittanceMapperPathTrace.cxx
   TestTransmittanceMapperToneMapping.cxx
+  TestTransmittanceMapperDenoise.cxx
   TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperChromatic.cxx

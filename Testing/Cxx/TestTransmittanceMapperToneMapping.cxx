@@ -22,17 +22,16 @@
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticipatingMediumProperty.h"
-#include "vtkPixelBufferObject.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTextureObject.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallToneMapping.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
 #include "TyndallTestCheck.h"
+#include "TyndallTestFloatFrame.h"
 #include "TyndallTestPathScene.h"
 #include "TyndallTestScene.h"
 
@@ -45,29 +44,8 @@
 namespace
 {
 using tyndall_test::Check;
+using tyndall_test::RenderFloat;
 using Mapper = vtkTransmittanceVolumeMapper;
-
-// Renders the window and reads its float frame buffer back (RGBA, bottom-up).
-std::vector<float> RenderFloat(vtkRenderWindow* window, vtkFramebufferPass* pass)
-{
-  window->Render();
-  window->MakeCurrent();
-  vtkTextureObject* texture = pass->GetColorTexture();
-  std::vector<float> rgba;
-  vtkPixelBufferObject* pbo = texture ? texture->Download() : nullptr;
-  const float* data = pbo ? static_cast<const float*>(pbo->MapPackedBuffer()) : nullptr;
-  if (data)
-  {
-    rgba.assign(data, data + size_t(texture->GetWidth()) * texture->GetHeight() * 4);
-    pbo->UnmapPackedBuffer();
-  }
-  if (pbo)
-  {
-    pbo->Delete();
-  }
-  Check(!rgba.empty(), "the float frame buffer reads back");
-  return rgba;
-}
 
 struct Transform
 {

@@ -138,6 +138,18 @@ check(samples[0] == 0 and samples[-1] == 8 and samples == sorted(samples),
       "still renders refine the path-traced picture to 8 samples: %s" % samples)
 value_db = scene.psnr(traced, picture)
 check(value_db < 40.0, "the path-traced picture is not the map-based one: %.1f dB" % value_db)
+# The denoiser shows the same samples filtered (it keeps them); off again,
+# the mean as it was.
+display.TyndallPathTraceDenoise = 1
+denoised, _ = screenshot(view, "plugin-smoke-paths-denoised.png")
+display.UpdatePropertyInformation()
+kept = display.GetProperty("TyndallPathTraceSamplesDone").GetData()
+value_db = scene.psnr(denoised, traced)
+check(kept == 8 and value_db < 60.0,
+      "the denoiser keeps the 8 samples (%s) and filters them: %.1f dB" % (kept, value_db))
+display.TyndallPathTraceDenoise = 0
+undone, _ = screenshot(view, "plugin-smoke-paths-undenoised.png")
+check(scene.psnr(undone, traced) == float("inf"), "the denoiser off gives the mean again")
 display.TyndallPathTracing = 0
 again, _ = screenshot(view, "plugin-smoke-paths-off.png")
 check(scene.psnr(again, picture) == float("inf"), "path tracing off gives the first picture")

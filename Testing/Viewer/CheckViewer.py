@@ -333,7 +333,7 @@ def paths_mode(args):
         failures.append("a frame while dragging was not the map-based frame: %s"
                         % [f["paths"] for f in drags])
     before = [f["paths"] for f in still[:4]]
-    after = [f["paths"] for f in still[4:]]
+    after = [f["paths"] for f in still[4:8]]
     grows = lambda samples: all(b > a for a, b in zip(samples, samples[1:]))
     # The first frame is the map-based one; the paths refine the next.
     if len(before) != 4 or before[0] != 0 or not grows(before):
@@ -342,6 +342,41 @@ def paths_mode(args):
     # the paths start again from their first frame.
     if len(after) != 4 or not grows(after) or not 0 < after[0] < before[-1]:
         failures.append("the paths did not start again after the drag: %s" % after)
+    return failures
+
+
+def denoise_mode(args):
+    """The key "x" (--path-denoise) on a finished path-traced picture (8
+    samples per pixel): the picture shown denoised (it differs), then the
+    mean again (the same picture), its samples kept throughout."""
+    os.makedirs(args.output_dir, exist_ok=True)
+    shots = [os.path.join(args.output_dir, "denoise_%s.png" % k) for k in ("off", "on", "again")]
+    for shot in shots:
+        if os.path.exists(shot):
+            os.remove(shot)
+    events = ["hud off", "frames 4", "screenshot " + shots[0], "key x", "screenshot " + shots[1],
+              "key x", "screenshot " + shots[2], "quit"]
+    result = run([args.viewer, "-s", "64", "64", "-r", "32", "--no-detail", "--path-trace", "8",
+                  "--events", "; ".join(events)])
+    if result.returncode != 0:
+        return ["the viewer exited with %d" % result.returncode]
+    frames = parse_frames(result.stdout)
+    samples = [f["paths"] for f in frames]
+    print("samples per pixel per frame: %s" % samples)
+    failures = []
+    if len(samples) < 6 or samples[:3] != [0, 4, 8] or any(n != 8 for n in samples[2:]):
+        failures.append("the picture did not finish at 8 samples and keep them: %s" % samples)
+    pictures = [read_png(shot) for shot in shots]
+    if any(p is None for p in pictures):
+        return failures + ["cannot read the screenshots"]
+    toggled = psnr(pictures[0], pictures[1])
+    again = psnr(pictures[0], pictures[2])
+    print("the mean against the denoised picture: %s dB (below 40); against the mean again: %s dB"
+          % (toggled, again))
+    if toggled is None or toggled >= 40.0:
+        failures.append("the key 'x' did not denoise the picture (%s dB)" % toggled)
+    if again != math.inf:
+        failures.append("the key 'x' again did not give the mean back (%s dB)" % again)
     return failures
 
 
@@ -402,12 +437,15 @@ def main():
     q.add_argument("--last", type=int, required=True)
     f = sub.add_parser("failures")
     f.add_argument("--viewer", required=True)
+    t = sub.add_parser("denoise")
+    t.add_argument("--viewer", required=True)
+    t.add_argument("--output-dir", required=True)
     t = sub.add_parser("paths")
     t.add_argument("--viewer", required=True)
     args = parser.parse_args()
 
     modes = {"scripted": scripted, "sequence": sequence_mode, "slice": slice_mode,
-             "exposure": exposure_mode, "paths": paths_mode, "failures": failures_mode}
+             "exposure": exposure_mode, "paths": paths_mode, "denoise": denoise_mode, "failures": failures_mode}
     failures = modes[args.mode](args)
     for message in failures:
         print("FAIL:", message)

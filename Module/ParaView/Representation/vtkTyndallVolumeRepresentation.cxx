@@ -220,6 +220,12 @@ void vtkTyndallVolumeRepresentation::SetPathTraceMaximumBounces(int bounces)
 }
 
 //------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetPathTraceDenoise(int on)
+{
+  this->TyndallMapper->SetPathTraceDenoise(on != 0);
+}
+
+//------------------------------------------------------------------------------
 int vtkTyndallVolumeRepresentation::GetLastPathTraceSamples()
 {
   return this->TyndallMapper->GetLastPathTraceSamples();

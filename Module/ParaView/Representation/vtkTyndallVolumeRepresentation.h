@@ -88,13 +88,15 @@ public:
    * PathTracing, default off): each still render adds samples to the
    * picture up to PathTraceSamplesPerPixel ([1, 1e6]; default 1024), with
    * at most PathTraceMaximumBounces scattering events per path ([1, 1000];
-   * default 8). ParaView renders a still view once: render again (pvpython:
-   * Render() in a loop) to refine it. GetLastPathTraceSamples(): the
-   * samples per pixel of the last picture (0: the map-based frame).
+   * default 8), shown denoised with PathTraceDenoise (default off; it
+   * keeps the samples). ParaView renders a still view once: render again
+   * (pvpython: Render() in a loop) to refine it. GetLastPathTraceSamples():
+   * the samples per pixel of the last picture (0: the map-based frame).
    */
   void SetPathTracing(int on);
   void SetPathTraceSamplesPerPixel(int samples);
   void SetPathTraceMaximumBounces(int bounces);
+  void SetPathTraceDenoise(int on);
   int GetLastPathTraceSamples();
   ///@}
 
