@@ -54,26 +54,9 @@ fi
 # minutes: the path tracer).
 pictures="$(mktemp -d)"
 run "$build/bin/BenchMultipleScattering" --size 96 --spp 1024 --no-gpu --pictures "$pictures"
-/usr/bin/python3 - "$pictures" "$images/multiple-scattering.png" <<'PY'
-import sys
-from vtkmodules.vtkFiltersCore import vtkImageAppend
-from vtkmodules.vtkImagingCore import vtkImageResize
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-rows = vtkImageAppend()
-rows.SetAppendAxis(1)
-for key in ("cloud", "thick", "dense"):  # bottom to top
-    reader = vtkPNGReader()
-    reader.SetFileName("%s/multiple-scattering-%s.png" % (sys.argv[1], key))
-    resize = vtkImageResize()
-    resize.SetInputConnection(reader.GetOutputPort())
-    resize.SetResizeMethodToMagnificationFactors()
-    resize.SetMagnificationFactors(2, 2, 1)
-    rows.AddInputConnection(resize.GetOutputPort())
-writer = vtkPNGWriter()
-writer.SetInputConnection(rows.GetOutputPort())
-writer.SetFileName(sys.argv[2])
-writer.Write()
-PY
+# Bottom to top: the built-in cloud, the thick cloud, the dense medium.
+/usr/bin/python3 "$root/Documentation/scripts/append_pictures.py" 1 2 \
+  "$images/multiple-scattering.png" "$pictures"/multiple-scattering-{cloud,thick,dense}.png
 rm -rf "$pictures"
 
 # The path-traced picture's denoiser on the default scene: 16 samples per
@@ -85,19 +68,6 @@ common=(-s 320 240 --tone-curve aces --srgb)
 run "$build/bin/tyndall-render" "${common[@]}" --path-trace 16 -o "$pictures/mean.png"
 run "$build/bin/tyndall-render" "${common[@]}" --path-trace 16 --path-denoise -o "$pictures/denoised.png"
 run "$build/bin/tyndall-render" "${common[@]}" --path-trace 1024 -o "$pictures/converged.png"
-/usr/bin/python3 - "$pictures" "$images/path-denoise.png" <<'PY'
-import sys
-from vtkmodules.vtkFiltersCore import vtkImageAppend
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-row = vtkImageAppend()
-row.SetAppendAxis(0)
-for key in ("mean", "denoised", "converged"):  # left to right
-    reader = vtkPNGReader()
-    reader.SetFileName("%s/%s.png" % (sys.argv[1], key))
-    row.AddInputConnection(reader.GetOutputPort())
-writer = vtkPNGWriter()
-writer.SetInputConnection(row.GetOutputPort())
-writer.SetFileName(sys.argv[2])
-writer.Write()
-PY
+/usr/bin/python3 "$root/Documentation/scripts/append_pictures.py" 0 1 \
+  "$images/path-denoise.png" "$pictures"/{mean,denoised,converged}.png
 rm -rf "$pictures"

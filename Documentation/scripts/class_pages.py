@@ -49,7 +49,7 @@ def page(header):
                              public, re.S):
         doc = clean(match.group(1))
         decls = [d.strip() for d in re.findall(r"^\s*((?:static |virtual |void |bool |int |"
-                                               r"double |const |vtk\w+)[^;{]*[;{]?)", match.group(2),
+                                               r"double |const |VTK_WRAPEXCLUDE |vtk\w+)[^;{]*[;{]?)", match.group(2),
                                                re.M)]
         decls = [d.rstrip("{").strip() for d in decls if d and not d.startswith("//")]
         if not decls:

@@ -36,6 +36,7 @@
 #include "vtkTyndallFrameSequence.h"
 #include "vtkTyndallOptions.h"
 #include "vtkTyndallSceneBuilder.h"
+#include "vtkTyndallToneMapping.h"
 #include "vtkVolumeFileReader.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
@@ -261,8 +262,8 @@ int WriteFloatFrame(
 // ToneCurve, EncodeSRGB) other than the identity.
 bool DisplayTransformed(vtkTyndallOptions* options)
 {
-  return options->GetNumber("exposure") != 0.0 || options->GetChoice("tone-curve") != 0 ||
-    options->GetFlag("srgb");
+  return !vtkTyndallToneMapping::IsIdentity(
+    options->GetNumber("exposure"), options->GetChoice("tone-curve"), options->GetFlag("srgb"));
 }
 
 // Path tracing (--path-trace): renders still frames until the picture has

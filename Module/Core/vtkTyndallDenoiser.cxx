@@ -92,9 +92,9 @@ bool vtkTyndallDenoiser::Filter(const float* mean, const float* guide, int width
   {
     for (int c = 0; c < 4; ++c)
     {
-      const double value = guide[i + c] + residual[i + c];
-      out[i + c] =
-        static_cast<float>(c == 3 ? std::min(std::max(value, 0.0), 1.0) : std::max(value, 0.0));
+      const double sum = guide[i + c] + residual[i + c];
+      const double value = sum > 0.0 ? sum : 0.0; // NaN: 0
+      out[i + c] = static_cast<float>(c == 3 ? std::min(value, 1.0) : value);
     }
   }
   return true;

@@ -1,7 +1,6 @@
 /**
  * @class   vtkTyndallDenoiser
- * @brief   the path-traced picture's denoiser: an edge-avoiding a-trous filter of the residual
- * from a noise-free guide
+ * @brief   the path-traced picture's denoiser, guided by the noise-free map-based frame
  *
  * vtkTransmittanceVolumeMapper's path-traced picture (PathTracing) is a
  * running mean M of noisy paths. Its map-based frame G (single scattering
@@ -24,8 +23,10 @@
  *
  *     D(a, b) = |a - b|^2 / (|a|^2 + |b|^2 + Epsilon)
  *
- * so a tap across the medium's silhouette or into a darker shadow (D near
- * 1) is left out, and two pixels whose guide differs by a fraction r weigh
+ * so a tap across the medium's silhouette (D near 1) weighs at most
+ * exp(-4) of its kernel weight at 1 sample per pixel and exp(-64) at 16,
+ * one into a shadow half as bright (D = 0.2) exp(-0.8) and exp(-12.8), and
+ * two pixels whose guide differs by a small fraction r weigh about
  * exp(-r^2 / (2 EdgeStop^2)). The guide is the only edge stop: no
  * variance, normal or depth buffers (a medium has no surface).
  *
@@ -87,7 +88,7 @@ public:
 
   /**
    * Filters: out = guide + A(mean - guide) (the description), `out`'s
-   * radiance at least 0 and its opacity in [0, 1]; `iterations` in [0,
+   * radiance at least 0 and its opacity in [0, 1] (NaN: 0); `iterations` in [0,
    * MaximumIterations] (0: out = mean), `edgeStop` above 0. False (out
    * untouched) for sizes below 1 or a parameter out of range. `out` may not
    * be `mean` or `guide`.

@@ -120,6 +120,12 @@ void vtkTyndallToneMapping::MapOver(const double rgba[4], const double backgroun
 }
 
 //------------------------------------------------------------------------------
+bool vtkTyndallToneMapping::IsIdentity(double exposure, int curve, bool srgb)
+{
+  return exposure == 0.0 && curve == LINEAR && !srgb;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTyndallToneMapping::GetCurveName(int curve)
 {
   return curve >= LINEAR && curve <= ACES ? CurveNames[curve] : nullptr;

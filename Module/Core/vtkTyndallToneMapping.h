@@ -77,6 +77,9 @@ public:
   /// The whole transform of one channel's linear value (steps 1-3).
   static double Map(double linear, double exposure, int curve, bool srgb);
 
+  /// Whether Map() is the identity: exposure 0, LINEAR and no sRGB.
+  static bool IsIdentity(double exposure, int curve, bool srgb);
+
   /// Where the bounded curves are clamped: an exposed value above it is taken as it.
   static constexpr double Largest = 1.0e4;
 

@@ -28,6 +28,30 @@
 
 namespace
 {
+// Whether the frame buffer holds the renderer's background colour or
+// gradient under the volume (vtkOpenGLRenderer::Clear() drew it, and no
+// skybox over it).
+bool BackgroundKnown(vtkRenderer* r)
+{
+  vtkRenderWindow* w = r ? r->GetRenderWindow() : nullptr;
+  if (!w || r->Transparent() || !r->GetErase() || !w->GetErase() || r->GetTexturedBackground() ||
+    r->GetBackgroundAlpha() < 1.0)
+  {
+    return false;
+  }
+  vtkPropCollection* props = r->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (vtkSkybox::SafeDownCast(prop) && prop->GetVisibility())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 constexpr int kMaxLights = vtkTyndallSceneReader::MaximumNumberOfLights;
 constexpr int kMaxGuests = vtkTyndallSceneReader::MaximumNumberOfGuests;
 
@@ -67,6 +91,7 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->Adapter = &vtkTransmittanceMediumAdapters::For(*this->OwnMedium);
   this->Textures = &textures;
   this->Integrator = settings;
+  this->BackgroundIsKnown = BackgroundKnown(renderer);
   this->Layers = M::GetNumberOfMapLayers(settings.Method, settings.Coefficients);
   this->BoundsLayer = M::GetBoundsLayer(settings.Method, settings.Coefficients);
   this->MapSets = this->Medium->GetParameters().GetChromatic() &&
@@ -495,42 +520,14 @@ void vtkTransmittanceFrame::SetLightMapUniforms(vtkShaderProgram* program) const
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
-// Whether the frame buffer holds the renderer's background colour or
-// gradient under the volume (vtkOpenGLRenderer::Clear() drew it, and no
-// skybox over it).
-bool BackgroundKnown(vtkRenderer* r)
-{
-  vtkRenderWindow* w = r ? r->GetRenderWindow() : nullptr;
-  if (!w || r->Transparent() || !r->GetErase() || !w->GetErase() || r->GetTexturedBackground() ||
-    r->GetBackgroundAlpha() < 1.0)
-  {
-    return false;
-  }
-  vtkPropCollection* props = r->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    if (vtkSkybox::SafeDownCast(prop) && prop->GetVisibility())
-    {
-      return false;
-    }
-  }
-  return true;
-}
-}
-
-//------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetOutputUniforms(
   vtkShaderProgram* program, bool toWindow, bool background) const
 {
   static_assert(vtkTyndallToneMapping::LINEAR == 0 && vtkTyndallToneMapping::ACES == 2,
     "the mapper's ToneCurve numbers are vtkTyndallToneMapping's");
   const Settings& s = this->Integrator;
-  const bool identity = !toWindow ||
-    (s.Exposure == 0.0 && s.ToneCurve == vtkTyndallToneMapping::LINEAR && !s.EncodeSRGB);
+  const bool identity =
+    !toWindow || vtkTyndallToneMapping::IsIdentity(s.Exposure, s.ToneCurve, s.EncodeSRGB);
   program->SetUniformi("outputTransform", identity ? 0 : 1);
   program->SetUniformf("outputScale", static_cast<float>(std::exp2(s.Exposure)));
   program->SetUniformi("outputCurve", s.ToneCurve);
@@ -542,7 +539,7 @@ void vtkTransmittanceFrame::SetOutputUniforms(
   // colour buffer, draws a texture or a skybox, clears to a transparent
   // background, or the caller says so (depth peeling's targets).
   vtkRenderer* r = this->Renderer;
-  const bool known = background && BackgroundKnown(r);
+  const bool known = background && this->BackgroundIsKnown;
   float bottom[3] = { 0.0f, 0.0f, 0.0f }, top[3] = { 0.0f, 0.0f, 0.0f };
   float viewportY[2] = { 0.0f, 1.0f };
   if (known)

@@ -248,6 +248,13 @@ public:
   const vtkTransmittanceMediumAdapter* Adapter = nullptr;
   const vtkTransmittanceMediumTextures* Textures = nullptr;
   Settings Integrator;
+  /**
+   * Whether the frame buffer holds the renderer's background under the
+   * volume (its colour or gradient: no transparent clear, kept colour
+   * buffer, textured background or visible skybox); SetOutputUniforms()'s
+   * display transform composites over it. Found once per frame in Prepare().
+   */
+  bool BackgroundIsKnown = false;
   /// ceil(Coefficients / 4) (+1 for the adaptive methods) layers per light.
   int Layers = 0;
   /// The adaptive methods' bounds layer within a light's layers, else -1.

@@ -180,16 +180,23 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
   program->SetUniformi("pathCollisionCost", static_cast<int>(std::ceil(CollisionCost(frame))));
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
-  if (historyFrames <= 0)
+  const bool drawn = this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw,
+    reporter, std::max(historyFrames, 0), false, !settings.Denoise);
+  ++this->MeanSerial;
+  if (this->Accumulation->GetHistoryFrames() <= 1)
   {
-    this->GuideReady = false; // a new mean: a new view
+    this->GuideReady = false; // a new mean (asked for, or a new image): a new view
   }
-  if (!this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw, reporter,
-        std::max(historyFrames, 0), false, !settings.Denoise))
+  if (!drawn)
   {
     return false;
   }
-  return !settings.Denoise || this->ShowDenoised(frame, inputs, reporter);
+  if (!settings.Denoise)
+  {
+    this->ReleaseDenoiser(frame.Window);
+    return true;
+  }
+  return this->ShowDenoised(frame, inputs, reporter);
 }
 
 //------------------------------------------------------------------------------
@@ -200,15 +207,39 @@ bool vtkTransmittancePathTracePass::Redraw(const vtkTransmittanceFrame& frame,
   {
     return this->ShowDenoised(frame, inputs, reporter);
   }
+  this->ReleaseDenoiser(frame.Window);
   return this->Accumulation->CompositeHistory(frame, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::GuideFits(const vtkTransmittanceFrame& frame) const
+{
+  vtkTextureObject* guide = this->GuideCast->GetImage(0);
+  vtkTextureObject* mean = this->Accumulation->GetHistory();
+  return this->GuideReady && guide && mean && guide->GetContext() == frame.Window &&
+    guide->GetWidth() == mean->GetWidth() && guide->GetHeight() == mean->GetHeight();
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittancePathTracePass::ReleaseDenoiser(vtkWindow* window)
+{
+  if (this->GuideReady || this->FilteredSerial >= 0)
+  {
+    this->GuideCast->ReleaseGraphicsResources(window);
+    this->Denoiser->ReleaseGraphicsResources(window);
+  }
+  this->GuideReady = false;
+  this->FilteredSerial = -1;
+  this->Denoised = nullptr;
 }
 
 //------------------------------------------------------------------------------
 bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& frame,
   const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter)
 {
-  if (!this->GuideReady)
+  if (!this->GuideFits(frame))
   {
+    this->FilteredSerial = -1;
     vtkTransmittanceRayCastPass::Inputs guide = inputs;
     guide.Offscreen = true;
     guide.Reduction = 1;
@@ -220,11 +251,23 @@ bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& fr
     {
       return false;
     }
+    if (!this->GuideFits(frame))
+    {
+      this->GuideReady = false;
+      vtkErrorWithObjectMacro(
+        reporter, << "The denoiser's guide is not the size of the paths' mean.");
+      return false;
+    }
   }
-  vtkTextureObject* denoised = this->Denoiser->Filter(frame, this->Accumulation->GetHistory(),
-    this->GuideCast->GetImage(0), vtkTyndallDenoiser::DefaultIterations,
-    vtkTyndallDenoiser::EdgeStopFor(this->GetSamples()), reporter);
-  return denoised && this->Accumulation->CompositeImage(frame, denoised, reporter);
+  // The mean as filtered last, while it has not changed (a finished picture's redraws).
+  if (this->FilteredSerial != this->MeanSerial || !this->Denoised)
+  {
+    this->Denoised = this->Denoiser->Filter(frame, this->Accumulation->GetHistory(),
+      this->GuideCast->GetImage(0), vtkTyndallDenoiser::DefaultIterations,
+      vtkTyndallDenoiser::EdgeStopFor(this->GetSamples()), reporter);
+    this->FilteredSerial = this->Denoised ? this->MeanSerial : -1;
+  }
+  return this->Denoised && this->Accumulation->CompositeImage(frame, this->Denoised, reporter);
 }
 
 //------------------------------------------------------------------------------
@@ -235,6 +278,8 @@ void vtkTransmittancePathTracePass::ReleaseGraphicsResources(vtkWindow* window)
   this->GuideCast->ReleaseGraphicsResources(window);
   this->Denoiser->ReleaseGraphicsResources(window);
   this->GuideReady = false;
+  this->FilteredSerial = -1;
+  this->Denoised = nullptr;
   this->LastSamplesPerFrame = 0;
 }
 

@@ -36,7 +36,8 @@
  * (vtkTransmittanceDenoisePass, vtkTyndallDenoiser): the map-based frame of
  * the same view, drawn once when the mean starts (marched, full size), is
  * its noise-free guide; the mean itself is kept, so turning it on or off
- * keeps the samples.
+ * keeps the samples. A finished mean's redraws composite the filtered
+ * image as it was; with the denoiser off its images are freed.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -164,12 +165,19 @@ private:
    */
   bool ShowDenoised(const vtkTransmittanceFrame& frame,
     const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
+  /// Whether the guide is drawn for the mean: its view, its context and size.
+  bool GuideFits(const vtkTransmittanceFrame& frame) const;
+  /// Frees the guide's and the filter's images (the denoiser is off).
+  void ReleaseDenoiser(vtkWindow* window);
 
   vtkTransmittanceShaderQuad Quad;
   vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
   vtkNew<vtkTransmittanceRayCastPass> GuideCast; // the denoiser's guide, kept in its image
   vtkNew<vtkTransmittanceDenoisePass> Denoiser;
-  bool GuideReady = false; // GuideCast's image is the mean's map-based frame
+  bool GuideReady = false;              // GuideCast's image is the mean's map-based frame
+  int MeanSerial = 0;                   // counts Render()'s frames added to the mean
+  int FilteredSerial = -1;              // MeanSerial when Denoised was filtered (-1: not)
+  vtkTextureObject* Denoised = nullptr; // the denoiser's last result
   int LastSamplesPerFrame = 0;
 };
 

@@ -287,6 +287,8 @@ public:
   // frame whose key equals it adds to the average (empty: start anew).
   std::vector<double> StillKey;
 
+  // A 3-D prop's redraw time as StillFrameKey() counts it.
+  static vtkMTimeType SceneRedrawMTime(vtkProp* prop);
   // What a still frame depends on; UpdateStillFrame() compares it with
   // StillKey and sets the inputs' history; after the render, StillKey
   // takes the key as the render left it (VTK updates some MTimes while
@@ -445,6 +447,26 @@ void vtkTransmittanceVolumeMapper::vtkInternals::ChooseDetail(vtkRenderer* rende
 }
 
 //------------------------------------------------------------------------------
+// A 3-D prop's redraw time as the still key counts it: VTK's
+// GetRedrawMTime(), except that another Tyndall volume's leaves out its
+// mapper's display settings (GetSceneMTime(): vtkTyndallSceneBuilder sets
+// every mapper's, and they change only how that volume is shown).
+vtkMTimeType vtkTransmittanceVolumeMapper::vtkInternals::SceneRedrawMTime(vtkProp* prop)
+{
+  vtkVolume* volume = vtkVolume::SafeDownCast(prop);
+  auto* tyndall =
+    volume ? vtkTransmittanceVolumeMapper::SafeDownCast(volume->GetMapper()) : nullptr;
+  if (!tyndall)
+  {
+    return prop->GetRedrawMTime();
+  }
+  vtkDataObject* data = tyndall->GetInputDataObject(0, 0);
+  return std::max({ volume->GetMTime(), tyndall->GetSceneMTime(),
+    volume->GetProperty() ? volume->GetProperty()->GetMTime() : vtkMTimeType(0),
+    data ? data->GetMTime() : vtkMTimeType(0) });
+}
+
+//------------------------------------------------------------------------------
 std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
   vtkTransmittanceVolumeMapper* self, vtkRenderer* renderer, vtkVolume* volume,
   const vtkTransmittanceRayCastPass::Inputs& inputs) const
@@ -489,24 +511,7 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
     {
       continue;
     }
-    // Another Tyndall volume: its redraw time without its mapper's display
-    // transform (vtkTyndallSceneBuilder sets every mapper's).
-    vtkVolume* other = vtkVolume::SafeDownCast(prop);
-    auto* tyndall =
-      other ? vtkTransmittanceVolumeMapper::SafeDownCast(other->GetMapper()) : nullptr;
-    vtkMTimeType redraw = 0;
-    if (tyndall)
-    {
-      vtkDataObject* data = tyndall->GetInputDataObject(0, 0);
-      redraw = std::max({ other->GetMTime(), tyndall->GetSceneMTime(),
-        other->GetProperty() ? other->GetProperty()->GetMTime() : vtkMTimeType(0),
-        data ? data->GetMTime() : vtkMTimeType(0) });
-    }
-    else
-    {
-      redraw = prop->GetRedrawMTime();
-    }
-    key.push_back(prop->GetVisibility() ? double(redraw) : -1.0);
+    key.push_back(prop->GetVisibility() ? double(SceneRedrawMTime(prop)) : -1.0);
   }
   return key;
 }

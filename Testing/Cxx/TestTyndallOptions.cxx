@@ -208,7 +208,10 @@ int TestTyndallOptions(int, char*[])
   Check(!viewer->GetFlag("no-jitter"), "j: jitter on again");
   Check(std::string(viewer->ApplyKey('q')) == "quit" && std::string(viewer->ApplyKey(27)) == "quit",
     "q and Esc quit");
-  Check(viewer->ApplyKey('x') == nullptr && o->ApplyKey('1') == nullptr,
+  Check(std::string(viewer->ApplyKey('x')) == "path-denoise" && viewer->GetFlag("path-denoise") &&
+      viewer->ApplyKey('x') && !viewer->GetFlag("path-denoise"),
+    "x, x: the paths' denoiser on, then off again");
+  Check(viewer->ApplyKey('y') == nullptr && o->ApplyKey('1') == nullptr,
     "unbound keys (and tyndall-render, which has none) do nothing");
 
   // Python's entry: the same parse.

@@ -78,6 +78,9 @@ int TestTyndallToneMapping(int, char*[])
     identity = identity && T::Map(x, 0.0, T::LINEAR, false) == x;
   }
   Check(identity, "exposure 0, linear, no sRGB: the identity (above 1 too)");
+  Check(T::IsIdentity(0.0, T::LINEAR, false) && !T::IsIdentity(0.5, T::LINEAR, false) &&
+      !T::IsIdentity(0.0, T::REINHARD, false) && !T::IsIdentity(0.0, T::LINEAR, true),
+    "IsIdentity()");
   Check(T::Map(0.25, 2.0, T::LINEAR, false) == 1.0 && T::Map(4.0, -3.0, T::LINEAR, false) == 0.5,
     "exposure in stops");
   Check(T::Map(0.5, 1.0, T::REINHARD, true) == T::EncodeSRGB(0.5), "the steps in order");

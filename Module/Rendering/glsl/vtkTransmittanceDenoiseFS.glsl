@@ -2,11 +2,11 @@
 // Tyndall: one pass of the path-traced picture's denoiser
 // (vtkTransmittanceDenoisePass; vtkTyndallDenoiser is its CPU twin and
 // describes it): the edge-avoiding a-trous filter of the residual
-// mean - guide, the guide (the map-based frame) the edge stop. Pass
-// denoisePass's taps are denoiseStep = 2^denoisePass pixels apart; the
-// first pass reads the residual from meanImage - guideImage, the later ones
-// from residualImage; the last adds the guide back. Drawn into an image the
-// size of the pictures.
+// mean - guide, the guide (the map-based frame) the edge stop. Pass i's
+// taps are denoiseStep = 2^i pixels apart; the first pass reads the
+// residual from meanImage - guideImage, the later ones from residualImage;
+// the last adds the guide back. Drawn into an image the size of the
+// pictures.
 //TYNDALL::Constants
 in vec2 texCoord; // the image's pixel: its centre over the image's size
 uniform sampler2D meanImage;
@@ -62,7 +62,9 @@ void main()
     }
   }
   vec4 residual = sum / weights;
-  gl_FragData[0] = denoiseLast == 1
-    ? vec4(max(guide.rgb + residual.rgb, vec3(0.0)), clamp(guide.a + residual.a, 0.0, 1.0))
-    : residual;
+  // The radiance at least 0 and the opacity in [0, 1], NaN 0 (as the twin).
+  vec4 value = guide + residual;
+  vec4 positive = mix(vec4(0.0), value, greaterThan(value, vec4(0.0)));
+  gl_FragData[0] =
+    denoiseLast == 1 ? vec4(positive.rgb, min(positive.a, 1.0)) : residual;
 }
