@@ -223,13 +223,14 @@ bool vtkTransmittancePathTracePass::GuideFits(const vtkTransmittanceFrame& frame
 //------------------------------------------------------------------------------
 void vtkTransmittancePathTracePass::ReleaseDenoiser(vtkWindow* window)
 {
-  if (this->GuideReady || this->FilteredSerial >= 0)
+  if (this->DenoiserAllocated)
   {
     this->GuideCast->ReleaseGraphicsResources(window);
     this->Denoiser->ReleaseGraphicsResources(window);
   }
+  this->DenoiserAllocated = false;
   this->GuideReady = false;
-  this->FilteredSerial = -1;
+  this->FilteredSerial = 0;
   this->Denoised = nullptr;
 }
 
@@ -237,9 +238,10 @@ void vtkTransmittancePathTracePass::ReleaseDenoiser(vtkWindow* window)
 bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& frame,
   const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter)
 {
+  this->DenoiserAllocated = true; // (whatever fails below: the images made so far)
   if (!this->GuideFits(frame))
   {
-    this->FilteredSerial = -1;
+    this->FilteredSerial = 0;
     vtkTransmittanceRayCastPass::Inputs guide = inputs;
     guide.Offscreen = true;
     guide.Reduction = 1;
@@ -265,7 +267,7 @@ bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& fr
     this->Denoised = this->Denoiser->Filter(frame, this->Accumulation->GetHistory(),
       this->GuideCast->GetImage(0), vtkTyndallDenoiser::DefaultIterations,
       vtkTyndallDenoiser::EdgeStopFor(this->GetSamples()), reporter);
-    this->FilteredSerial = this->Denoised ? this->MeanSerial : -1;
+    this->FilteredSerial = this->Denoised ? this->MeanSerial : 0;
   }
   return this->Denoised && this->Accumulation->CompositeImage(frame, this->Denoised, reporter);
 }
@@ -277,8 +279,9 @@ void vtkTransmittancePathTracePass::ReleaseGraphicsResources(vtkWindow* window)
   this->Accumulation->ReleaseGraphicsResources(window);
   this->GuideCast->ReleaseGraphicsResources(window);
   this->Denoiser->ReleaseGraphicsResources(window);
+  this->DenoiserAllocated = false;
   this->GuideReady = false;
-  this->FilteredSerial = -1;
+  this->FilteredSerial = 0;
   this->Denoised = nullptr;
   this->LastSamplesPerFrame = 0;
 }

@@ -34,10 +34,11 @@
  *
  * With Settings::Denoise the mean is composited through the denoiser
  * (vtkTransmittanceDenoisePass, vtkTyndallDenoiser): the map-based frame of
- * the same view, drawn once when the mean starts (marched, full size), is
- * its noise-free guide; the mean itself is kept, so turning it on or off
- * keeps the samples. A finished mean's redraws composite the filtered
- * image as it was; with the denoiser off its images are freed.
+ * the same view, drawn when the mean starts (marched, full size; again
+ * when its context or size is not the mean's), is its noise-free guide;
+ * the mean itself is kept, so turning it on or off keeps the samples. A
+ * finished mean's redraws composite the filtered image as it was; with
+ * the denoiser off its images are freed.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -175,8 +176,9 @@ private:
   vtkNew<vtkTransmittanceRayCastPass> GuideCast; // the denoiser's guide, kept in its image
   vtkNew<vtkTransmittanceDenoisePass> Denoiser;
   bool GuideReady = false;              // GuideCast's image is the mean's map-based frame
-  int MeanSerial = 0;                   // counts Render()'s frames added to the mean
-  int FilteredSerial = -1;              // MeanSerial when Denoised was filtered (-1: not)
+  bool DenoiserAllocated = false;       // the guide's or the filter's images may exist
+  vtkMTimeType MeanSerial = 0;          // counts Render()'s frames added to the mean
+  vtkMTimeType FilteredSerial = 0;      // MeanSerial when Denoised was filtered (0: not)
   vtkTextureObject* Denoised = nullptr; // the denoiser's last result
   int LastSamplesPerFrame = 0;
 };

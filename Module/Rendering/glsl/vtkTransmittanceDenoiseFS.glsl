@@ -62,7 +62,8 @@ void main()
     }
   }
   vec4 residual = sum / weights;
-  // The radiance at least 0 and the opacity in [0, 1], NaN 0 (as the twin).
+  // The radiance at least 0 and the opacity in [0, 1]; NaN meant to give 0
+  // as in the twin (GLSL leaves NaN undefined; not tested on the GPU).
   vec4 value = guide + residual;
   vec4 positive = mix(vec4(0.0), value, greaterThan(value, vec4(0.0)));
   gl_FragData[0] =
