@@ -31,6 +31,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace 40
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 70
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 8
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky 7
   Tyndall::RenderingCxx-TestTransmittanceMapperOctaves 37
   Tyndall::RenderingCxx-TestTransmittanceMapperTransmittanceCache 25
   TyndallParaView-MPI 24
@@ -101,6 +102,9 @@ set(tyndall_no_sanitizer_tests
   # 8 s unsanitized: 1024 spp of paths at 64^2 (the denoiser's twin: TestTyndallDenoiser;
   # the mapper's denoised paths: TyndallCLI-PathTraceDenoise)
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise
+  # 7 s unsanitized: 64 spp of paths at 32^2, six times, beside the CPU tracer's (the sky's
+  # twin: TestTyndallEnvironment; the programs' --sky: TyndallCLI-Sky*)
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky
   # 38 s: the majorant grid (TyndallCLI-*, every rendering test kept: skipping is on by default)
   Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace
   # 28 s: the CPU twin of the maps (TestTransmittanceMapMath, TestTransmittanceLightFrustum)

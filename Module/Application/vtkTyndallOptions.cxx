@@ -345,6 +345,17 @@ const Spec kOptions[] = {
     "coordinates that receives its shadow" },
   { "background2", "", Kind::Triple, 0, 1, false, "", "R G B", "", "Image", Both,
     "top colour: makes the background a vertical gradient" },
+  { "sky", "", Kind::Triple, 0, Huge, false, "", "R G B", "", "Image", Both,
+    "light from a constant sky of this linear radiance (the renderer's EnvironmentalBG; with "
+    "--sky-top the colour straight down), around the view-up: the path tracer samples it, the "
+    "map-based frame adds its mean radiance to the ambient term (unshadowed)" },
+  { "sky-top", "", Kind::Triple, 0, Huge, false, "", "R G B", "", "Image", Both,
+    "the sky's colour straight up: a vertical gradient from --sky (default black), linear in "
+    "the elevation (EnvironmentalBG2)" },
+  { "sky-image", "", Kind::Text, 0, 0, false, "", "FILE", "", "Image", Both,
+    "light from an equirectangular sky image (.hdr, .exr: linear; .png, .jpg: sRGB), its "
+    "centre in the camera's direction of view, its top row up (the renderer's "
+    "EnvironmentTexture with UseImageBasedLighting)" },
   { "exposure", "", Kind::Number, -20, 20, false, "", "EV", "0", "Image", Both,
     "the medium's radiance times 2^EV before the tone curve (the mapper's Exposure; the "
     "background and geometry keep their colours where there is no medium)",

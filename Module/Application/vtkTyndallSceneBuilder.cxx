@@ -42,6 +42,7 @@
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallIsosurfaces.h"
 #include "vtkTyndallOptions.h"
+#include "vtkTyndallSky.h"
 #include "vtkVolume.h"
 #include "vtkVolumeFileReader.h"
 #include "vtkVolumeProperty.h"
@@ -223,6 +224,10 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
     return false;
   }
   this->SetUpLights(renderer);
+  if (!vtkTyndallSky::Apply(this->Options, renderer, this))
+  {
+    return false;
+  }
   this->GroundShadows = nullptr;
   this->AddGround(renderer);
   if (!this->AddSurface(renderer))

@@ -34,4 +34,5 @@ void vtkParticipatingMediumMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VolumetricScatteringBlending: " << this->VolumetricScatteringBlending << "\n";
   os << indent << "VectorMode: " << this->VectorMode << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "SkyLight: " << (this->SkyLight ? "On" : "Off") << "\n";
 }

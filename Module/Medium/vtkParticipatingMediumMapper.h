@@ -110,6 +110,21 @@ public:
   vtkGetMacro(VolumetricScatteringBlending, float);
   ///@}
 
+  ///@{
+  /**
+   * Whether the renderer's sky lights the medium: its environment as VTK's
+   * ray tracers read it (EnvironmentalBG, its gradient, an equirectangular
+   * EnvironmentTexture with UseImageBasedLighting; vtkTyndallEnvironment),
+   * sampled by the path tracers, its mean radiance added to the ambient
+   * term of the map-based frame. Default on: VTK's default sky is black (no
+   * light). ParaView gives every view's renderer a grey-blue environment
+   * colour, so the ParaView plugin turns it off unless asked.
+   */
+  vtkSetMacro(SkyLight, bool);
+  vtkGetMacro(SkyLight, bool);
+  vtkBooleanMacro(SkyLight, bool);
+  ///@}
+
   /// vtkSmartVolumeMapper's vector modes (the same values).
   enum VectorModes
   {
@@ -168,6 +183,7 @@ protected:
   float VolumetricScatteringBlending = 0.0f;
   int VectorMode = DISABLED;
   int VectorComponent = 0;
+  bool SkyLight = true;
 
 private:
   vtkParticipatingMediumMapper(const vtkParticipatingMediumMapper&) = delete;

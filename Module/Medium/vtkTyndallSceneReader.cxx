@@ -168,6 +168,14 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
       light.Irradiance[c] = parameters.LightScale * light.Color[c];
     }
   }
+  // The sky (a refused environment is black: the scene renders without it);
+  // its tables kept while a volume it does not light is read.
+  auto* mapper = vtkParticipatingMediumMapper::SafeDownCast(volume->GetMapper());
+  this->SkyLit = !projection && parameters.GetSingleScattering() && mapper && mapper->GetSkyLight();
+  if (this->SkyLit)
+  {
+    this->Environment.Update(renderer, reporter);
+  }
   // The media: this volume's own (its detail when it has one, not in a
   // projection) first.
   this->Media.push_back(this->Detail.Enabled() && !projection

@@ -22,6 +22,9 @@
  *   no direction: it is ignored with a warning;
  * - in the emission-absorption model no light is used (nothing is shaded)
  *   but by a shaded slice;
+ * - the renderer's environment (EnvironmentalBG, its gradient, its
+ *   EnvironmentTexture) is read by vtkTyndallEnvironment's rules when the
+ *   medium scatters (not a projection) and its mapper's SkyLight is on;
  * - a volume drawn in a projection blend mode (vtkTyndallProjection:
  *   maximum, minimum, average intensity, additive, slice) is not a medium:
  *   it uses no light (but a shaded slice's, vtkTyndallShading, unshadowed),
@@ -75,6 +78,7 @@
 
 #include "TyndallMediumModule.h"    // For export macro
 #include "vtkTyndallDetailMedium.h" // For the detail
+#include "vtkTyndallEnvironment.h"  // For the environment
 #include "vtkTyndallGridMedium.h"   // For the medium
 #include "vtkTyndallLight.h"        // For the lights
 
@@ -116,6 +120,15 @@ public:
   /// The procedural detail over the medium (Enabled() when the property has a DetailNoise).
   const vtkTyndallDetailMedium& GetDetail() const { return this->Detail; }
   const std::vector<vtkTyndallLight>& GetLights() const { return this->Lights; }
+  /**
+   * The renderer's environment (vtkTyndallEnvironment): black unless the
+   * medium scatters (a projection and the emission-absorption model are lit
+   * by no sky) and its mapper's SkyLight is on.
+   */
+  const vtkTyndallEnvironment& GetEnvironment() const
+  {
+    return this->SkyLit ? this->Environment : this->NoSky;
+  }
 
   /// The most guests a medium is lit through (the shaders' guest arrays).
   static constexpr int MaximumNumberOfGuests = 3;
@@ -183,6 +196,9 @@ private:
   vtkTyndallDetailMedium Detail;
   std::vector<const vtkTyndallMedium*> Media;
   std::vector<vtkTyndallLight> Lights;
+  vtkTyndallEnvironment Environment;
+  vtkTyndallEnvironment NoSky; // black
+  bool SkyLit = false;         // GetEnvironment() is Environment
   std::string LastLightWarning;
   /// Warns once per change of the settings VTK draws and Tyndall does not
   /// (vtkTyndallVolumeSettings), per volume (a mapper may draw several).

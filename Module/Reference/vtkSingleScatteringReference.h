@@ -44,7 +44,10 @@
  * rendered. VTK's renderer creates an automatic headlight at its first
  * render when no light is on; a renderer that was never rendered may
  * therefore have no lights, and then single scattering gives only ambient
- * light and emission (no error). The mapper's clipping planes and cropping
+ * light and emission (no error). The renderer's sky (vtkTyndallEnvironment)
+ * adds its mean radiance to the ambient term, unshadowed: the map-based
+ * frame's approximation, of which this is the twin (vtkVolumetricPathTracer
+ * samples the sky). The mapper's clipping planes and cropping
  * cut the medium (vtkTyndallClipRegion's rules, as on the GPU): for camera
  * rays and for the light, unless LightIgnoresClipping is on. VTK's
  * projection blend modes (maximum, minimum and average intensity, additive)

@@ -172,6 +172,7 @@ bool vtkTyndallReferenceScene::SetUpView(
 //------------------------------------------------------------------------------
 void vtkTyndallReferenceScene::SetUpLights(const vtkTyndallSceneReader& reader)
 {
+  this->Environment = &reader.GetEnvironment();
   for (const vtkTyndallLight& light : reader.GetLights())
   {
     LightSource source;

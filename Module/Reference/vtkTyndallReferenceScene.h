@@ -41,6 +41,7 @@
 #include "TyndallReferenceModule.h"  // For export macro
 #include "vtkMath.h"                 // For vtkMath::Dot
 #include "vtkTransmittanceMapMath.h" // For the phase function
+#include "vtkTyndallEnvironment.h"   // For the sky
 #include "vtkTyndallFootprint.h"     // For vtkTyndallFootprint
 #include "vtkTyndallMedium.h"        // For the media
 #include "vtkTyndallProjection.h"    // For vtkTyndallProjection::Classes
@@ -98,6 +99,18 @@ public:
   /// The lighting of the camera rays: the volume's own medium's.
   const vtkTyndallMediumParameters* Parameters = nullptr;
   std::vector<LightSource> Lights;
+  /**
+   * The renderer's environment (vtkTyndallSceneReader::GetEnvironment()):
+   * the path tracer samples it; vtkSingleScatteringReference reads its mean
+   * radiance as the map-based frame does.
+   */
+  const vtkTyndallEnvironment* Environment = nullptr;
+  /**
+   * Whether Source() adds the environment's mean radiance to the ambient
+   * term (the map-based frame's approximation of the sky; the path tracer
+   * samples the sky instead).
+   */
+  bool SkyAsAmbient = true;
   /**
    * The volume's grid when it is drawn in a projection blend mode
    * (vtkTyndallProjection; Media's first then), else null.
@@ -263,8 +276,9 @@ public:
 
   /**
    * The source term J at a point `point` of the media at the world point x
-   * seen along w: albedo (ambient + AddInScattering()) + EmissionScale
-   * emission, with `transmittance` as AddInScattering()'s.
+   * seen along w: albedo (ambient [+ the sky's mean radiance, SkyAsAmbient]
+   * + AddInScattering()) + EmissionScale emission, with `transmittance` as
+   * AddInScattering()'s.
    */
   template <typename LightTransmittance>
   void Source(const vtkTyndallMedium::Point& point, const double x[3], const double w[3],
@@ -273,6 +287,13 @@ public:
     const double* albedo = point.Albedo;
     const double ambient = this->Parameters->AmbientIntensity;
     double in[3] = { ambient, ambient, ambient };
+    if (this->SkyAsAmbient && this->Environment)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        in[c] += this->Environment->GetMeanRadiance()[c];
+      }
+    }
     if (albedo[0] != 0.0 || albedo[1] != 0.0 || albedo[2] != 0.0)
     {
       this->AddInScattering(x, w, albedo, transmittance, in);

@@ -11,6 +11,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTyndallEnvironment.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallReferenceScene.h"
@@ -439,6 +440,50 @@ private:
     }
   }
 
+  // The power heuristic's weight of a strategy of density a against one of density b.
+  static double PowerWeight(double a, double b) { return a * a / (a * a + b * b); }
+
+  // Next-event estimation of the sky at a collision at the world distance t
+  // of `ray` (world point x): adds albedo L(l) p(mu) T / pdf(l) times the
+  // power heuristic's weight against the phase function's sampling (1 at
+  // the path's last collision, which draws no direction), l drawn from the
+  // environment (vtkTyndallEnvironment::Sample()), T ratio tracked.
+  void AddSkyEvent(const Ray& ray, double t, const double x[3], const double albedo[3], bool last,
+    Random& rng, Timing& timing, const PathState& path, double J[3]) const
+  {
+    const Scene& s = *this->S;
+    const double u[4] = { rng.Uniform(), rng.Uniform(), rng.Uniform(), rng.Uniform() };
+    double l[3], sky[3];
+    const double pdf = s.Environment->Sample(u, l, sky);
+    if (!(pdf > 0.0))
+    {
+      return;
+    }
+    const double phase = s.Phase(vtkMath::Dot(l, ray.W));
+    double T[3];
+    this->LightTransmittance(ray, t, x, l, kInfinity, rng, timing, path, T);
+    const double weight = (last ? 1.0 : PowerWeight(pdf, phase)) * phase / pdf;
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] += albedo[c] * sky[c] * T[c] * weight;
+    }
+  }
+
+  // A scattered ray that leaves the media: adds beta L(w) times the power
+  // heuristic's weight of the phase function's density `phasePdf` (the
+  // direction's) against the sky's.
+  void AddSkyEscape(const Ray& ray, const double beta[3], double phasePdf, double L[3]) const
+  {
+    const vtkTyndallEnvironment& sky = *this->S->Environment;
+    double radiance[3];
+    sky.Evaluate(ray.W, radiance);
+    const double weight = PowerWeight(phasePdf, sky.Pdf(ray.W));
+    for (int c = 0; c < 3; ++c)
+    {
+      L[c] += beta[c] * radiance[c] * weight;
+    }
+  }
+
   // Russian roulette on the throughput; false when the path ends.
   static bool Survive(double beta[3], Random& rng)
   {
@@ -469,27 +514,32 @@ private:
     Ray ray, Random& rng, Timing& timing, PathState& path, double L[3], double escape[3]) const
   {
     const Scene& s = *this->S;
+    const bool sky = s.Environment && s.Environment->Enabled();
     double beta[3] = { 1.0, 1.0, 1.0 };
+    double phasePdf = 0.0; // the density of the last scattered direction
     for (int bounce = 0;; ++bounce)
     {
       // The camera ray samples the camera media; scattered light, every medium.
-      if (!ray.Clip(s, bounce == 0))
-      {
-        if (bounce == 0)
-        {
-          std::fill(escape, escape + 3, 1.0);
-        }
-        return;
-      }
-      this->AddArrayEmission(ray, beta, rng, timing, path, L);
       double t, weight[3] = { 1.0, 1.0, 1.0 };
       int k = 0;
-      const bool hit = this->FreeFlight(ray, rng, t, k, timing, path, weight);
-      if (!hit)
+      const bool crosses = ray.Clip(s, bounce == 0);
+      if (crosses)
+      {
+        this->AddArrayEmission(ray, beta, rng, timing, path, L);
+      }
+      if (!crosses || !this->FreeFlight(ray, rng, t, k, timing, path, weight))
       {
         if (bounce == 0)
         {
-          std::copy(weight, weight + 3, escape);
+          std::copy(weight, weight + 3, escape); // the camera sees the background, not the sky
+        }
+        else if (sky)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            beta[c] *= weight[c];
+          }
+          this->AddSkyEscape(ray, beta, phasePdf, L);
         }
         return;
       }
@@ -514,6 +564,11 @@ private:
       else
       {
         this->Source(ray, t, x, point, rng, timing, path, J);
+        if (sky)
+        {
+          this->AddSkyEvent(
+            ray, t, x, point.Albedo, bounce + 1 >= s.MaxBounces, rng, timing, path, J);
+        }
       }
       for (int c = 0; c < 3; ++c)
       {
@@ -529,6 +584,7 @@ private:
       const double u1 = rng.Uniform();
       vtkVolumetricPathTracer::SampleHenyeyGreenstein(
         s.Parameters->ScatteringAnisotropy, w, u1, rng.Uniform(), ray.W);
+      phasePdf = s.Phase(vtkMath::Dot(ray.W, w));
       ray.T0 = 0.0;
       ray.T1 = kInfinity;
     }
@@ -753,6 +809,7 @@ bool vtkVolumetricPathTracer::RenderImage(
   scene.Samples = this->SamplesPerPixel;
   scene.MaxBounces = this->MaximumBounces;
   scene.Seed = this->Seed;
+  scene.SkyAsAmbient = false; // sampled
   if (!scene.SetUpView(tyndall, renderer, this))
   {
     return false;

@@ -125,6 +125,19 @@
  * Render() returns nullptr. A volume drawn by another (a camera group's
  * later member) draws nothing of its own: radiance 0, transmittance 1.
  *
+ * The sky. The renderer's environment (vtkTyndallEnvironment: EnvironmentalBG,
+ * its gradient, an equirectangular EnvironmentTexture) lights the medium:
+ * at every collision of the participating model a direction l is drawn from
+ * the sky (its importance sampling) and c L(l) p(mu) T(l) / pdf(l) is added,
+ * T ratio tracked (or exact in closed form) to the media's boxes' sides; a
+ * scattered ray that leaves the media adds beta L(w). The two are weighed
+ * by the power heuristic (the sky's density against the phase function's;
+ * the sky's draw at the last collision, which scatters no further, by 1),
+ * so a white, non-absorbing medium under a constant sky L with the
+ * background L composites to L everywhere. The camera ray's escape adds no
+ * sky (the background is composited behind). vtkSingleScatteringReference
+ * adds the sky's mean radiance to the ambient term instead, as the GPU's
+ * map-based frame does.
  * The property's multiple-scattering octaves
  * (vtkParticipatingMediumProperty::ScatteringOctaves) are ignored: the paths
  * scatter for real, and are what the octaves are measured against

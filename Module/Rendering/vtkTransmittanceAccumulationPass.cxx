@@ -288,6 +288,26 @@ bool vtkTransmittanceAccumulationPass::Composite(const vtkTransmittanceFrame& fr
 }
 
 //------------------------------------------------------------------------------
+void vtkTransmittanceAccumulationPass::ReleaseScratch(vtkWindow* window)
+{
+  for (int k = 0; k < 2; ++k)
+  {
+    if (this->Images[k] == this->Result)
+    {
+      continue;
+    }
+    for (vtkSmartPointer<vtkTextureObject>* image : { &this->Images[k], &this->Opacities[k] })
+    {
+      if (*image)
+      {
+        (*image)->ReleaseGraphicsResources(window);
+      }
+      *image = nullptr;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkSmartPointer<vtkTextureObject>* image : { &this->Images[0], &this->Images[1],

@@ -121,6 +121,13 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window);
 
+  /**
+   * Frees the images the last Render()'s result is not (the passes' other
+   * image and its opacity): a kept result (Inputs::Offscreen) holds one
+   * image, not two. The next Render() makes them again.
+   */
+  void ReleaseScratch(vtkWindow* window);
+
 protected:
   vtkTransmittanceAccumulationPass();
   ~vtkTransmittanceAccumulationPass() override;

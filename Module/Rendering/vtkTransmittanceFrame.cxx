@@ -87,6 +87,7 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->State = window->GetState();
   this->Medium = &scene.GetMedium();
   this->Detail = &scene.GetDetail();
+  this->Environment = &scene.GetEnvironment();
   this->OwnMedium = scene.GetMedia().front();
   this->Adapter = &vtkTransmittanceMediumAdapters::For(*this->OwnMedium);
   this->Textures = &textures;

@@ -38,6 +38,7 @@ class vtkTyndallGridMedium;
 class vtkTyndallMedium;
 class vtkTyndallParticles;
 class vtkTyndallSceneReader;
+class vtkTyndallEnvironment;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittanceFrame
 {
@@ -247,6 +248,12 @@ public:
   const vtkTyndallMedium* OwnMedium = nullptr;
   const vtkTransmittanceMediumAdapter* Adapter = nullptr;
   const vtkTransmittanceMediumTextures* Textures = nullptr;
+  /**
+   * The renderer's sky (vtkTyndallSceneReader::GetEnvironment()): the path
+   * tracer samples it, the map-based frame adds its mean radiance to the
+   * ambient term.
+   */
+  const vtkTyndallEnvironment* Environment = nullptr;
   Settings Integrator;
   /**
    * Whether the frame buffer holds the renderer's background under the

@@ -3,6 +3,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkTransmittanceEnvironmentTextures.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
 #include "vtkTransmittanceMediumTextures.h"
@@ -10,6 +11,7 @@
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallDenoiser.h"
 #include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallEnvironment.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMajorantGrid.h"
 #include "vtkTyndallMedium.h"
@@ -108,8 +110,24 @@ double vtkTransmittancePathTracePass::PathBound(
   const double lights = static_cast<double>(frame.Lights.size());
   const double collision =
     1.0 + (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
+  const double sky = SamplesSky(frame) ? SkySearchCost(frame) + 1.0 + flight : 0.0;
   const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
-  return bounces * (flight + collision);
+  return bounces * (flight + collision + sky);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::SamplesSky(const vtkTransmittanceFrame& frame)
+{
+  return frame.Environment && frame.Environment->Enabled();
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittancePathTracePass::SkySearchCost(const vtkTransmittanceFrame& frame)
+{
+  // The two binary searches' trips (vtkTransmittanceEnvironmentFS.glsl).
+  const double rows = frame.Environment->GetHeight();
+  const double columns = frame.Environment->GetWidth();
+  return static_cast<int>(std::ceil(std::log2(rows)) + std::ceil(std::log2(columns))) + 2;
 }
 
 //------------------------------------------------------------------------------
@@ -151,6 +169,9 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   variant.DetailCameraGroups = -1;       // every wave: no pixel footprint filters a path
   variant.OpacityCoversRadiance = false; // drawn into images
   variant.PathBlocks = UsesBlocks(frame);
+  // The sky's textures (a failed upload, said once: the paths without the sky).
+  variant.PathEnvironment =
+    SamplesSky(frame) && this->Sky->Update(*frame.Environment, frame.Window, reporter);
   vtkShaderProgram* program = this->Quad.Ready(frame.Window,
     vtkTransmittanceShaderSource::GetFragmentShader(
       vtkTransmittanceShaderSource::PATH_TRACE, variant));
@@ -162,6 +183,19 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   vtkTransmittanceScopedTextures textures(
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   vtkTransmittanceRayCastPass::SetUniforms(frame, inputs, program);
+  // The ambient term alone: the paths sample the sky (the map-based frame adds its mean).
+  const float ambient = static_cast<float>(frame.Medium->GetParameters().AmbientIntensity);
+  const float ambients[3] = { ambient, ambient, ambient };
+  program->SetUniform3f("ambient", ambients);
+  if (variant.PathEnvironment)
+  {
+    for (vtkTextureObject* texture : this->Sky->GetTextures())
+    {
+      textures.Add(texture);
+    }
+    this->Sky->SetUniforms(*frame.Environment, program);
+    program->SetUniformi("pathSkySearchCost", SkySearchCost(frame));
+  }
   int viewport[4];
   frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   frame.SetCameraUniforms(program, inputs.Depth, false, viewport, viewport[2], viewport[3]);
@@ -221,9 +255,9 @@ bool vtkTransmittancePathTracePass::GuideFits(const vtkTransmittanceFrame& frame
 }
 
 //------------------------------------------------------------------------------
-void vtkTransmittancePathTracePass::ReleaseDenoiser(vtkWindow* window)
+void vtkTransmittancePathTracePass::ReleaseDenoiser(vtkWindow* window, bool force)
 {
-  if (this->DenoiserAllocated)
+  if (this->DenoiserAllocated || force)
   {
     this->GuideCast->ReleaseGraphicsResources(window);
     this->Denoiser->ReleaseGraphicsResources(window);
@@ -260,6 +294,7 @@ bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& fr
         reporter, << "The denoiser's guide is not the size of the paths' mean.");
       return false;
     }
+    this->GuideCast->ReleaseScratch(frame.Window); // the guide is one image
   }
   // The mean as filtered last, while it has not changed (a finished picture's redraws).
   if (this->FilteredSerial != this->MeanSerial || !this->Denoised)
@@ -277,12 +312,8 @@ void vtkTransmittancePathTracePass::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Quad.Release(window);
   this->Accumulation->ReleaseGraphicsResources(window);
-  this->GuideCast->ReleaseGraphicsResources(window);
-  this->Denoiser->ReleaseGraphicsResources(window);
-  this->DenoiserAllocated = false;
-  this->GuideReady = false;
-  this->FilteredSerial = 0;
-  this->Denoised = nullptr;
+  this->Sky->ReleaseGraphicsResources(window);
+  this->ReleaseDenoiser(window, true);
   this->LastSamplesPerFrame = 0;
 }
 

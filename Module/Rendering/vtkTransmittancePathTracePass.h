@@ -9,7 +9,10 @@
  * estimation towards every light at every collision (the light
  * transmittance read from the frame's maps, or ratio tracked:
  * Settings::TrackedShadows), Henyey-Greenstein scattering, a bounce limit
- * and Russian roulette: the estimator of vtkVolumetricPathTracer
+ * and Russian roulette, and the renderer's sky (vtkTyndallEnvironment:
+ * drawn from at every collision, its light ratio tracked, and met by the
+ * paths that leave; the power heuristic weighs the two): the estimator of
+ * vtkVolumetricPathTracer
  * (DELTA_TRACKING), its CPU twin. The frames' images are averaged into a
  * running mean (vtkTransmittanceAccumulationPass), which is composited
  * over the renderer's viewport.
@@ -49,11 +52,12 @@
 #include "TyndallRenderingModule.h" // For export macro
 #include "vtkNew.h"                 // For vtkNew
 #include "vtkObject.h"
-#include "vtkTransmittanceAccumulationPass.h" // For vtkTransmittanceAccumulationPass
-#include "vtkTransmittanceDenoisePass.h"      // For vtkTransmittanceDenoisePass
-#include "vtkTransmittanceRayCastPass.h"      // For vtkTransmittanceRayCastPass::Inputs
-#include "vtkTransmittanceShaderQuad.h"       // For vtkTransmittanceShaderQuad
-#include "vtkTransmittanceShaderSource.h"     // For vtkTransmittanceShaderSource::Variant
+#include "vtkTransmittanceAccumulationPass.h"    // For vtkTransmittanceAccumulationPass
+#include "vtkTransmittanceDenoisePass.h"         // For vtkTransmittanceDenoisePass
+#include "vtkTransmittanceEnvironmentTextures.h" // For vtkTransmittanceEnvironmentTextures
+#include "vtkTransmittanceRayCastPass.h"         // For vtkTransmittanceRayCastPass::Inputs
+#include "vtkTransmittanceShaderQuad.h"          // For vtkTransmittanceShaderQuad
+#include "vtkTransmittanceShaderSource.h"        // For vtkTransmittanceShaderSource::Variant
 
 #include <string> // For std::string
 
@@ -154,6 +158,10 @@ private:
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the paths track against the majorant grid's blocks (Variant::PathBlocks).
   static bool UsesBlocks(const vtkTransmittanceFrame& frame);
+  /// Whether the paths sample the renderer's sky (it has light).
+  static bool SamplesSky(const vtkTransmittanceFrame& frame);
+  /// The loop trips a draw from the sky counts (its two searches).
+  static int SkySearchCost(const vtkTransmittanceFrame& frame);
   /// The loop trips of a collision's light estimate from the maps (the light loop, brute-force
   /// marches).
   static double CollisionCost(const vtkTransmittanceFrame& frame);
@@ -168,13 +176,15 @@ private:
     const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
   /// Whether the guide is drawn for the mean: its view, its context and size.
   bool GuideFits(const vtkTransmittanceFrame& frame) const;
-  /// Frees the guide's and the filter's images (the denoiser is off).
-  void ReleaseDenoiser(vtkWindow* window);
+  /// Frees the guide's and the filter's images (the denoiser is off; `force`: whether or not
+  /// they were made).
+  void ReleaseDenoiser(vtkWindow* window, bool force = false);
 
   vtkTransmittanceShaderQuad Quad;
   vtkNew<vtkTransmittanceAccumulationPass> Accumulation;
   vtkNew<vtkTransmittanceRayCastPass> GuideCast; // the denoiser's guide, kept in its image
   vtkNew<vtkTransmittanceDenoisePass> Denoiser;
+  vtkNew<vtkTransmittanceEnvironmentTextures> Sky; // the renderer's sky's tables
   bool GuideReady = false;              // GuideCast's image is the mean's map-based frame
   bool DenoiserAllocated = false;       // the guide's or the filter's images may exist
   vtkMTimeType MeanSerial = 0;          // counts Render()'s frames added to the mean

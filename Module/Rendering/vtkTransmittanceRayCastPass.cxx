@@ -16,6 +16,7 @@
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
 #include "vtkTyndallDetailMedium.h"
+#include "vtkTyndallEnvironment.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallSceneReader.h"
 #include "vtk_glew.h"
@@ -55,8 +56,8 @@ bool vtkTransmittanceRayCastPass::Render(
   const int passes = (steps + perPass - 1) / perPass;
   // A coloured extinction needs a second render target: never drawn direct.
   const bool chromatic = frame.Medium->GetParameters().GetChromatic();
-  const bool direct = !sampled && passes == 1 && reduction == 1 && !chromatic &&
-    !inputs.DepthRanges && !inputs.Offscreen;
+  const bool direct =
+    !sampled && passes == 1 && reduction == 1 && !chromatic && !inputs.KeepsImage();
   // A ray drawn in one pass into an image (a reduced one, a depth-peeling
   // part) needs no earlier state: the shader of the direct draw, which
   // discards the rays that miss (the image is cleared). llvmpipe draws it 3
@@ -124,8 +125,7 @@ bool vtkTransmittanceRayCastPass::Render(
   };
   vtkTransmittanceAccumulationPass* accumulation = this->Accumulation[inputs.Segment == 1 ? 1 : 0];
   return accumulation->Render(frame, viewport, width, height, passes, draw, reporter,
-    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic,
-    !inputs.DepthRanges && !inputs.Offscreen);
+    sampled ? std::max(inputs.HistoryFrames, 0) : -1, chromatic, !inputs.KeepsImage());
 }
 
 //------------------------------------------------------------------------------
@@ -253,7 +253,15 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   program->SetUniformi("lightSampleCount", s.LightSampleCount);
   program->SetUniformf(
     "anisotropy", static_cast<float>(medium.GetParameters().ScatteringAnisotropy));
-  program->SetUniformf("ambient", static_cast<float>(medium.GetParameters().AmbientIntensity));
+  // The ambient term and the sky's mean radiance (the map-based frame's approximation of the
+  // sky; the path tracer sets its own).
+  float ambient[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    ambient[c] = static_cast<float>(medium.GetParameters().AmbientIntensity +
+      (frame.Environment ? frame.Environment->GetMeanRadiance()[c] : 0.0));
+  }
+  program->SetUniform3f("ambient", ambient);
   if (medium.GetParameters().ScatteringOctaves > 1)
   {
     const double* f = medium.GetParameters().OctaveFactors;
@@ -279,6 +287,15 @@ void vtkTransmittanceRayCastPass::ReleaseGraphicsResources(vtkWindow* window)
   for (vtkTransmittanceAccumulationPass* accumulation : this->Accumulation)
   {
     accumulation->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceRayCastPass::ReleaseScratch(vtkWindow* window)
+{
+  for (vtkTransmittanceAccumulationPass* accumulation : this->Accumulation)
+  {
+    accumulation->ReleaseScratch(window);
   }
 }
 

@@ -90,6 +90,8 @@ public:
     int Segment = 0;
     /// The image kept in GetImage(0), not composited (the path tracer's denoising guide).
     bool Offscreen = false;
+    /// Whether the image is kept, not composited (Offscreen, or a depth-peeling part).
+    bool KeepsImage() const { return this->Offscreen || this->DepthRanges; }
   };
 
   /**
@@ -105,6 +107,9 @@ public:
   bool Render(const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkObject* reporter);
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// Frees what a kept image does not need (vtkTransmittanceAccumulationPass::ReleaseScratch()).
+  void ReleaseScratch(vtkWindow* window);
 
   /// Passes the last Render() split the rays over.
   int GetLastPassCount() const { return this->LastPassCount; }

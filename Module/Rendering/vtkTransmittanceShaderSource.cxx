@@ -19,6 +19,7 @@
 #include "vtkTransmittanceCommonFS.h"
 #include "vtkTransmittanceCompositeFS.h"
 #include "vtkTransmittanceDenoiseFS.h"
+#include "vtkTransmittanceEnvironmentFS.h"
 #include "vtkTransmittanceLightCacheFS.h"
 #include "vtkTransmittanceLightMapFS.h"
 #include "vtkTransmittanceLightsFS.h"
@@ -110,6 +111,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("ISO_MAX_OPACITY", vtkTyndallIsosurfaces::MaximumOpacity);
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
   define("PATH_BLOCKS", variant.SkipEmpty && variant.PathBlocks ? 1 : 0);
+  define("PATH_ENVIRONMENT", variant.PathEnvironment ? 1 : 0);
   using P = vtkTyndallProjection;
   define("PROJECTION", variant.Projection);
   define("PROJECTION_MAXIMUM", static_cast<int>(P::MAXIMUM));
@@ -261,6 +263,7 @@ std::string vtkTransmittanceShaderSource::GetFragmentShader(int pass, const Vari
       source += vtkTransmittanceCameraRayFS;
       source += vtkTransmittanceLightsFS;
       source += vtkTransmittanceRayCastFS;
+      source += vtkTransmittanceEnvironmentFS;
       source += vtkTransmittancePathTraceFS;
       break;
     default:

@@ -68,6 +68,8 @@
  *   TYNDALL_ISO_COUNT surfaces a step crosses instead of the medium;
  * - TYNDALL_PATH_BLOCKS (PATH_TRACE only): free flights and ratio tracking
  *   against the majorant grid's blocks (Variant::PathBlocks);
+ * - TYNDALL_PATH_ENVIRONMENT (PATH_TRACE only): the paths sample the
+ *   renderer's sky (Variant::PathEnvironment);
  * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
  *   one of TYNDALL_PROJECTION_MAXIMUM .. TYNDALL_PROJECTION_ADDITIVE
  *   (vtkTyndallProjection::Modes).
@@ -226,6 +228,9 @@ public:
      * majorant.
      */
     bool PathBlocks = false;
+    /// The path tracer (PATH_TRACE) samples the renderer's sky
+    /// (vtkTransmittanceEnvironmentFS.glsl).
+    bool PathEnvironment = false;
   };
 
   /// The fragment shader of a pass, constants injected.

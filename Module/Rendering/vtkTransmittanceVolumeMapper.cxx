@@ -491,6 +491,7 @@ std::vector<double> vtkTransmittanceVolumeMapper::vtkInternals::StillFrameKey(
       double(this->Cache->GetBuildCount()) });
   const std::vector<double>& clip = this->Scene.GetMedium().GetClipRegion().GetKey();
   key.insert(key.end(), clip.begin(), clip.end());
+  key.push_back(double(this->Scene.GetEnvironment().GetSerial())); // the renderer's sky
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator lit;
   lights->InitTraversal(lit);

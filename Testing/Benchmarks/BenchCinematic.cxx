@@ -22,8 +22,14 @@
 // Times are the frames of paths alone, each finished on the GPU
 // (WaitForCompletion), without the readbacks and PSNRs between them.
 //
+// With --sky both scenes are lit by a gradient sky too (the renderer's
+// EnvironmentalBG 0.02 straight down to EnvironmentalBG2 (0.3, 0.45, 0.8)
+// straight up, vtkTyndallEnvironment): the paths sample it, the map-based
+// frame adds its mean radiance to the ambient term; run with and without it
+// for the sky's cost and how alike the two modes light it.
+//
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
-//   [--bounces B] [--frame-spp K] [--help]
+//   [--bounces B] [--frame-spp K] [--sky] [--help]
 // --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp: every
 // render works, never a timing or a PSNR.
 #include "vtkImageData.h"
@@ -61,6 +67,7 @@ struct Options
   int CpuSamples = 256;
   int Bounces = 8;
   int FrameSamples = 16;
+  bool Sky = false;
 };
 
 double Seconds(std::chrono::steady_clock::time_point start)
@@ -110,6 +117,10 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       ok = next(o.FrameSamples, 1, 64);
     }
+    else if (a == "--sky")
+    {
+      o.Sky = true;
+    }
     else
     {
       ok = false;
@@ -117,7 +128,7 @@ bool Parse(int argc, char* argv[], Options& o)
     if (!ok)
     {
       std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
-                  "[--bounces B] [--frame-spp K] [--help]\n");
+                  "[--bounces B] [--frame-spp K] [--sky] [--help]\n");
       return false;
     }
   }
@@ -136,6 +147,12 @@ struct Scene : tyndall_test::PathScene
   {
     this->Mapper->SetPathTraceMaximumBounces(o.Bounces);
     this->Mapper->SetPathTraceSamplesPerFrame(o.FrameSamples);
+    if (o.Sky)
+    {
+      this->Renderer->GradientEnvironmentalBGOn();
+      this->Renderer->SetEnvironmentalBG(0.02, 0.02, 0.02);
+      this->Renderer->SetEnvironmentalBG2(0.3, 0.45, 0.8);
+    }
     display->Attach(this->Window);
   }
 
@@ -164,7 +181,8 @@ struct Scene : tyndall_test::PathScene
 
 bool Run(Scene& s, const Options& o)
 {
-  std::printf("%s, %d x %d, up to %d bounces:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces);
+  std::printf("%s, %d x %d, up to %d bounces%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
+    o.Sky ? ", under the gradient sky" : "");
   // 1. the converged picture (its own random numbers).
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;

@@ -1016,6 +1016,8 @@ int MakeData(const std::vector<std::string>& args)
     tyndall_test_data::WriteDicomSlice(dir + "/dicom/slice" + std::to_string(k) + ".dcm", slice);
   }
   WriteCtThreeWays(dir);
+  tyndall_test_data::WriteSkyHdr(dir + "/sky.hdr");
+  WriteText(dir + "/sky-damaged.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 32 +X 64\n");
   vtksys::SystemTools::MakeDirectory(dir + "/not-dicom");
   WriteText(dir + "/not-dicom/notes.txt", "not DICOM\n");
   std::cout << "wrote the loader test data into " << dir << "\n";

@@ -4,6 +4,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -96,6 +97,36 @@ bool WriteText(const std::string& path, const std::string& text)
 {
   std::ofstream out(path, std::ios::binary);
   out << text;
+  return static_cast<bool>(out);
+}
+
+bool WriteSkyHdr(const std::string& path)
+{
+  const int width = 64, height = 32;
+  std::ofstream out(path, std::ios::binary);
+  out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << height << " +X " << width << "\n";
+  for (int row = 0; row < height; ++row)
+  {
+    const int j = height - 1 - row; // from the top; j counts from the bottom
+    for (int i = 0; i < width; ++i)
+    {
+      const bool sun = i >= 36 && i < 40 && (j == 20 || j == 21);
+      const double sky[3] = { 0.3, 0.45, 0.8 };
+      const double ground[3] = { 0.05, 0.04, 0.03 };
+      double rgb[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[c] = sun ? 40.0 : (j >= height / 2 ? sky[c] : ground[c]);
+      }
+      const double v = std::max(rgb[0], std::max(rgb[1], rgb[2]));
+      int e = 0;
+      const double m = std::frexp(v, &e) * 256.0 / v;
+      const unsigned char rgbe[4] = { static_cast<unsigned char>(rgb[0] * m),
+        static_cast<unsigned char>(rgb[1] * m), static_cast<unsigned char>(rgb[2] * m),
+        static_cast<unsigned char>(e + 128) };
+      out.write(reinterpret_cast<const char*>(rgbe), 4);
+    }
+  }
   return static_cast<bool>(out);
 }
 

@@ -52,6 +52,11 @@ bool WriteLevelSetSphere(const std::string& path);
 /// box, its centre `shift` voxels along x from (8.5, 9.5, 7.5).
 bool WriteDensityBlob(const std::string& path, double shift);
 
+/// Writes a 64 x 32 equirectangular sky (Radiance RGBE, uncompressed rows,
+/// top first) to `path`: blue above the horizon, a dark ground, and a sun
+/// of 40 (4 x 2 texels) 22-34 degrees above the horizon; false on failure.
+bool WriteSkyHdr(const std::string& path);
+
 /// Writes the bad inputs of Documentation/bad-inputs.md into `dir` (with
 /// `vdb`, an OpenVDB file, cut in half); returns 0.
 int MakeBadInputs(const std::string& dir, const std::string& vdb);

@@ -5,5 +5,6 @@ vtk_add_test_cxx(TyndallApplicationCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestTyndallFrameSequence.cxx
   TestTyndallOptions.cxx
-  TestTyndallSceneBuilder.cxx)
+  TestTyndallSceneBuilder.cxx
+  TestTyndallSky.cxx)
 vtk_test_cxx_executable(TyndallApplicationCxxTests tests)

@@ -6,6 +6,7 @@ vtk_add_test_cxx(TyndallMediumCxxTests tests
   TestTransferFunctionPresets.cxx
   TestTyndallComponents.cxx
   TestTyndallDetailMedium.cxx
+  TestTyndallEnvironment.cxx
   TestTyndallFootprintFilter.cxx
   TestTyndallLabelMap.cxx
   TestTyndallVolumeSettings.cxx)

@@ -17,6 +17,7 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperPathTrace.cxx
   TestTransmittanceMapperToneMapping.cxx
   TestTransmittanceMapperDenoise.cxx
+  TestTransmittanceMapperSky.cxx
   TestTransmittanceMapperClipping.cxx
   TestTransmittanceMapperFire.cxx
   TestTransmittanceMapperChromatic.cxx

@@ -32,6 +32,7 @@
 
 #include "TyndallTestCheck.h"
 #include "TyndallTestImage.h"
+#include "TyndallTestPathCompare.h"
 #include "TyndallTestPathScene.h"
 #include "TyndallTestScene.h"
 
@@ -91,15 +92,6 @@ vtkSmartPointer<vtkImageData> Trace(Scene& scene, int samples)
   return scene.Picture();
 }
 
-vtkSmartPointer<vtkVolumetricPathTracer> MakeTracer(Scene& scene, int samples)
-{
-  auto tracer = vtkSmartPointer<vtkVolumetricPathTracer>::New();
-  tracer->SetDistanceSampling(vtkVolumetricPathTracer::DELTA_TRACKING);
-  tracer->SetSamplesPerPixel(samples);
-  tracer->SetMaximumBounces(scene.Mapper->GetPathTraceMaximumBounces());
-  return tracer;
-}
-
 // The mean squared error (8-bit levels^2) of `a` against `b`, from the PSNR.
 double MeanSquaredError(vtkImageData* a, vtkImageData* b)
 {
@@ -117,7 +109,7 @@ double MeanSquaredError(vtkImageData* a, vtkImageData* b)
 void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int size, bool mapsAlike)
 {
   Scene scene(data, peakOpacity, size);
-  auto converged = MakeTracer(scene, 4096);
+  auto converged = tyndall_test::MakeCpuTracer(scene, 4096);
   if (!converged->Render(scene.Renderer, scene.Volume, size, size))
   {
     Check(false, std::string(name) + ": the CPU tracer renders");
@@ -128,7 +120,7 @@ void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int si
   double own = 0.0;
   for (int seed = 0; seed < seeds; ++seed)
   {
-    auto cpu = MakeTracer(scene, 1024);
+    auto cpu = tyndall_test::MakeCpuTracer(scene, 1024);
     cpu->SetSeed(7 + seed);
     cpu->Render(scene.Renderer, scene.Volume, size, size);
     own += MeanSquaredError(cpu->Composite(), truth) / seeds;
@@ -175,40 +167,16 @@ void MeanAgainstCpu(
   // Without empty-space skipping the paths track against one majorant.
   scene.Mapper->SetEmptySpaceSkipping(blocks);
   const int samples = 64;
-  auto cpu = MakeTracer(scene, samples);
-  vtkImageData* traced = cpu->Render(scene.Renderer, scene.Volume, size, size);
-  if (!traced)
+  tyndall_test::BothTraced both;
+  if (!both.Trace(scene, samples, size, name))
   {
-    Check(false, std::string(name) + ": the CPU tracer renders");
     return;
   }
-  scene.Mapper->SetPathTraceShadowsToTracked();
-  scene.Mapper->SetPathTraceSamplesPerFrame(16);
-  vtkSmartPointer<vtkImageData> gpu = Trace(scene, samples);
-  vtkDataArray* L = traced->GetPointData()->GetArray("Radiance");
-  vtkDataArray* E = traced->GetPointData()->GetArray("RadianceStandardError");
-  vtkDataArray* T = traced->GetPointData()->GetArray("Transmittance");
-  const double* bg = scene.Renderer->GetBackground();
-  const auto* pixels = static_cast<unsigned char*>(gpu->GetScalarPointer());
-  const int components = gpu->GetNumberOfScalarComponents();
-  const double rounding = 1.0 / (12.0 * 255.0 * 255.0);
-  double worst = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    double difference = 0.0, variance = 0.0;
-    for (vtkIdType p = 0; p < L->GetNumberOfTuples(); ++p)
-    {
-      const double t = T->GetComponent(p, 0);
-      const double value = std::min(1.0, L->GetComponent(p, c) + t * bg[c]);
-      difference += pixels[p * components + c] / 255.0 - value;
-      variance += 2.0 *
-        (std::pow(E->GetComponent(p, c), 2) + bg[c] * bg[c] * t * (1.0 - t) / samples + rounding);
-    }
-    const double z = difference / std::sqrt(variance);
-    std::cout << name << " (" << size << "^2), " << samples << " spp, channel " << c
-              << ": sums differ by " << difference << ", z " << z << std::endl;
-    worst = std::max(worst, std::abs(z));
-  }
+  const tyndall_test::PathComparison comparison =
+    both.Compare(scene.Renderer->GetBackground(), samples);
+  const double worst = comparison.WorstZ(
+    std::string(name) + " (" + std::to_string(size) + "^2), " + std::to_string(samples) + " spp",
+    false);
   Check(worst < 4.5, std::string(name) + ": the GPU's mean is the CPU's within the noise");
 }
 

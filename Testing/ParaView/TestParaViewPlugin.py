@@ -109,7 +109,7 @@ changes = [("TyndallTransmittanceMethod", 0), ("TyndallNumberOfCoefficients", 2)
            ("TyndallDensityScale", 2.0), ("TyndallAnisotropy", -0.5), ("TyndallLightScale", 20.0),
            ("TyndallAmbient", 0.5), ("TyndallEmission", 0.5), ("TyndallOctaves", 1),
            ("TyndallExposure", 1.0), ("TyndallToneCurve", 2), ("TyndallEncodeSRGB", 1),
-           ("Shade", 1)]
+           ("TyndallSkyLight", 1), ("Shade", 1)]
 for name, value in changes:
     # GetData(): a value, or an enumeration's text (GetPropertyValue would
     # give an enumeration's live property, which follows the change).

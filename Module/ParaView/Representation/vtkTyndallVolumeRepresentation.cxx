@@ -24,6 +24,9 @@ vtkTyndallVolumeRepresentation::vtkTyndallVolumeRepresentation()
 {
   this->VolumeMapper = this->TyndallMapper.Get();
   this->Actor->SetProperty(this->Medium);
+  // ParaView gives every view's renderer a grey-blue environment colour: no
+  // sky light unless the Tyndall Sky Light property asks for it.
+  this->TyndallMapper->SkyLightOff();
   // Under MPI every rank draws its piece: the light crosses the ranks
   // through maps added over them.
   vtkNew<vtkTyndallMPIMapReducer> reducer;
@@ -223,6 +226,12 @@ void vtkTyndallVolumeRepresentation::SetPathTraceMaximumBounces(int bounces)
 void vtkTyndallVolumeRepresentation::SetPathTraceDenoise(int on)
 {
   this->TyndallMapper->SetPathTraceDenoise(on != 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetSkyLight(int on)
+{
+  this->TyndallMapper->SetSkyLight(on != 0);
 }
 
 //------------------------------------------------------------------------------

@@ -100,6 +100,14 @@ public:
   int GetLastPathTraceSamples();
   ///@}
 
+  /**
+   * Whether the view's sky lights the medium (vtkParticipatingMediumMapper::
+   * SkyLight): the environment colour, gradient or texture the view gives
+   * its renderer for ray tracing. Default off here: ParaView gives every
+   * view a grey-blue environment colour.
+   */
+  void SetSkyLight(int on);
+
   ///@{
   /**
    * The medium's settings (vtkParticipatingMediumProperty, which clamps

@@ -6,7 +6,9 @@
 // the majorant grid's blocks: TYNDALL_PATH_BLOCKS), next-event estimation towards every light at every collision (the light
 // transmittance from the frame's maps, lightTransmittance(), or ratio
 // tracked: pathTrackedShadows), Henyey-Greenstein scattering, a bounce
-// limit and Russian roulette. It writes the paths' mean radiance
+// limit and Russian roulette; with TYNDALL_PATH_ENVIRONMENT the renderer's
+// sky, sampled at every collision and met by the paths that leave (multiple
+// importance sampling, the power heuristic). It writes the paths' mean radiance
 // (premultiplied) and 1 - the mean of their first flights' escapes (an
 // unbiased estimate of the view transmittance); the still frames' images
 // are averaged by vtkTransmittanceAccumulationPass. CPU twin:
@@ -238,6 +240,46 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
   return sum;
 }
 
+#if TYNDALL_PATH_ENVIRONMENT
+uniform int pathSkySearchCost; // loop trips of a draw from the sky (its two searches)
+
+// The power heuristic's weight of a strategy of density a against one of density b.
+float tyndallPowerWeight(float a, float b)
+{
+  return a * a / (a * a + b * b);
+}
+
+// Next-event estimation of the sky at x, for the path's direction w, per
+// unit of scattering: L(l) p(mu) T / pdf(l), l drawn from the sky
+// (vtkTransmittanceEnvironmentFS.glsl), T ratio tracked to the box's side,
+// times the power heuristic's weight against the phase function's sampling
+// (1 at the path's last collision, which draws no direction). The CPU
+// tracer's AddSkyEvent().
+vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
+{
+  tyndallPathIterations += pathSkySearchCost;
+  vec4 u = vec4(tyndallRandom(), tyndallRandom(), tyndallRandom(), tyndallRandom());
+  vec3 l;
+  vec3 L;
+  float pdf = tyndallSampleSky(u, l, L);
+  if (!(pdf > 0.0))
+  {
+    return vec3(0.0);
+  }
+  float phase = tyndallPhaseHG(anisotropy, dot(l, w));
+  float T = tyndallRatioTrack(x, l, tyndallIntersectMapBox(x, l).y);
+  return L * (T * phase / pdf * (last ? 1.0 : tyndallPowerWeight(pdf, phase)));
+}
+
+// A scattered path leaving the media along w, drawn with the phase
+// function's density phasePdf: L(w) times the power heuristic's weight
+// against the sky's sampling (the CPU tracer's AddSkyEscape()).
+vec3 tyndallPathSkyEscape(vec3 w, float phasePdf)
+{
+  return tyndallSkyRadiance(w) * tyndallPowerWeight(phasePdf, tyndallSkyPdf(w));
+}
+#endif
+
 // A direction drawn from the Henyey-Greenstein phase function of
 // asymmetry g about w (the CPU tracer's SampleHenyeyGreenstein()).
 vec3 tyndallSampleHG(vec3 w, float g)
@@ -271,13 +313,20 @@ bool tyndallTracePath(
   vec3 o = p0;
   float t0 = tNear;
   float t1 = tFar;
+  float phasePdf = 0.0; // the density of the last scattered direction
   for (int bounce = 0; bounce < pathBounces; ++bounce)
   {
     vec3 x;
     TyndallCameraSample s;
     if (!tyndallFreeFlight(o, w, t0, t1, x, s))
     {
-      escaped += bounce == 0 ? 1.0 : 0.0;
+      escaped += bounce == 0 ? 1.0 : 0.0; // the camera sees the background, not the sky
+#if TYNDALL_PATH_ENVIRONMENT
+      if (bounce > 0 && !tyndallPathSpent())
+      {
+        radiance += beta * tyndallPathSkyEscape(w, phasePdf);
+      }
+#endif
       break;
     }
     if (scatteringModel == 0)
@@ -285,7 +334,11 @@ bool tyndallTracePath(
       radiance += beta * s.Color; // emission-absorption: the colour, and the path ends
       break;
     }
-    radiance += beta * (s.Color * tyndallPathInScattering(x, w) + tyndallSampleEmission(s));
+    vec3 light = tyndallPathInScattering(x, w);
+#if TYNDALL_PATH_ENVIRONMENT
+    light += tyndallPathSkyEvent(x, w, bounce + 1 >= pathBounces);
+#endif
+    radiance += beta * (s.Color * light + tyndallSampleEmission(s));
     beta *= s.Color;
     float q = max(beta.r, max(beta.g, beta.b));
     if (bounce + 1 >= pathBounces || !(q > 0.0) || tyndallPathSpent())
@@ -300,7 +353,9 @@ bool tyndallTracePath(
       }
       beta /= q;
     }
+    vec3 previous = w;
     w = tyndallSampleHG(w, anisotropy);
+    phasePdf = tyndallPhaseHG(anisotropy, dot(w, previous));
     o = x;
     t0 = 0.0;
     t1 = tyndallIntersectCameraBox(x, w).y;

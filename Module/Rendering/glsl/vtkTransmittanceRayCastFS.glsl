@@ -91,7 +91,7 @@ uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform float stepLength;
 uniform int lightSampleCount;
 uniform float anisotropy;
-uniform float ambient;
+uniform vec3 ambient; // AmbientIntensity (+ the sky's mean radiance in the map-based frame)
 uniform float emissionScale;
 
 // The lights' geometry (numberOfLights, tyndallLightAt()): vtkTransmittanceLightsFS.glsl.
