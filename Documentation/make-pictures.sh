@@ -73,23 +73,29 @@ run "$build/bin/tyndall-render" "${common[@]}" --path-trace 1024 -o "$pictures/c
 rm -rf "$pictures"
 
 # Light from the sky alone on the default scene (its sun off): the map-based
-# frame | 128 paths per pixel, under a gradient sky (top row) and under the
-# tests' image sky (bottom row: TyndallCLICheck's sky.hdr, a sun of 40 behind
-# the cloud, right of the view, 22-34 degrees up) (rendering-model.md, "Light
-# from the sky"; about 5 minutes).
+# frame with the sky's mean as ambient light (--sky-lights 0) | with the
+# sky's 4 lights (the default) | 128 paths per pixel, under a gradient sky
+# (top row) and under the tests' image sky (bottom row: TyndallCLICheck's
+# sky.hdr, a sun of 40 behind the cloud, right of the view, 22-34 degrees up)
+# (rendering-model.md, "Light from the sky"; about 5 minutes).
 pictures="$(mktemp -d)"
 run "$build/bin/TyndallCLICheck" make-data "$pictures/data" > /dev/null
 common=(-s 320 240 --tone-curve aces --srgb --light-direction 0 -1 0 --light-intensity 0)
 gradient=(--sky 0.03 0.03 0.03 --sky-top 0.5 0.65 1.0)
 image=(--sky-image "$pictures/data/sky.hdr")
-run "$build/bin/tyndall-render" "${common[@]}" "${gradient[@]}" -o "$pictures/gradient-maps.png"
-run "$build/bin/tyndall-render" "${common[@]}" "${gradient[@]}" --path-trace 128 -o "$pictures/gradient-paths.png"
-run "$build/bin/tyndall-render" "${common[@]}" "${image[@]}" -o "$pictures/image-maps.png"
-run "$build/bin/tyndall-render" "${common[@]}" "${image[@]}" --path-trace 128 -o "$pictures/image-paths.png"
+for sky in gradient image; do
+  declare -n options="$sky"
+  run "$build/bin/tyndall-render" "${common[@]}" "${options[@]}" --sky-lights 0 \
+    -o "$pictures/$sky-mean.png"
+  run "$build/bin/tyndall-render" "${common[@]}" "${options[@]}" -o "$pictures/$sky-lights.png"
+  run "$build/bin/tyndall-render" "${common[@]}" "${options[@]}" --path-trace 128 \
+    -o "$pictures/$sky-paths.png"
+  unset -n options
+done
 /usr/bin/python3 "$root/Documentation/scripts/append_pictures.py" 0 1 "$pictures/top.png" \
-  "$pictures"/gradient-{maps,paths}.png
+  "$pictures"/gradient-{mean,lights,paths}.png
 /usr/bin/python3 "$root/Documentation/scripts/append_pictures.py" 0 1 "$pictures/bottom.png" \
-  "$pictures"/image-{maps,paths}.png
+  "$pictures"/image-{mean,lights,paths}.png
 /usr/bin/python3 "$root/Documentation/scripts/append_pictures.py" 1 1 "$images/path-sky.png" \
   "$pictures"/{bottom,top}.png
 rm -rf "$pictures"

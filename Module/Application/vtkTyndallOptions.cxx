@@ -348,7 +348,11 @@ const Spec kOptions[] = {
   { "sky", "", Kind::Triple, 0, Huge, false, "", "R G B", "", "Image", Both,
     "light from a constant sky of this linear radiance (the renderer's EnvironmentalBG; with "
     "--sky-top the colour straight down), around the view-up: the path tracer samples it, the "
-    "map-based frame adds its mean radiance to the ambient term (unshadowed)" },
+    "map-based frame has it as --sky-lights lights" },
+  { "sky-lights", "", Kind::Integer, 0, 8, false, "", "N", "4", "Image", Both,
+    "the map-based frame's sky as N directional lights with their own maps (shadowed; a median "
+    "cut of the sky, in the slots the lights leave of 8); 0: its mean radiance as ambient light, "
+    "unshadowed (the mapper's SkyLightDirections)" },
   { "sky-top", "", Kind::Triple, 0, Huge, false, "", "R G B", "", "Image", Both,
     "the sky's colour straight up: a vertical gradient from --sky (default black), linear in "
     "the elevation (EnvironmentalBG2)" },

@@ -955,6 +955,7 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
       vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED == 1,
     "--path-shadows's choices are the mapper's order");
   mapper->SetPathTraceShadows(o->GetChoice("path-shadows"));
+  mapper->SetSkyLightDirections(static_cast<int>(o->GetNumber("sky-lights")));
   this->ApplyDisplayOptions(mapper);
 }
 

@@ -35,4 +35,5 @@ void vtkParticipatingMediumMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VectorMode: " << this->VectorMode << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "SkyLight: " << (this->SkyLight ? "On" : "Off") << "\n";
+  os << indent << "SkyLightDirections: " << this->SkyLightDirections << "\n";
 }

@@ -115,14 +115,35 @@ public:
    * Whether the renderer's sky lights the medium: its environment as VTK's
    * ray tracers read it (EnvironmentalBG, its gradient, an equirectangular
    * EnvironmentTexture with UseImageBasedLighting; vtkTyndallEnvironment),
-   * sampled by the path tracers, its mean radiance added to the ambient
-   * term of the map-based frame. Default on: VTK's default sky is black (no
-   * light). ParaView gives every view's renderer a grey-blue environment
-   * colour, so the ParaView plugin turns it off unless asked.
+   * sampled by the path tracers, and in the map-based frame carried by
+   * SkyLightDirections directional lights (or its mean radiance added to
+   * the ambient term). Default on: VTK's default sky is black (no light).
+   * ParaView gives every view's renderer a grey-blue environment colour, so
+   * the ParaView plugin turns it off unless asked.
    */
   vtkSetMacro(SkyLight, bool);
   vtkGetMacro(SkyLight, bool);
   vtkBooleanMacro(SkyLight, bool);
+  ///@}
+
+  ///@{
+  /**
+   * How many directional lights carry the sky in the map-based frame (and
+   * in its CPU twin, vtkSingleScatteringReference): in [0, 8], default 4.
+   * The sky is cut into that many regions of about equal light (a median
+   * cut, vtkTyndallSkyLights), each a directional light with its own
+   * transmittance map, so that the sky's light is shadowed inside the
+   * medium as the path tracers' sampled sky is. They take the slots the
+   * renderer's lights leave of the 8 a scene has
+   * (vtkTransmittanceVolumeMapper::GetMaximumNumberOfLights()): with 6
+   * renderer lights the sky gets at most 2. They light the medium's
+   * scattering only (not gradient shading, not surfaces). 0 adds the sky's
+   * mean radiance to the ambient term instead: unshadowed, evenly bright
+   * inside dense media, but no map's cost. The path tracers sample the sky
+   * itself and ignore this.
+   */
+  vtkSetClampMacro(SkyLightDirections, int, 0, 8);
+  vtkGetMacro(SkyLightDirections, int);
   ///@}
 
   /// vtkSmartVolumeMapper's vector modes (the same values).
@@ -184,6 +205,7 @@ protected:
   int VectorMode = DISABLED;
   int VectorComponent = 0;
   bool SkyLight = true;
+  int SkyLightDirections = 4;
 
 private:
   vtkParticipatingMediumMapper(const vtkParticipatingMediumMapper&) = delete;

@@ -197,9 +197,7 @@ bool vtkTyndallEnvironment::Build(const Key& key, vtkImageData* image, std::stri
     !key.Image && std::all_of(key.Colors, colorsEnd, [](double c) { return c == 0.0; });
   if (black)
   {
-    this->Width = this->Height = 1;
-    this->Radiance.assign(3, 0.0f);
-    this->Tabulate();
+    this->Clear();
     return true;
   }
   if (!this->SetFrame(key.Up, key.Right, why))
@@ -363,6 +361,20 @@ void vtkTyndallEnvironment::Texel(const double w[3], int& i, int& j) const
   const double v = 0.5 + std::atan2(y, std::sqrt(x * x + z * z)) / kPi;
   i = std::min(std::max(static_cast<int>(std::floor(u * this->Width)), 0), this->Width - 1);
   j = std::min(std::max(static_cast<int>(std::floor(v * this->Height)), 0), this->Height - 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallEnvironment::Direction(double u, double v, double w[3]) const
+{
+  const double phi = 2.0 * kPi * (u / this->Width - 0.5);
+  const double elevation = kPi * (v / this->Height - 0.5);
+  const double x = std::cos(elevation) * std::sin(phi);
+  const double y = std::sin(elevation);
+  const double z = std::cos(elevation) * std::cos(phi);
+  for (int c = 0; c < 3; ++c)
+  {
+    w[c] = x * this->Right[c] + y * this->Up[c] + z * this->Front[c];
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -116,6 +116,15 @@ public:
   /// The texel (column i, row j) the unit direction w falls in.
   void Texel(const double w[3], int& i, int& j) const;
 
+  /**
+   * The unit direction at the table's point (u, v), in texels: column u,
+   * row v (texel (i, j)'s centre at (i + 1/2, j + 1/2)); Texel()'s inverse.
+   */
+  void Direction(double u, double v, double w[3]) const;
+
+  /// The solid angle of one texel of row j.
+  double SolidAngle(int j) const;
+
   /// L(w) for the unit direction w.
   void Evaluate(const double w[3], double L[3]) const;
 
@@ -159,7 +168,6 @@ private:
   void Tabulate();
   /// Makes the environment black (one texel of 0).
   void Clear();
-  double SolidAngle(int j) const;
 
   int Width = 1;
   int Height = 1;

@@ -9,7 +9,10 @@
  * The irradiance a medium receives before attenuation and shadowing,
  * Irradiance, is LightScale * Color, LightScale being the medium's
  * (vtkParticipatingMediumProperty::GetLightScale()); the scene reader
- * computes it once for both renderers.
+ * computes it once for both renderers. The sky's lights
+ * (vtkTyndallSkyLights) are directional, with the irradiance of their part
+ * of the sky as Color and Irradiance (the sky is not scaled by LightScale)
+ * and RendererIndex -1.
  */
 
 #ifndef vtkTyndallLight_h
@@ -44,7 +47,8 @@ public:
   double ConeCosine = -1.0;
   double Exponent = 1.0;
   /**
-   * The light's index among the renderer's switched-on lights (the index
+   * The light's index among the renderer's switched-on lights (-1 for the
+   * sky's lights, which are none of them; the index
    * of its lightColor<i> uniform in VTK's polydata shaders).
    */
   int RendererIndex = 0;

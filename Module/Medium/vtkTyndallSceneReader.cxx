@@ -11,6 +11,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkRenderer.h"
 #include "vtkTyndallParticleMedium.h"
+#include "vtkTyndallSkyLights.h"
 #include "vtkTyndallVolumeSettings.h"
 #include "vtkVolume.h"
 #include "vtkVolumeCollection.h"
@@ -46,6 +47,16 @@ void PlaceLight(
     light->GetTransformedPosition(position);
     light->GetTransformedFocalPoint(focalPoint);
   }
+}
+
+// Whether two volumes' mappers light them by the sky alike (SkyLight,
+// SkyLightDirections): one of a camera group draws the others with its own.
+bool SameSky(vtkVolume* a, vtkVolume* b)
+{
+  auto* x = vtkParticipatingMediumMapper::SafeDownCast(a->GetMapper());
+  auto* y = vtkParticipatingMediumMapper::SafeDownCast(b->GetMapper());
+  return x && y && x->GetSkyLight() == y->GetSkyLight() &&
+    x->GetSkyLightDirections() == y->GetSkyLightDirections();
 }
 
 // Whether a Tyndall volume can be part of a camera group (see the class
@@ -175,6 +186,8 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
   if (this->SkyLit)
   {
     this->Environment.Update(renderer, reporter);
+    const int slots = MaximumNumberOfLights - static_cast<int>(this->Lights.size());
+    this->UpdateSkyLights(std::min(mapper->GetSkyLightDirections(), slots));
   }
   // The media: this volume's own (its detail when it has one, not in a
   // projection) first.
@@ -183,6 +196,29 @@ bool vtkTyndallSceneReader::Update(vtkRenderer* renderer, vtkVolume* volume, vtk
       : this->Medium.get());
   this->Media.insert(this->Media.end(), this->Guests.begin(), this->Guests.end());
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::UpdateSkyLights(int count)
+{
+  // Cut again only when the sky or the count change (an image's cut reads every texel).
+  if (count != this->SkyLightCount || this->Environment.GetSerial() != this->SkyLightSerial)
+  {
+    this->SkyLights = vtkTyndallSkyLights::Split(this->Environment, count);
+    this->SkyLightCount = count;
+    this->SkyLightSerial = this->Environment.GetSerial();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::GetMapAmbient(double ambient[3]) const
+{
+  const double* mean = this->GetEnvironment().GetMeanRadiance();
+  const bool meanAsAmbient = this->GetSkyLights().empty();
+  for (int c = 0; c < 3; ++c)
+  {
+    ambient[c] = this->Medium->GetParameters().AmbientIntensity + (meanAsAmbient ? mean[c] : 0.0);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -472,7 +508,7 @@ void vtkTyndallSceneReader::UpdateCameraGroup(
       {
         if (media[i] && media[j] && group[i] != group[j] &&
           media[i]->GetParameters().SameLighting(media[j]->GetParameters()) &&
-          Overlap(*media[i], *media[j]))
+          SameSky(volumes[i], volumes[j]) && Overlap(*media[i], *media[j]))
         {
           group[i] = group[j] = std::min(group[i], group[j]);
           changed = true;

@@ -48,7 +48,8 @@
  *   MaximumNumberOfGuests + 1 visible Tyndall volumes of the renderer, those
  *   that can be drawn together (SceneShadows and SceneCompositing on, read
  *   as guests are, no emission array, the same lighting settings:
- *   vtkTyndallMediumParameters::SameLighting()) and whose world boxes overlap, directly or through
+ *   vtkTyndallMediumParameters::SameLighting(), and mappers with the same
+ *   SkyLight and SkyLightDirections) and whose world boxes overlap, directly or through
  *   others, form a group; the first of a group in the renderer's order
  *   draws it (GetCameraGuests(): the members among its guests) and the
  *   others draw nothing of their own (GetDrawnBy()). Every reader of the
@@ -130,6 +131,27 @@ public:
     return this->SkyLit ? this->Environment : this->NoSky;
   }
 
+  /**
+   * The sky as directional lights for the map-based frame and its CPU
+   * twin (vtkTyndallSkyLights): at most the mapper's SkyLightDirections, in
+   * the slots GetLights() leaves of MaximumNumberOfLights; empty without a
+   * sky (GetEnvironment() black). They light the medium's scattering only;
+   * the path tracers sample the sky instead.
+   */
+  const std::vector<vtkTyndallLight>& GetSkyLights() const
+  {
+    return this->SkyLit ? this->SkyLights : this->NoSkyLights;
+  }
+
+  /**
+   * The map-based frame's ambient radiance per channel: the medium's
+   * AmbientIntensity, plus the sky's mean radiance where no sky light
+   * carries the sky (SkyLightDirections 0, or the renderer's lights take
+   * every slot). The path tracers sample the sky and take AmbientIntensity
+   * alone.
+   */
+  void GetMapAmbient(double ambient[3]) const;
+
   /// The most guests a medium is lit through (the shaders' guest arrays).
   static constexpr int MaximumNumberOfGuests = 3;
 
@@ -197,8 +219,13 @@ private:
   std::vector<const vtkTyndallMedium*> Media;
   std::vector<vtkTyndallLight> Lights;
   vtkTyndallEnvironment Environment;
-  vtkTyndallEnvironment NoSky; // black
-  bool SkyLit = false;         // GetEnvironment() is Environment
+  vtkTyndallEnvironment NoSky;              // black
+  bool SkyLit = false;                      // GetEnvironment() is Environment
+  std::vector<vtkTyndallLight> SkyLights;   // the Environment's, cut for SkyLightCount
+  std::vector<vtkTyndallLight> NoSkyLights; // empty
+  int SkyLightCount = 0;
+  vtkMTimeType SkyLightSerial = 0; // the Environment's serial SkyLights were cut from
+  void UpdateSkyLights(int count);
   std::string LastLightWarning;
   /// Warns once per change of the settings VTK draws and Tyndall does not
   /// (vtkTyndallVolumeSettings), per volume (a mapper may draw several).

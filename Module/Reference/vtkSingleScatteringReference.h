@@ -45,8 +45,10 @@
  * render when no light is on; a renderer that was never rendered may
  * therefore have no lights, and then single scattering gives only ambient
  * light and emission (no error). The renderer's sky (vtkTyndallEnvironment)
- * adds its mean radiance to the ambient term, unshadowed: the map-based
- * frame's approximation, of which this is the twin (vtkVolumetricPathTracer
+ * lights the medium as in the GPU's map-based frame, of which this is the
+ * twin: as the mapper's SkyLightDirections directional lights
+ * (vtkTyndallSkyLights, shadowed like the others), or with 0 (or no slot
+ * left) its mean radiance added to the ambient term (vtkVolumetricPathTracer
  * samples the sky). The mapper's clipping planes and cropping
  * cut the medium (vtkTyndallClipRegion's rules, as on the GPU): for camera
  * rays and for the light, unless LightIgnoresClipping is on. VTK's

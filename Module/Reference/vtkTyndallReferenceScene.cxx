@@ -151,6 +151,28 @@ double vtkTyndallReferenceScene::GetDiagonals() const
 }
 
 //------------------------------------------------------------------------------
+vtkTyndallReferenceScene::LightSource vtkTyndallReferenceScene::ToSource(
+  const vtkTyndallLight& light)
+{
+  LightSource source;
+  std::copy(light.Irradiance, light.Irradiance + 3, source.E);
+  std::copy(light.Color, light.Color + 3, source.Color);
+  source.Headlight = light.Headlight;
+  source.Positional = light.Positional;
+  source.Spot = light.Spot;
+  source.CosCone = light.ConeCosine;
+  source.Exponent = light.Exponent;
+  std::copy(light.Position, light.Position + 3, source.Position);
+  std::copy(light.Attenuation, light.Attenuation + 3, source.Attenuation);
+  std::copy(light.Direction, light.Direction + 3, source.SpotDirection);
+  for (int c = 0; c < 3; ++c)
+  {
+    source.ToLight[c] = -light.Direction[c];
+  }
+  return source;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTyndallReferenceScene::SetUpView(
   const vtkTyndallSceneReader& reader, vtkRenderer* renderer, vtkObject* reporter)
 {
@@ -173,25 +195,24 @@ bool vtkTyndallReferenceScene::SetUpView(
 void vtkTyndallReferenceScene::SetUpLights(const vtkTyndallSceneReader& reader)
 {
   this->Environment = &reader.GetEnvironment();
+  this->Lights.clear();
   for (const vtkTyndallLight& light : reader.GetLights())
   {
-    LightSource source;
-    std::copy(light.Irradiance, light.Irradiance + 3, source.E);
-    std::copy(light.Color, light.Color + 3, source.Color);
-    source.Headlight = light.Headlight;
-    source.Positional = light.Positional;
-    source.Spot = light.Spot;
-    source.CosCone = light.ConeCosine;
-    source.Exponent = light.Exponent;
-    std::copy(light.Position, light.Position + 3, source.Position);
-    std::copy(light.Attenuation, light.Attenuation + 3, source.Attenuation);
-    std::copy(light.Direction, light.Direction + 3, source.SpotDirection);
-    for (int c = 0; c < 3; ++c)
-    {
-      source.ToLight[c] = -light.Direction[c];
-    }
-    this->Lights.push_back(source);
+    this->Lights.push_back(ToSource(light));
   }
+  // The sky: sampled (the path tracer), or the map-based frame's lights and ambient term.
+  this->SkyLights.clear();
+  if (this->SampleSky)
+  {
+    const double ambient = this->Parameters->AmbientIntensity;
+    std::fill(this->Ambient, this->Ambient + 3, ambient);
+    return;
+  }
+  for (const vtkTyndallLight& light : reader.GetSkyLights())
+  {
+    this->SkyLights.push_back(ToSource(light));
+  }
+  reader.GetMapAmbient(this->Ambient);
 }
 
 //------------------------------------------------------------------------------

@@ -98,19 +98,31 @@ public:
   std::vector<Medium> Media;
   /// The lighting of the camera rays: the volume's own medium's.
   const vtkTyndallMediumParameters* Parameters = nullptr;
+  /// The renderer's lights (vtkTyndallSceneReader::GetLights()).
   std::vector<LightSource> Lights;
   /**
    * The renderer's environment (vtkTyndallSceneReader::GetEnvironment()):
-   * the path tracer samples it; vtkSingleScatteringReference reads its mean
-   * radiance as the map-based frame does.
+   * the path tracer samples it (SampleSky).
    */
   const vtkTyndallEnvironment* Environment = nullptr;
   /**
-   * Whether Source() adds the environment's mean radiance to the ambient
-   * term (the map-based frame's approximation of the sky; the path tracer
-   * samples the sky instead).
+   * Set before SetUpView(): whether the integrator samples the sky (the
+   * path tracer) or, as the map-based frame does, has it as SkyLights and
+   * MapAmbient (vtkSingleScatteringReference, the default).
    */
-  bool SkyAsAmbient = true;
+  bool SampleSky = false;
+  /**
+   * The sky's directional lights (vtkTyndallSceneReader::GetSkyLights();
+   * none with SampleSky): AddInScattering() adds them after Lights; gradient
+   * shading does not see them.
+   */
+  std::vector<LightSource> SkyLights;
+  /**
+   * The ambient radiance per channel Source() adds: the map-based frame's
+   * (vtkTyndallSceneReader::GetMapAmbient()), or with SampleSky the
+   * medium's AmbientIntensity alone.
+   */
+  double Ambient[3] = { 0.0, 0.0, 0.0 };
   /**
    * The volume's grid when it is drawn in a projection blend mode
    * (vtkTyndallProjection; Media's first then), else null.
@@ -241,43 +253,55 @@ public:
   void AddInScattering(const double x[3], const double w[3], const double albedo[3],
     LightTransmittance&& transmittance, double in[3]) const
   {
-    const bool chromatic = this->GetChromatic();
     for (const LightSource& light : this->Lights)
     {
-      double l[3], factor, tMax;
-      if (!this->LightGeometry(light, x, l, factor, tMax))
-      {
-        continue;
-      }
-      // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
-      const double mu = vtkMath::Dot(l, w);
-      double T[3];
-      transmittance(l, tMax, T);
-      double weight[3];
-      if (!chromatic)
-      {
-        this->LightWeight(mu, T[0], albedo, weight);
-      }
-      else
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          double channel[3];
-          this->LightWeight(mu, T[c], albedo, channel);
-          weight[c] = channel[c];
-        }
-      }
+      this->AddLight(light, x, w, albedo, transmittance, in);
+    }
+    for (const LightSource& light : this->SkyLights)
+    {
+      this->AddLight(light, x, w, albedo, transmittance, in);
+    }
+  }
+
+  /// AddInScattering()'s term of one light.
+  template <typename LightTransmittance>
+  void AddLight(const LightSource& light, const double x[3], const double w[3],
+    const double albedo[3], LightTransmittance&& transmittance, double in[3]) const
+  {
+    const bool chromatic = this->GetChromatic();
+    double l[3], factor, tMax;
+    if (!this->LightGeometry(light, x, l, factor, tMax))
+    {
+      return;
+    }
+    // mu = dot(-l, -w): the light travels along -l, the camera is along -w.
+    const double mu = vtkMath::Dot(l, w);
+    double T[3];
+    transmittance(l, tMax, T);
+    double weight[3];
+    if (!chromatic)
+    {
+      this->LightWeight(mu, T[0], albedo, weight);
+    }
+    else
+    {
       for (int c = 0; c < 3; ++c)
       {
-        in[c] += light.E[c] * factor * weight[c];
+        double channel[3];
+        this->LightWeight(mu, T[c], albedo, channel);
+        weight[c] = channel[c];
       }
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      in[c] += light.E[c] * factor * weight[c];
     }
   }
 
   /**
    * The source term J at a point `point` of the media at the world point x
-   * seen along w: albedo (ambient [+ the sky's mean radiance, SkyAsAmbient]
-   * + AddInScattering()) + EmissionScale emission, with `transmittance` as
+   * seen along w: albedo (Ambient + AddInScattering()) + EmissionScale
+   * emission, with `transmittance` as
    * AddInScattering()'s.
    */
   template <typename LightTransmittance>
@@ -285,15 +309,7 @@ public:
     LightTransmittance&& transmittance, double J[3]) const
   {
     const double* albedo = point.Albedo;
-    const double ambient = this->Parameters->AmbientIntensity;
-    double in[3] = { ambient, ambient, ambient };
-    if (this->SkyAsAmbient && this->Environment)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        in[c] += this->Environment->GetMeanRadiance()[c];
-      }
-    }
+    double in[3] = { this->Ambient[0], this->Ambient[1], this->Ambient[2] };
     if (albedo[0] != 0.0 || albedo[1] != 0.0 || albedo[2] != 0.0)
     {
       this->AddInScattering(x, w, albedo, transmittance, in);
@@ -361,6 +377,7 @@ public:
 private:
   void SetUpMedia(const vtkTyndallSceneReader& reader);
   void SetUpLights(const vtkTyndallSceneReader& reader);
+  static LightSource ToSource(const vtkTyndallLight& light);
 };
 
 #endif

@@ -809,7 +809,7 @@ bool vtkVolumetricPathTracer::RenderImage(
   scene.Samples = this->SamplesPerPixel;
   scene.MaxBounces = this->MaximumBounces;
   scene.Seed = this->Seed;
-  scene.SkyAsAmbient = false; // sampled
+  scene.SampleSky = true;
   if (!scene.SetUpView(tyndall, renderer, this))
   {
     return false;

@@ -136,8 +136,8 @@
  * so a white, non-absorbing medium under a constant sky L with the
  * background L composites to L everywhere. The camera ray's escape adds no
  * sky (the background is composited behind). vtkSingleScatteringReference
- * adds the sky's mean radiance to the ambient term instead, as the GPU's
- * map-based frame does.
+ * has the sky as the GPU's map-based frame has it instead (the mapper's
+ * SkyLightDirections lights, or its mean as ambient light).
  * The property's multiple-scattering octaves
  * (vtkParticipatingMediumProperty::ScatteringOctaves) are ignored: the paths
  * scatter for real, and are what the octaves are measured against

@@ -149,8 +149,12 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   this->PrepareMapBox();
   this->PrepareSplats();
 
-  // The lights, each with its map's frustum.
-  const std::vector<vtkTyndallLight>& lights = scene.GetLights();
+  // The lights, each with its map's frustum: the renderer's, then the sky's.
+  std::vector<vtkTyndallLight> lights = scene.GetLights();
+  const std::vector<vtkTyndallLight>& skyLights = scene.GetSkyLights();
+  lights.insert(lights.end(), skyLights.begin(), skyLights.end());
+  this->SkyLights = static_cast<int>(skyLights.size());
+  scene.GetMapAmbient(this->MapAmbient);
   this->Lights.resize(lights.size());
   for (size_t l = 0; l < lights.size(); ++l)
   {
@@ -570,6 +574,19 @@ void vtkTransmittanceFrame::SetOutputUniforms(
 }
 
 //------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetSkyUniforms(vtkShaderProgram* program, bool sampled) const
+{
+  float ambient[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    ambient[c] = static_cast<float>(
+      sampled ? this->Medium->GetParameters().AmbientIntensity : this->MapAmbient[c]);
+  }
+  program->SetUniform3f("ambient", ambient);
+  program->SetUniformi("numberOfSkyLights", sampled ? 0 : this->SkyLights);
+}
+
+//------------------------------------------------------------------------------
 void vtkTransmittanceFrame::SetLightUniforms(vtkShaderProgram* program) const
 {
   float irradiance[kMaxLights][3] = {}, position[kMaxLights][3] = {}, direction[kMaxLights][3] = {},
@@ -592,7 +609,7 @@ void vtkTransmittanceFrame::SetLightUniforms(vtkShaderProgram* program) const
     exponent[l] = static_cast<float>(light.Source.Exponent);
     method[l] = light.Method;
   }
-  program->SetUniformi("numberOfLights", static_cast<int>(this->Lights.size()));
+  program->SetUniformi("numberOfLights", this->GetSceneLights());
   program->SetUniform3fv("lightIrradiance", kMaxLights, irradiance);
   program->SetUniform3fv("lightPosition", kMaxLights, position);
   program->SetUniform3fv("lightDirection", kMaxLights, direction);

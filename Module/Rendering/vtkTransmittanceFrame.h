@@ -134,6 +134,14 @@ public:
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
   /**
+   * Sets the sky's terms of the camera rays' light (vtkTransmittanceRayCastFS.
+   * glsl's ambient and numberOfSkyLights): the map-based frame's, MapAmbient
+   * and the SkyLights lights; or, `sampled` (the path tracer, which samples
+   * the sky), the medium's AmbientIntensity and no sky light.
+   */
+  void SetSkyUniforms(vtkShaderProgram* program, bool sampled) const;
+
+  /**
    * Sets the lights' uniforms (vtkTransmittanceLightsFS.glsl, and the
    * camera rays' irradiances and methods) on `program`, and with the
    * medium's gradient shading (vtkTyndallShading) its coefficients.
@@ -250,10 +258,12 @@ public:
   const vtkTransmittanceMediumTextures* Textures = nullptr;
   /**
    * The renderer's sky (vtkTyndallSceneReader::GetEnvironment()): the path
-   * tracer samples it, the map-based frame adds its mean radiance to the
-   * ambient term.
+   * tracer samples it; the map-based frame has it as SkyLights lights (or
+   * its mean radiance in MapAmbient).
    */
   const vtkTyndallEnvironment* Environment = nullptr;
+  /// The map-based frame's ambient radiance (vtkTyndallSceneReader::GetMapAmbient()).
+  double MapAmbient[3] = { 0.0, 0.0, 0.0 };
   Settings Integrator;
   /**
    * Whether the frame buffer holds the renderer's background under the
@@ -273,7 +283,15 @@ public:
    * else 1 (an extinction map gives every channel exactly: exp(-e tau)).
    */
   int MapSets = 1;
+  /**
+   * The lights with their maps: the renderer's (vtkTyndallSceneReader::
+   * GetLights()), then the sky's SkyLights (GetSkyLights()), which light
+   * the medium's scattering only.
+   */
   std::vector<Light> Lights;
+  int SkyLights = 0;
+  /// The renderer's lights: Lights' first.
+  int GetSceneLights() const { return static_cast<int>(this->Lights.size()) - this->SkyLights; }
   double Corners[24];
   /// The world diagonal of the camera rays' box (CameraBoxExtents).
   double Diagonal = 1.0;

@@ -107,7 +107,7 @@ double vtkTransmittancePathTracePass::PathBound(
     const int* counts = frame.Textures->GetMajorantGrid().GetBlockCounts();
     flight += counts[0] + counts[1] + counts[2] + 3.0;
   }
-  const double lights = static_cast<double>(frame.Lights.size());
+  const double lights = static_cast<double>(frame.GetSceneLights()); // the sky is sampled
   const double collision =
     1.0 + (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
   const double sky = SamplesSky(frame) ? SkySearchCost(frame) + 1.0 + flight : 0.0;
@@ -135,9 +135,9 @@ double vtkTransmittancePathTracePass::CollisionCost(const vtkTransmittanceFrame&
 {
   const double march = vtkTransmittanceRayCastPass::LightMarchIterations(frame);
   double cost = 0.0;
-  for (const vtkTransmittanceFrame::Light& light : frame.Lights)
+  for (int l = 0; l < frame.GetSceneLights(); ++l) // the sky is sampled, not its lights
   {
-    cost += 1.0 + (light.Method == vtkTransmittanceMapMath::BRUTE_FORCE ? march : 0.0);
+    cost += 1.0 + (frame.Lights[l].Method == vtkTransmittanceMapMath::BRUTE_FORCE ? march : 0.0);
   }
   return cost;
 }
@@ -183,10 +183,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   vtkTransmittanceScopedTextures textures(
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   vtkTransmittanceRayCastPass::SetUniforms(frame, inputs, program);
-  // The ambient term alone: the paths sample the sky (the map-based frame adds its mean).
-  const float ambient = static_cast<float>(frame.Medium->GetParameters().AmbientIntensity);
-  const float ambients[3] = { ambient, ambient, ambient };
-  program->SetUniform3f("ambient", ambients);
+  frame.SetSkyUniforms(program, true); // the paths sample the sky
   if (variant.PathEnvironment)
   {
     for (vtkTextureObject* texture : this->Sky->GetTextures())

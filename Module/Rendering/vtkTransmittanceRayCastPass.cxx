@@ -88,6 +88,7 @@ bool vtkTransmittanceRayCastPass::Render(
   vtkTransmittanceScopedTextures textures(
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   SetUniforms(frame, inputs, program);
+  frame.SetSkyUniforms(program, false); // the map-based frame's sky: its lights, the ambient term
   int viewport[4];
   frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   const int width = (viewport[2] + reduction - 1) / reduction;
@@ -253,15 +254,6 @@ void vtkTransmittanceRayCastPass::SetUniforms(
   program->SetUniformi("lightSampleCount", s.LightSampleCount);
   program->SetUniformf(
     "anisotropy", static_cast<float>(medium.GetParameters().ScatteringAnisotropy));
-  // The ambient term and the sky's mean radiance (the map-based frame's approximation of the
-  // sky; the path tracer sets its own).
-  float ambient[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    ambient[c] = static_cast<float>(medium.GetParameters().AmbientIntensity +
-      (frame.Environment ? frame.Environment->GetMeanRadiance()[c] : 0.0));
-  }
-  program->SetUniform3f("ambient", ambient);
   if (medium.GetParameters().ScatteringOctaves > 1)
   {
     const double* f = medium.GetParameters().OctaveFactors;

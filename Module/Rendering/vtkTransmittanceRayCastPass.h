@@ -168,7 +168,8 @@ public:
   /**
    * Sets the camera rays' uniforms but the camera's and the step's: the
    * medium's, the maps' or cache's, the occluders', the integrator's and
-   * the lights'.
+   * the lights'. Not the sky's terms, which each integrator sets for
+   * itself (vtkTransmittanceFrame::SetSkyUniforms()).
    */
   static void SetUniforms(
     const vtkTransmittanceFrame& frame, const Inputs& inputs, vtkShaderProgram* program);

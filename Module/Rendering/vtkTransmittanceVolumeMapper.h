@@ -667,7 +667,8 @@ public:
    * vtkVolumeShadowReceiverPass; none when it failed), in the renderer's
    * order (switched-on lights with a positive intensity, at most
    * GetMaximumNumberOfLights();
-   * none in the emission-absorption model): their number, the method each
+   * none in the emission-absorption model), then the sky's directional
+   * lights (SkyLightDirections, under a sky), each with its map: their number, the method each
    * used (the mapper's, or BRUTE_FORCE for a light without a map; -1 for an
    * index out of range) and the frustum of each one's map (null out of
    * range; meaningful when the light has a map).

@@ -9,7 +9,8 @@
 //    CPU tracer's at --cpu-spp (default 256);
 // 2. the map-based frame (AdaptiveETM, single scattering: what the mapper
 //    draws while anything moves): its time and its PSNR against the
-//    converged picture; its time with the display transform (ACES, sRGB)
+//    converged picture (under a sky, the sky's two models, each also with
+//    the property's default two octaves); its time with the display transform (ACES, sRGB)
 //    against linear, alternated, the best of five each;
 // 3. for each light transmittance (the maps, ratio tracked), then the maps'
 //    with the denoiser (PathTraceDenoise): frames of paths from a new start,
@@ -24,22 +25,30 @@
 //
 // With --sky both scenes are lit by a gradient sky too (the renderer's
 // EnvironmentalBG 0.02 straight down to EnvironmentalBG2 (0.3, 0.45, 0.8)
-// straight up, vtkTyndallEnvironment): the paths sample it, the map-based
-// frame adds its mean radiance to the ambient term; run with and without it
-// for the sky's cost and how alike the two modes light it.
+// straight up, vtkTyndallEnvironment): the paths sample it; the map-based
+// frame is measured with the sky's mean radiance as ambient light
+// (SkyLightDirections 0) and with --sky-lights N sky lights (default 4, the
+// mapper's; 0 measures the mean twice), each in single scattering and with
+// the property's default two octaves; run with and without it for the sky's
+// cost and how alike the two modes light it. --sun lights them by an image
+// sky instead: the gradient with a small bright sun, 40 degrees up
+// (MakeSunSky()).
 //
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
-//   [--bounces B] [--frame-spp K] [--sky] [--help]
+//   [--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--help]
 // --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp: every
 // render works, never a timing or a PSNR.
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkParticipatingMediumProperty.h"
+#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTexture.h"
 #include "vtkTransmittanceVolumeMapper.h"
 #include "vtkTyndallDisplay.h"
 #include "vtkVolume.h"
@@ -68,7 +77,39 @@ struct Options
   int Bounces = 8;
   int FrameSamples = 16;
   bool Sky = false;
+  int SkyLights = 4;
+  bool Sun = false;
 };
+
+// The --sun sky: an equirectangular 128 x 64 image, the --sky gradient with a
+// sun of 4 texels (radiance 2000, about 1.4 degrees across) 40 degrees up.
+vtkSmartPointer<vtkTexture> MakeSunSky()
+{
+  const int W = 128, H = 64;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(W, H, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(W * H);
+  const double down[3] = { 0.02, 0.02, 0.02 }, up[3] = { 0.3, 0.45, 0.8 };
+  const int sunRow = static_cast<int>(H * (0.5 + 40.0 / 180.0)), sunColumn = W / 3;
+  for (int j = 0; j < H; ++j)
+  {
+    for (int i = 0; i < W; ++i)
+    {
+      const bool sun = (j == sunRow || j == sunRow + 1) && (i == sunColumn || i == sunColumn + 1);
+      for (int c = 0; c < 3; ++c)
+      {
+        const double t = (j + 0.5) / H;
+        values->SetComponent(j * W + i, c, sun ? 2000.0 : down[c] + t * (up[c] - down[c]));
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  return texture;
+}
 
 double Seconds(std::chrono::steady_clock::time_point start)
 {
@@ -121,6 +162,14 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       o.Sky = true;
     }
+    else if (a == "--sun")
+    {
+      o.Sky = o.Sun = true;
+    }
+    else if (a == "--sky-lights")
+    {
+      ok = next(o.SkyLights, 0, 8);
+    }
     else
     {
       ok = false;
@@ -128,7 +177,7 @@ bool Parse(int argc, char* argv[], Options& o)
     if (!ok)
     {
       std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
-                  "[--bounces B] [--frame-spp K] [--sky] [--help]\n");
+                  "[--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--help]\n");
       return false;
     }
   }
@@ -147,7 +196,12 @@ struct Scene : tyndall_test::PathScene
   {
     this->Mapper->SetPathTraceMaximumBounces(o.Bounces);
     this->Mapper->SetPathTraceSamplesPerFrame(o.FrameSamples);
-    if (o.Sky)
+    if (o.Sun)
+    {
+      this->Renderer->SetEnvironmentTexture(MakeSunSky());
+      this->Renderer->UseImageBasedLightingOn();
+    }
+    else if (o.Sky)
     {
       this->Renderer->GradientEnvironmentalBGOn();
       this->Renderer->SetEnvironmentalBG(0.02, 0.02, 0.02);
@@ -182,7 +236,7 @@ struct Scene : tyndall_test::PathScene
 bool Run(Scene& s, const Options& o)
 {
   std::printf("%s, %d x %d, up to %d bounces%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
-    o.Sky ? ", under the gradient sky" : "");
+    o.Sun ? ", under the sun sky" : (o.Sky ? ", under the gradient sky" : ""));
   // 1. the converged picture (its own random numbers).
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;
@@ -218,17 +272,33 @@ bool Run(Scene& s, const Options& o)
     "  converged: GPU %d spp (tracked shadows, seed 1) in %.1f s; against the CPU tracer at %d "
     "spp %.1f dB\n",
     samples, seconds, o.CpuSamples, tyndall_test::PSNR(converged, cpu->Composite()));
-  // 2. the map-based frame.
+  // 2. the map-based frame; under the sky with its mean as ambient light and
+  // with its lights, each in single scattering and with the property's two
+  // octaves (its default; the paths ignore the octaves).
   s.Mapper->PathTracingOff();
-  s.Window->Render();
-  s.Finish();
-  const auto mapStart = std::chrono::steady_clock::now();
-  s.Window->Render();
-  s.Finish();
-  const double mapSeconds = Seconds(mapStart);
-  std::printf("  map-based frame (AdaptiveETM, single scattering): %.3f s, %.1f dB against the "
-              "converged picture\n",
-    mapSeconds, tyndall_test::PSNR(s.Picture(), converged));
+  const int skyModels[2] = { 0, o.SkyLights };
+  for (int octaves = 1; octaves <= (o.Sky ? 2 : 1); ++octaves)
+  {
+    s.Property->SetScatteringOctaves(octaves);
+    for (int m = o.Sky ? 0 : 1; m < 2; ++m)
+    {
+      s.Mapper->SetSkyLightDirections(skyModels[m]);
+      s.Window->Render();
+      s.Finish();
+      const auto mapStart = std::chrono::steady_clock::now();
+      s.Window->Render();
+      s.Finish();
+      const double mapSeconds = Seconds(mapStart);
+      std::printf("  map-based frame (AdaptiveETM, %s%s): %.3f s, %.1f dB against the converged "
+                  "picture\n",
+        octaves == 1 ? "single scattering" : "2 octaves",
+        !o.Sky ? ""
+               : (skyModels[m] == 0 ? ", the sky's mean as ambient light" : ", the sky's lights"),
+        mapSeconds, tyndall_test::PSNR(s.Picture(), converged));
+    }
+  }
+  s.Property->SetScatteringOctaves(1);
+  s.Mapper->SetSkyLightDirections(0); // the paths as before (the sky lights are the frame's)
   // The display transform's cost: the frame linear and with ACES and sRGB,
   // alternated, the best of five each.
   double best[2] = { 1e30, 1e30 };

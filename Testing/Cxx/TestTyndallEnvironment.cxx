@@ -16,7 +16,15 @@
 //    3-D image, 32-bit integers, a NaN value, colour or up vector, a value
 //    above MaximumRadiance, a side too large, no up vector, a right vector
 //    along up (but not for a black sky, whose frame is not read);
-// 5. the tables rebuilt only when something changes (the serial).
+// 5. the tables rebuilt only when something changes (the serial);
+// 6. the sky as directional lights (vtkTyndallSkyLights, the map-based
+//    frame's): the irradiances add up to 4 pi times the mean radiance, per
+//    channel, for a constant, a gradient and an image sky and every count;
+//    a constant sky (one texel) cut into 2 is two opposite lights of 2 pi L
+//    each, into 4 four of pi L; a sun (one bright texel) is where one
+//    light comes from (Direction() Texel()'s inverse); the gradient's light
+//    comes from above; no light for a black sky or a count of 0; as many
+//    lights as cells with light when they are fewer.
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -28,11 +36,13 @@
 #include "vtkTexture.h"
 #include "vtkTyndallEnvironment.h"
 #include "vtkTyndallErrorObserver.h"
+#include "vtkTyndallSkyLights.h"
 #include "vtkTyndallToneMapping.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TyndallTestCheck.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
@@ -423,6 +433,136 @@ void Serial()
   sky.Update(renderer, reporter);
   Check(sky.GetSerial() > read && sky.GetRadiance()[0] == 5.0f, "a modified image: read again");
 }
+
+// The lights' irradiances add up to 4 pi times the sky's mean radiance.
+bool Conserved(const vtkTyndallEnvironment& sky, const std::vector<vtkTyndallLight>& lights)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    double sum = 0.0;
+    for (const vtkTyndallLight& l : lights)
+    {
+      sum += l.Irradiance[c];
+    }
+    const double expected = 4.0 * kPi * sky.GetMeanRadiance()[c];
+    if (!Near(sum, expected, 1e-9 * std::max(1.0, expected)))
+    {
+      std::cout << "channel " << c << ": the lights carry " << sum << ", the sky " << expected
+                << std::endl;
+      return false;
+    }
+  }
+  return true;
+}
+
+// 6. the sky as lights.
+void SkyLights()
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkObject> reporter;
+  vtkTyndallEnvironment sky;
+  sky.Update(renderer, reporter);
+  Check(vtkTyndallSkyLights::Split(sky, 4).empty(), "a black sky has no light");
+  renderer->SetEnvironmentalBG(0.5, 0.25, 1.0);
+  sky.Update(renderer, reporter);
+  Check(vtkTyndallSkyLights::Split(sky, 0).empty(), "a count of 0: no light");
+  bool conserved = true, counted = true, usable = true;
+  for (int n = 1; n <= 8; ++n)
+  {
+    const std::vector<vtkTyndallLight> lights = vtkTyndallSkyLights::Split(sky, n);
+    conserved = conserved && Conserved(sky, lights);
+    counted = counted && static_cast<int>(lights.size()) == n;
+    for (const vtkTyndallLight& l : lights)
+    {
+      usable = usable && !l.Positional && l.RendererIndex == -1 &&
+        Near(vtkMath::Norm(l.Direction), 1.0, 1e-9);
+    }
+  }
+  Check(conserved, "a constant sky's lights carry all its light");
+  Check(counted, "a constant sky (one texel) is cut into as many lights as asked");
+  Check(usable, "the sky's lights are directional, unit, and no renderer light");
+  std::vector<vtkTyndallLight> two = vtkTyndallSkyLights::Split(sky, 2);
+  Check(two.size() == 2 && Near(vtkMath::Dot(two[0].Direction, two[1].Direction), -1.0, 1e-3) &&
+      Near(two[0].Irradiance[0], 2.0 * kPi * 0.5, 1e-9) &&
+      Near(two[1].Irradiance[2], 2.0 * kPi * 1.0, 1e-9),
+    "a constant sky cut in two: opposite halves of 2 pi L each");
+  bool quarters = true;
+  for (const vtkTyndallLight& l : vtkTyndallSkyLights::Split(sky, 4))
+  {
+    quarters = quarters && Near(l.Irradiance[1], kPi * 0.25, 1e-9);
+  }
+  Check(quarters, "a constant sky cut in four: quarters of pi L each");
+
+  // The gradient: black down, white up: the brightest light looks up.
+  renderer->GradientEnvironmentalBGOn();
+  renderer->SetEnvironmentalBG(0.0, 0.0, 0.0);
+  renderer->SetEnvironmentalBG2(1.0, 1.0, 1.0);
+  sky.Update(renderer, reporter);
+  conserved = true;
+  for (int n = 1; n <= 8; ++n)
+  {
+    conserved = conserved && Conserved(sky, vtkTyndallSkyLights::Split(sky, n));
+  }
+  Check(conserved, "a gradient sky's lights carry all its light");
+  // The median cut gives the lights about equal light: most of them come
+  // from above, where the light is (their irradiance-weighted direction).
+  const std::vector<vtkTyndallLight> lights = vtkTyndallSkyLights::Split(sky, 4);
+  double from[3] = { 0.0, 0.0, 0.0 };
+  for (const vtkTyndallLight& l : lights)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      from[c] -= l.Irradiance[0] * l.Direction[c];
+    }
+  }
+  vtkMath::Normalize(from);
+  Check(lights.size() == 4 && from[1] > 0.9 && std::abs(from[0]) < 0.05,
+    "the gradient's light comes from above");
+
+  // A dim image with a sun: texel (40, 24) of 64 x 32, 1000 times brighter.
+  renderer->GradientEnvironmentalBGOff();
+  const int sunColumn = 40, sunRow = 24;
+  auto image = MakeImage(64, 32, 3,
+    [&](vtkIdType t, int c) { return t == sunRow * 64 + sunColumn ? 1000.0 : 0.01 * (c + 1); });
+  UseImage(renderer, image);
+  sky.Update(renderer, reporter);
+  conserved = true;
+  for (int n = 1; n <= 8; ++n)
+  {
+    conserved = conserved && Conserved(sky, vtkTyndallSkyLights::Split(sky, n));
+  }
+  Check(conserved, "an image sky's lights carry all its light");
+  double sun[3];
+  sky.Direction(sunColumn + 0.5, sunRow + 0.5, sun);
+  int i, j;
+  sky.Texel(sun, i, j);
+  Check(i == sunColumn && j == sunRow, "Direction() is Texel()'s inverse");
+  bool found = false;
+  for (const vtkTyndallLight& l : vtkTyndallSkyLights::Split(sky, 6))
+  {
+    // Where the light comes from is the sun's texel.
+    const double towards[3] = { -l.Direction[0], -l.Direction[1], -l.Direction[2] };
+    double L[3];
+    sky.Evaluate(towards, L);
+    found = found || L[0] == 1000.0;
+  }
+  Check(found, "the sun is one light's direction");
+  // A 1 x 2 image (down dark, up bright) has 64 x 32 cells: 8 lights.
+  UseImage(renderer, MakeImage(1, 2, 1, [](vtkIdType t, int) { return t == 0 ? 0.0 : 1.0; }));
+  sky.Update(renderer, reporter);
+  Check(vtkTyndallSkyLights::Split(sky, 8).size() == 8, "a small image is cut into its cells");
+  // Light in one cell only: one light, whatever the count.
+  UseImage(
+    renderer, MakeImage(64, 32, 1, [](vtkIdType t, int) { return t == 5 * 64 + 7 ? 3.0 : 0.0; }));
+  sky.Update(renderer, reporter);
+  Check(vtkTyndallSkyLights::Split(sky, 8).size() == 1, "one texel of light: one light");
+  // Two texels of light in one column: two lights (the dark cells are not cut off one by one).
+  UseImage(renderer,
+    MakeImage(
+      64, 32, 1, [](vtkIdType t, int) { return t == 5 * 64 + 7 || t == 20 * 64 + 7 ? 3.0 : 0.0; }));
+  sky.Update(renderer, reporter);
+  Check(vtkTyndallSkyLights::Split(sky, 8).size() == 2, "two texels of light: two lights");
+}
 }
 
 int TestTyndallEnvironment(int, char*[])
@@ -432,5 +572,6 @@ int TestTyndallEnvironment(int, char*[])
   Sampling();
   BadInput();
   Serial();
+  SkyLights();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -119,6 +119,15 @@ for name, value in changes:
     display.SetPropertyWithName(name, before)
     value_db = scene.psnr(changed, picture)
     check(value_db < 60.0, "%s = %s changes the picture: %.1f dB from it" % (name, value, value_db))
+# Sky Light Directions changes the sky's light (the view's environment colour): 0 is its mean.
+display.TyndallSkyLight = 1
+lit, _ = screenshot(view, "plugin-smoke-sky.png")
+display.TyndallSkyLightDirections = 0
+mean, _ = screenshot(view, "plugin-smoke-sky-mean.png")
+display.TyndallSkyLightDirections = 4
+display.TyndallSkyLight = 0
+value_db = scene.psnr(lit, mean)
+check(value_db < 60.0, "TyndallSkyLightDirections = 0 changes the lit picture: %.1f dB from it" % value_db)
 again, _ = screenshot(view, "plugin-smoke-again.png")
 check(scene.psnr(again, picture) == float("inf"), "the settings set back give the first picture")
 

@@ -73,14 +73,19 @@ dpkg-deb -x "$deb" "$unpacked"
 
 # 2. PREFIX/usr: links to /usr's entries, with real folders where the
 # unpacked package or the CMake copy must go.
-# mirror DIR SOURCE: DIR holds a link to every entry of SOURCE that it lacks.
+# mirror DIR SOURCE: DIR holds a link to every entry of SOURCE that it lacks
+# (one ln for them all: /usr/lib's thousands of entries, a fork each, took
+# half a minute).
 mirror() {
   mkdir -p "$1"
-  local entry
+  local entry links=()
   for entry in "$2"/* "$2"/.[!.]*; do
     [ -e "$entry" ] || [ -L "$entry" ] || continue
-    [ -e "$1/$(basename "$entry")" ] || ln -s "$entry" "$1/"
+    [ -e "$1/${entry##*/}" ] || [ -L "$1/${entry##*/}" ] || links+=("$entry")
   done
+  if [ "${#links[@]}" -gt 0 ]; then
+    ln -s -t "$1" "${links[@]}"
+  fi
 }
 usr="$prefix/usr"
 rm -rf "$usr"

@@ -235,6 +235,12 @@ void vtkTyndallVolumeRepresentation::SetSkyLight(int on)
 }
 
 //------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetSkyLightDirections(int count)
+{
+  this->TyndallMapper->SetSkyLightDirections(count);
+}
+
+//------------------------------------------------------------------------------
 int vtkTyndallVolumeRepresentation::GetLastPathTraceSamples()
 {
   return this->TyndallMapper->GetLastPathTraceSamples();

@@ -108,6 +108,13 @@ public:
    */
   void SetSkyLight(int on);
 
+  /**
+   * How many directional lights carry the sky in the map-based frame
+   * (vtkParticipatingMediumMapper::SkyLightDirections, which clamps it to
+   * [0, 8]; default 4).
+   */
+  void SetSkyLightDirections(int count);
+
   ///@{
   /**
    * The medium's settings (vtkParticipatingMediumProperty, which clamps

@@ -4,7 +4,8 @@
 // their geometry, and with TYNDALL_SHADING the colours and coefficients of
 // a plain property's gradient shading (vtkTyndallShading, its CPU twin).
 // vtkTransmittanceFrame::SetLightUniforms() sets them.
-uniform int numberOfLights;
+uniform int numberOfLights;    // the renderer's lights, 0 to numberOfLights - 1
+uniform int numberOfSkyLights; // the sky's after them (vtkTyndallSkyLights): scattering only
 uniform vec3 lightPosition[TYNDALL_MAX_LIGHTS];     // positional lights
 uniform vec3 lightDirection[TYNDALL_MAX_LIGHTS];    // direction the light travels
 uniform vec3 lightAttenuation[TYNDALL_MAX_LIGHTS];

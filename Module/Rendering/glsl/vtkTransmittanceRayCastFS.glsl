@@ -91,7 +91,7 @@ uniform int scatteringModel; // 0: emission-absorption, 1: single scattering
 uniform float stepLength;
 uniform int lightSampleCount;
 uniform float anisotropy;
-uniform vec3 ambient; // AmbientIntensity (+ the sky's mean radiance in the map-based frame)
+uniform vec3 ambient; // vtkTyndallSceneReader::GetMapAmbient()
 uniform float emissionScale;
 
 // The lights' geometry (numberOfLights, tyndallLightAt()): vtkTransmittanceLightsFS.glsl.
@@ -285,7 +285,8 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
   // An isosurface's light from shadowOffset towards it; a medium's where it is.
   float scatteringOffset = TYNDALL_ISOSURFACES != 0 ? shadowOffset : 0.0;
   vec3 sum = vec3(ambient);
-  for (int l = 0; l < numberOfLights; ++l)
+  // The renderer's lights and the sky's.
+  for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
     vec3 toLight;
     float distance;
