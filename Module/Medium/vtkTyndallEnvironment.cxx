@@ -371,6 +371,12 @@ void vtkTyndallEnvironment::Direction(double u, double v, double w[3]) const
   const double x = std::cos(elevation) * std::sin(phi);
   const double y = std::sin(elevation);
   const double z = std::cos(elevation) * std::cos(phi);
+  this->FromFrame(x, y, z, w);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallEnvironment::FromFrame(double x, double y, double z, double w[3]) const
+{
   for (int c = 0; c < 3; ++c)
   {
     w[c] = x * this->Right[c] + y * this->Up[c] + z * this->Front[c];
@@ -417,10 +423,7 @@ double vtkTyndallEnvironment::Sample(const double u[4], double w[3], double L[3]
   const double rho = std::sqrt(std::max(0.0, 1.0 - s * s));
   const double x = rho * std::sin(phi);
   const double z = rho * std::cos(phi);
-  for (int c = 0; c < 3; ++c)
-  {
-    w[c] = x * this->Right[c] + s * this->Up[c] + z * this->Front[c];
-  }
+  this->FromFrame(x, s, z, w);
   const float* texel = &this->Radiance[3 * (static_cast<size_t>(j) * W + i)];
   std::copy(texel, texel + 3, L);
   return Luminance(texel) / this->Total;

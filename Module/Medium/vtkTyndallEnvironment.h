@@ -113,6 +113,9 @@ public:
   const double* GetFront() const { return this->Front; }
   ///@}
 
+  /// The world direction x Right + y Up + z Front (the sky's frame to the world's).
+  void FromFrame(double x, double y, double z, double w[3]) const;
+
   /// The texel (column i, row j) the unit direction w falls in.
   void Texel(const double w[3], int& i, int& j) const;
 

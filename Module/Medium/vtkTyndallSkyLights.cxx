@@ -68,10 +68,7 @@ public:
     const double x = this->RowCos[j] * this->ColumnSin[i];
     const double y = this->RowSin[j];
     const double z = this->RowCos[j] * this->ColumnCos[i];
-    for (int c = 0; c < 3; ++c)
-    {
-      w[c] = x * this->Sky.GetRight()[c] + y * this->Sky.GetUp()[c] + z * this->Sky.GetFront()[c];
-    }
+    this->Sky.FromFrame(x, y, z, w);
   }
 
   const vtkTyndallEnvironment& Sky;
