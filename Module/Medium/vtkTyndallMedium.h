@@ -169,6 +169,15 @@ public:
   ///@}
 
   /**
+   * How many stratified points of each segment of a path estimate an
+   * emission array's light along it (per unit length: the segment's length
+   * over this, times the emission and the transmittance to each point): the
+   * path tracers' one setting, CPU (vtkVolumetricPathTracer) and GPU
+   * (vtkTransmittancePathTracePass).
+   */
+  static constexpr int PathEmissionSamples = 4;
+
+  /**
    * The optical depth of the densest channel along o + t d (local frame) for
    * t in [t0, t1] (within the box). The default marches the extinction in
    * equal midpoint steps of at most `step` (world length), stopping once the

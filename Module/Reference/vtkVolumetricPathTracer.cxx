@@ -121,8 +121,6 @@ struct Scene : public vtkTyndallReferenceScene
   int MaxBounces = 1;
   std::uint64_t Seed = 1;
   double* StandardError = nullptr;
-  /// Emission samples per path segment through an emission array.
-  int EmissionSamples = 4;
 };
 
 // A ray in world (origin X, unit direction W) and in every medium's frame,
@@ -404,7 +402,7 @@ private:
       {
         continue;
       }
-      const int n = s.EmissionSamples;
+      const int n = vtkTyndallMedium::PathEmissionSamples;
       const double length = (ray.High[k] - ray.Low[k]) / n;
       for (int i = 0; i < n; ++i)
       {

@@ -56,10 +56,6 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "a coloured extinction (ExtinctionColor) is not path traced yet";
   }
-  if (medium.GetEmissionFromArray())
-  {
-    return "emission from an array (EmissionArrayName) is not path traced yet";
-  }
   if (!frame.Guests.empty())
   {
     return "other volumes in the renderer (their shadows, SceneShadows) are not path traced yet";
@@ -111,8 +107,12 @@ double vtkTransmittancePathTracePass::PathBound(
   const double collision =
     1.0 + (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
   const double sky = SamplesSky(frame) ? SkySearchCost(frame) + 1.0 + flight : 0.0;
+  // An emission array: each segment's stratified points, each ratio tracked.
+  const double emission = frame.GetShaderVariant().EmissionArray
+    ? vtkTyndallMedium::PathEmissionSamples * (1.0 + flight)
+    : 0.0;
   const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
-  return bounces * (flight + collision + sky);
+  return bounces * (flight + collision + sky + emission);
 }
 
 //------------------------------------------------------------------------------
@@ -210,6 +210,10 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   program->SetUniformi("pathTrackedShadows", settings.TrackedShadows ? 1 : 0);
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
   program->SetUniformi("pathCollisionCost", static_cast<int>(std::ceil(CollisionCost(frame))));
+  if (variant.EmissionArray)
+  {
+    program->SetUniformi("pathEmissionSamples", vtkTyndallMedium::PathEmissionSamples);
+  }
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
   const bool drawn = this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw,
     reporter, std::max(historyFrames, 0), false, !settings.Denoise);

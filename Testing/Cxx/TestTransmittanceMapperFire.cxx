@@ -13,7 +13,6 @@
 //    the reference).
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -37,26 +36,6 @@ namespace
 {
 using tyndall_test::Check;
 
-// The built-in cloud with a "temperature" array: 400 K plus a hot blob of
-// 1900 K around (0, -0.3, 0), broader than the cloud's lower part.
-vtkSmartPointer<vtkImageData> MakeFire(int n)
-{
-  vtkSmartPointer<vtkImageData> image = tyndall_test::MakeCloud(n);
-  vtkNew<vtkFloatArray> temperature;
-  temperature->SetName("temperature");
-  temperature->SetNumberOfTuples(image->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    image->GetPoint(i, x);
-    const double r2 = x[0] * x[0] + (x[1] + 0.3) * (x[1] + 0.3) + x[2] * x[2];
-    temperature->SetValue(
-      i, static_cast<float>(400.0 + 1900.0 * std::exp(-r2 / (2.0 * 0.35 * 0.35))));
-  }
-  image->GetPointData()->AddArray(temperature);
-  return image;
-}
-
 double Channel(vtkImageData* image, int c)
 {
   vtkDataArray* radiance = image->GetPointData()->GetArray("Radiance");
@@ -73,7 +52,7 @@ int TestTransmittanceMapperFire(int, char*[])
 {
   const int size = 160;
   vtkNew<vtkTransmittanceVolumeMapper> mapper;
-  mapper->SetInputData(MakeFire(48));
+  mapper->SetInputData(tyndall_test::MakeFire(48));
   mapper->JitterOff();
   mapper->SetTransmittanceMapSize(256);
   auto property = tyndall_test::MakeCloudProperty(0.5);

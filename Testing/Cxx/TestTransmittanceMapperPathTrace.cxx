@@ -6,7 +6,7 @@
 //    issue's target), on the built-in cloud and on a dense medium, with the
 //    light transmittance ratio tracked and read from the maps;
 // 2. unbiased: at 64 samples the image sums of both agree within their
-//    noise (4.5 standard errors);
+//    noise (4.5 standard errors), on fire from an emission array too;
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples, a picture that has them all is redrawn unchanged, and a
@@ -18,6 +18,8 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -38,6 +40,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -160,12 +163,17 @@ void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int si
 // error squared plus bg^2 T (1 - T) / n (the view transmittance's escapes;
 // their covariance with the radiance, negative, is left out: a larger
 // variance) and an 8-bit rounding's 1/12 level^2, for each picture.
-void MeanAgainstCpu(
-  const char* name, vtkImageData* data, double peakOpacity, int size, bool blocks = true)
+// `configure` sets the scene up further.
+void MeanAgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int size,
+  bool blocks = true, const std::function<void(Scene&)>& configure = nullptr)
 {
   Scene scene(data, peakOpacity, size);
   // Without empty-space skipping the paths track against one majorant.
   scene.Mapper->SetEmptySpaceSkipping(blocks);
+  if (configure)
+  {
+    configure(scene);
+  }
   const int samples = 64;
   tyndall_test::BothTraced both;
   if (!both.Trace(scene, samples, size, name))
@@ -243,6 +251,19 @@ int TestTransmittanceMapperPathTrace(int, char*[])
   MeanAgainstCpu("Built-in cloud, one majorant", tyndall_test::MakeCloud(32), 0.5, 32, false);
   MeanAgainstCpu("Built-in cloud, cell scalars", CellScalars(tyndall_test::MakeCloud(32)), 0.5, 32);
   MeanAgainstCpu("Dense medium", tyndall_test::MakeDenseMedium(32), 0.9, 24);
+  // Fire: black-body emission per unit length from the "temperature" array,
+  // its only light (no sun, no ambient, a black background: the emission
+  // seen and scattered is the whole picture, and its noise the only noise).
+  MeanAgainstCpu("Fire (an emission array)", tyndall_test::MakeFire(32), 0.5, 32, true,
+    [](Scene& scene)
+    {
+      scene.Property->SetEmissionArrayName("temperature");
+      scene.Property->BlackbodyOn();
+      scene.Property->SetEmissionScale(3.0);
+      scene.Property->SetAmbientIntensity(0.0);
+      scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+      vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0))->SetIntensity(0.0);
+    });
   AgainstCpu("Built-in cloud", tyndall_test::MakeCloud(32), 0.5, 24, true);
   AgainstCpu("Dense medium", tyndall_test::MakeDenseMedium(32), 0.9, 24, false);
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -8,6 +8,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -17,6 +18,7 @@
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -34,6 +36,26 @@ inline vtkSmartPointer<vtkImageData> MakeCloud(int n)
   source->SetSpacing(2.0 / (n - 1), 2.0 / (n - 1), 2.0 / (n - 1));
   source->Update();
   return source->GetOutput();
+}
+
+// The built-in cloud with a "temperature" array: 400 K plus a hot blob of
+// 1900 K around (0, -0.3, 0), broader than the cloud's lower part.
+inline vtkSmartPointer<vtkImageData> MakeFire(int n)
+{
+  vtkSmartPointer<vtkImageData> image = MakeCloud(n);
+  vtkNew<vtkFloatArray> temperature;
+  temperature->SetName("temperature");
+  temperature->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    image->GetPoint(i, x);
+    const double r2 = x[0] * x[0] + (x[1] + 0.3) * (x[1] + 0.3) + x[2] * x[2];
+    temperature->SetValue(
+      i, static_cast<float>(400.0 + 1900.0 * std::exp(-r2 / (2.0 * 0.35 * 0.35))));
+  }
+  image->GetPointData()->AddArray(temperature);
+  return image;
 }
 
 // A dense medium: a slab of high constant density with a noisy top, so that

@@ -6,7 +6,8 @@
 // the majorant grid's blocks: TYNDALL_PATH_BLOCKS), next-event estimation towards every light at every collision (the light
 // transmittance from the frame's maps, lightTransmittance(), or ratio
 // tracked: pathTrackedShadows), Henyey-Greenstein scattering, a bounce
-// limit and Russian roulette; with TYNDALL_PATH_ENVIRONMENT the renderer's
+// limit and Russian roulette; an emission array's light along every
+// segment (TYNDALL_EMISSION_ARRAY); with TYNDALL_PATH_ENVIRONMENT the renderer's
 // sky, sampled at every collision and met by the paths that leave (multiple
 // importance sampling, the power heuristic). It writes the paths' mean radiance
 // (premultiplied) and 1 - the mean of their first flights' escapes (an
@@ -240,6 +241,37 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
   return sum;
 }
 
+#if TYNDALL_EMISSION_ARRAY
+uniform int pathEmissionSamples; // stratified points per segment (vtkTyndallMedium::PathEmissionSamples)
+
+// An emission array's light along the path's segment o + t w, t in (t0,
+// t1), per unit of throughput: its length over n times the sum over n
+// stratified points of the emission there (per unit length, scaled) and
+// the transmittance to it from the segment's start, ratio tracked (the CPU
+// tracer's AddArrayEmission()): unbiased, and independent of where the
+// flight collides.
+vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
+{
+  vec3 start = o + t0 * w;
+  float length = (t1 - t0) / float(pathEmissionSamples);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < pathEmissionSamples; ++i)
+  {
+    if (!tyndallPathStep())
+    {
+      break;
+    }
+    float t = (float(i) + tyndallRandom()) * length;
+    vec3 e = tyndallArrayEmission(start + t * w);
+    if (any(greaterThan(e, vec3(0.0))))
+    {
+      sum += e * tyndallRatioTrack(start, w, t);
+    }
+  }
+  return emissionScale * length * sum;
+}
+#endif
+
 #if TYNDALL_PATH_ENVIRONMENT
 uniform int pathSkySearchCost; // loop trips of a draw from the sky (its two searches)
 
@@ -318,6 +350,9 @@ bool tyndallTracePath(
   {
     vec3 x;
     TyndallCameraSample s;
+#if TYNDALL_EMISSION_ARRAY
+    radiance += beta * tyndallPathArrayEmission(o, w, t0, t1);
+#endif
     if (!tyndallFreeFlight(o, w, t0, t1, x, s))
     {
       escaped += bounce == 0 ? 1.0 : 0.0; // the camera sees the background, not the sky
