@@ -247,6 +247,11 @@ const Spec kOptions[] = {
   { "path-shadows", "", Kind::Choice, 0, 0, false, "maps|tracked", "M", "maps", "Scattering", Both,
     "with --path-trace: the light's transmittance at a path's collisions read from the "
     "transmittance maps (fast) or ratio tracked (unbiased)" },
+  { "path-distance", "", Kind::Choice, 0, 0, false, "closed-form|delta-tracking", "M",
+    "delta-tracking", "Scattering", Both,
+    "with --path-trace: free flights and tracked light transmittance through procedural detail "
+    "in closed form (the cosine-noise paper's) or by delta and ratio tracking (a grid is always "
+    "tracked)" },
   { "path-denoise", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "with --path-trace: show the paths' picture denoised, an edge-avoiding filter of what the "
     "paths add to the map-based frame, which guides it (its edges; noise-free); the filter "
@@ -877,9 +882,12 @@ public:
         ? "--sequence needs an input (numbered files or a 4-D file)"
         : "--sequence renders frames FIRST to LAST into PNGs: give no --frame, --frames or --exr";
     }
-    if ((set("path-bounces") || set("path-shadows") || set("path-denoise")) && !set("path-trace"))
+    if ((set("path-bounces") || set("path-shadows") || set("path-distance") ||
+          set("path-denoise")) &&
+      !set("path-trace"))
     {
-      return "--path-bounces, --path-shadows and --path-denoise need --path-trace";
+      return "--path-bounces, --path-shadows, --path-distance and --path-denoise need "
+             "--path-trace";
     }
     if (set("skip-bad-frames") && !set("sequence"))
     {

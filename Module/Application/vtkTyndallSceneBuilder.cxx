@@ -955,6 +955,10 @@ void vtkTyndallSceneBuilder::ApplyMapperOptions(vtkTransmittanceVolumeMapper* ma
       vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED == 1,
     "--path-shadows's choices are the mapper's order");
   mapper->SetPathTraceShadows(o->GetChoice("path-shadows"));
+  static_assert(vtkTransmittanceVolumeMapper::PATH_DISTANCE_CLOSED_FORM == 0 &&
+      vtkTransmittanceVolumeMapper::PATH_DISTANCE_DELTA_TRACKING == 1,
+    "--path-distance's choices are the mapper's order");
+  mapper->SetPathTraceDistanceSampling(o->GetChoice("path-distance"));
   mapper->SetSkyLightDirections(static_cast<int>(o->GetNumber("sky-lights")));
   this->ApplyDisplayOptions(mapper);
 }

@@ -85,6 +85,22 @@ bool vtkTransmittancePathTracePass::UsesBlocks(const vtkTransmittanceFrame& fram
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::UsesClosedForm(
+  const vtkTransmittanceFrame& frame, const Settings& settings)
+{
+  const vtkTyndallMedium& medium = *frame.OwnMedium;
+  return settings.ClosedForm && frame.Detail && frame.Detail->Enabled() && medium.HasClosedForm() &&
+    !medium.GetClip();
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittancePathTracePass::ClosedFormCost(const vtkTransmittanceFrame& frame)
+{
+  const int* n = frame.Detail->GetDimensions(); // the shape's cells (detailMaxCells)
+  return n[0] + n[1] + n[2] + 3.0;
+}
+
+//------------------------------------------------------------------------------
 double vtkTransmittancePathTracePass::Majorant(const vtkTransmittanceFrame& frame)
 {
   const double majorant = frame.OwnMedium->GetMajorant() * kMajorantMargin;
@@ -96,9 +112,14 @@ double vtkTransmittancePathTracePass::PathBound(
   const vtkTransmittanceFrame& frame, const Settings& settings)
 {
   // A flight's tentative collisions across the whole box at the majorant,
-  // and with the blocks a trip per block it crosses.
+  // and with the blocks a trip per block it crosses; in closed form a trip
+  // per cell.
   double flight = 2.0 + Majorant(frame) * frame.Diagonal;
-  if (UsesBlocks(frame))
+  if (UsesClosedForm(frame, settings))
+  {
+    flight = ClosedFormCost(frame);
+  }
+  else if (UsesBlocks(frame))
   {
     const int* counts = frame.Textures->GetMajorantGrid().GetBlockCounts();
     flight += counts[0] + counts[1] + counts[2] + 3.0;
@@ -169,6 +190,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   variant.DetailCameraGroups = -1;       // every wave: no pixel footprint filters a path
   variant.OpacityCoversRadiance = false; // drawn into images
   variant.PathBlocks = UsesBlocks(frame);
+  variant.PathClosedForm = UsesClosedForm(frame, settings);
   // The sky's textures (a failed upload, said once: the paths without the sky).
   variant.PathEnvironment =
     SamplesSky(frame) && this->Sky->Update(*frame.Environment, frame.Window, reporter);

@@ -80,6 +80,11 @@ public:
     int MaximumBounces = 8;
     /// Light transmittance ratio tracked (true) or read from the frame's maps.
     bool TrackedShadows = false;
+    /**
+     * Free flights and tracked transmittance in closed form where the
+     * medium has one (UsesClosedForm()); delta and ratio tracking otherwise.
+     */
+    bool ClosedForm = false;
     /// Picks the random numbers, with the frame's index and the pixel.
     int Seed = 0;
     /**
@@ -92,9 +97,9 @@ public:
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode, a plain property's gradient shading (neither is
-   * a medium: the CPU tracer refuses them too), a coloured extinction, an
-   * emission array, other volumes in the scene (guests), depth peeling
-   * (`peeling`), several processes (`distributed`).
+   * a medium: the CPU tracer refuses them too), a coloured extinction,
+   * other volumes in the scene (guests), depth peeling (`peeling`), several
+   * processes (`distributed`).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
 
@@ -158,6 +163,14 @@ private:
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the paths track against the majorant grid's blocks (Variant::PathBlocks).
   static bool UsesBlocks(const vtkTransmittanceFrame& frame);
+  /**
+   * Whether the paths' flights and tracked transmittance are in closed form
+   * (Variant::PathClosedForm): asked for, and the medium has one with
+   * nothing clipped (the CPU tracer's rule).
+   */
+  static bool UsesClosedForm(const vtkTransmittanceFrame& frame, const Settings& settings);
+  /// The loop trips a closed-form flight or optical depth counts at most (a walk over the cells).
+  static double ClosedFormCost(const vtkTransmittanceFrame& frame);
   /// Whether the paths sample the renderer's sky (it has light).
   static bool SamplesSky(const vtkTransmittanceFrame& frame);
   /// The loop trips a draw from the sky counts (its two searches).

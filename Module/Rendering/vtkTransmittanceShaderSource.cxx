@@ -112,6 +112,7 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("CHANNEL_MAPS", variant.Chromatic && variant.ChannelMaps ? 1 : 0);
   define("PATH_BLOCKS", variant.SkipEmpty && variant.PathBlocks ? 1 : 0);
   define("PATH_ENVIRONMENT", variant.PathEnvironment ? 1 : 0);
+  define("PATH_CLOSED_FORM", variant.DetailGroups > 0 && variant.PathClosedForm ? 1 : 0);
   using P = vtkTyndallProjection;
   define("PROJECTION", variant.Projection);
   define("PROJECTION_MAXIMUM", static_cast<int>(P::MAXIMUM));

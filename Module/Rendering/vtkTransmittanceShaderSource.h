@@ -70,6 +70,8 @@
  *   against the majorant grid's blocks (Variant::PathBlocks);
  * - TYNDALL_PATH_ENVIRONMENT (PATH_TRACE only): the paths sample the
  *   renderer's sky (Variant::PathEnvironment);
+ * - TYNDALL_PATH_CLOSED_FORM (PATH_TRACE only, with detail): free flights
+ *   and tracked transmittance in closed form (Variant::PathClosedForm);
  * - TYNDALL_PROJECTION (PROJECTION only): the projection blend mode,
  *   one of TYNDALL_PROJECTION_MAXIMUM .. TYNDALL_PROJECTION_ADDITIVE
  *   (vtkTyndallProjection::Modes).
@@ -231,6 +233,12 @@ public:
     /// The path tracer (PATH_TRACE) samples the renderer's sky
     /// (vtkTransmittanceEnvironmentFS.glsl).
     bool PathEnvironment = false;
+    /**
+     * The path tracer (PATH_TRACE) draws its free flights and tracked
+     * transmittance through procedural detail in closed form
+     * (vtkTransmittanceDetailFS.glsl's cell walk and solve).
+     */
+    bool PathClosedForm = false;
   };
 
   /// The fragment shader of a pass, constants injected.

@@ -602,6 +602,7 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   settings.SamplesPerFrame = self->GetPathTraceSamplesPerFrame();
   settings.MaximumBounces = self->GetPathTraceMaximumBounces();
   settings.TrackedShadows = self->GetPathTraceShadows() == PATH_SHADOWS_TRACKED;
+  settings.ClosedForm = self->GetPathTraceDistanceSampling() == PATH_DISTANCE_CLOSED_FORM;
   settings.Seed = self->GetPathTraceSeed();
   settings.Denoise = self->GetPathTraceDenoise();
   const int perFrame = vtkTransmittancePathTracePass::SamplesFor(this->Frame, settings);
@@ -1405,6 +1406,10 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PathTraceMaximumBounces: " << this->PathTraceMaximumBounces << "\n";
   os << indent << "PathTraceShadows: "
      << (this->PathTraceShadows == PATH_SHADOWS_TRACKED ? "Tracked" : "FromMaps") << "\n";
+  os << indent << "PathTraceDistanceSampling: "
+     << (this->PathTraceDistanceSampling == PATH_DISTANCE_CLOSED_FORM ? "ClosedForm"
+                                                                      : "DeltaTracking")
+     << "\n";
   os << indent << "PathTraceSeed: " << this->PathTraceSeed << "\n";
   os << indent << "PathTraceDenoise: " << (this->PathTraceDenoise ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";

@@ -6,7 +6,8 @@
 //    issue's target), on the built-in cloud and on a dense medium, with the
 //    light transmittance ratio tracked and read from the maps;
 // 2. unbiased: at 64 samples the image sums of both agree within their
-//    noise (4.5 standard errors), on fire from an emission array too;
+//    noise (4.5 standard errors), on procedural detail in closed form and
+//    delta tracked, and on fire from an emission array;
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples, a picture that has them all is redrawn unchanged, and a
@@ -16,6 +17,7 @@
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkCosineNoise.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -251,6 +253,27 @@ int TestTransmittanceMapperPathTrace(int, char*[])
   MeanAgainstCpu("Built-in cloud, one majorant", tyndall_test::MakeCloud(32), 0.5, 32, false);
   MeanAgainstCpu("Built-in cloud, cell scalars", CellScalars(tyndall_test::MakeCloud(32)), 0.5, 32);
   MeanAgainstCpu("Dense medium", tyndall_test::MakeDenseMedium(32), 0.9, 24);
+  // Procedural detail over a coarse shape, in closed form (against the CPU
+  // tracer's CLOSED_FORM) and delta tracked (against its DELTA_TRACKING).
+  for (const bool closedForm : { true, false })
+  {
+    MeanAgainstCpu(closedForm ? "Detail, closed form" : "Detail, delta tracking",
+      tyndall_test::MakeCloud(16), 0.5, 32, true,
+      [closedForm](Scene& scene)
+      {
+        vtkNew<vtkCosineNoise> noise;
+        noise->SetNumberOfOctaves(2);
+        noise->SetNumberOfDirections(6);
+        noise->SetFrequency(2.0);
+        noise->SetAmplitude(0.5);
+        noise->SetOffset(-noise->GetMinimumValue()); // non-negative: one medium both ways
+        noise->SetExtinctionScale(1.5);
+        scene.Property->SetDetailNoise(noise);
+        scene.Mapper->SetPathTraceDistanceSampling(closedForm
+            ? vtkTransmittanceVolumeMapper::PATH_DISTANCE_CLOSED_FORM
+            : vtkTransmittanceVolumeMapper::PATH_DISTANCE_DELTA_TRACKING);
+      });
+  }
   // Fire: black-body emission per unit length from the "temperature" array,
   // its only light (no sun, no ambient, a black background: the emission
   // seen and scattered is the whole picture, and its noise the only noise).

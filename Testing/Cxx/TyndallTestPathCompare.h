@@ -1,7 +1,7 @@
 // The path-tracing tests' comparison of the GPU's 8-bit picture with the CPU
 // tracer's (TestTransmittanceMapperPathTrace, TestTransmittanceMapperSky):
-// MakeCpuTracer() is a PathScene's CPU twin (DELTA_TRACKING, the mapper's
-// bounce limit); PathComparison scores the picture's sums against expected
+// MakeCpuTracer() is a PathScene's CPU twin (the mapper's distance sampling
+// and bounce limit); PathComparison scores the picture's sums against expected
 // values, each pixel's variance the CPU tracer's noise, `Pictures` of them
 // (its radiance's standard error squared plus bg^2 T (1 - T) / n for the
 // view transmittance's escapes; their negative covariance left out: a
@@ -30,7 +30,13 @@ namespace tyndall_test
 inline vtkSmartPointer<vtkVolumetricPathTracer> MakeCpuTracer(PathScene& scene, int samples)
 {
   auto tracer = vtkSmartPointer<vtkVolumetricPathTracer>::New();
-  tracer->SetDistanceSampling(vtkVolumetricPathTracer::DELTA_TRACKING);
+  // The mapper's distance sampling: procedural detail in closed form or
+  // tracked; a grid (no closed form) tracked.
+  const bool closedForm = scene.Property->GetDetailNoise() &&
+    scene.Mapper->GetPathTraceDistanceSampling() ==
+      vtkTransmittanceVolumeMapper::PATH_DISTANCE_CLOSED_FORM;
+  tracer->SetDistanceSampling(
+    closedForm ? vtkVolumetricPathTracer::CLOSED_FORM : vtkVolumetricPathTracer::DELTA_TRACKING);
   tracer->SetSamplesPerPixel(samples);
   tracer->SetMaximumBounces(scene.Mapper->GetPathTraceMaximumBounces());
   return tracer;

@@ -281,7 +281,7 @@ float tyndallDetailDepth(vec3 x, vec3 w, float tEnd)
   return detailScale * tau;
 }
 
-#if TYNDALL_DETAIL_SAMPLES > 0
+#if TYNDALL_DETAIL_SAMPLES > 0 || TYNDALL_PATH_CLOSED_FORM
 // The s in [0, len] at which the cell's integral from 0 reaches goal (0 <
 // goal <= whole, the integral over the whole cell): safeguarded Newton from
 // the guess of a homogeneous cell, the derivative being the unscaled
@@ -314,7 +314,9 @@ float tyndallDetailSolve(vec3 pa, vec3 d, vec4 c, float len, float goal, float w
   }
   return s;
 }
+#endif
 
+#if TYNDALL_DETAIL_SAMPLES > 0
 // Free-flight distances along the camera ray x + t w, t in [0, tEnd], drawn
 // in closed form (the paper's section 6, decoupled): one walk over the cells
 // finds, for each optical depth goals[j] (ascending, scaled), the cell where

@@ -3,18 +3,21 @@
 // transmittance it calls; vtkTransmittancePathTracePass). Each pixel
 // traces pathSamples paths from its camera ray (the pixel's centre, as the
 // CPU tracer's): free flights by delta tracking against one majorant (or
-// the majorant grid's blocks: TYNDALL_PATH_BLOCKS), next-event estimation towards every light at every collision (the light
-// transmittance from the frame's maps, lightTransmittance(), or ratio
-// tracked: pathTrackedShadows), Henyey-Greenstein scattering, a bounce
-// limit and Russian roulette; an emission array's light along every
-// segment (TYNDALL_EMISSION_ARRAY); with TYNDALL_PATH_ENVIRONMENT the renderer's
-// sky, sampled at every collision and met by the paths that leave (multiple
-// importance sampling, the power heuristic). It writes the paths' mean radiance
-// (premultiplied) and 1 - the mean of their first flights' escapes (an
-// unbiased estimate of the view transmittance); the still frames' images
-// are averaged by vtkTransmittanceAccumulationPass. CPU twin:
-// vtkVolumetricPathTracer with DELTA_TRACKING (the same estimator, term by
-// term; Documentation/rendering-model.md, "Path tracing").
+// the majorant grid's blocks: TYNDALL_PATH_BLOCKS), or through procedural
+// detail in closed form (TYNDALL_PATH_CLOSED_FORM), next-event estimation
+// towards every light at every collision (the light transmittance from the
+// frame's maps, lightTransmittance(), or tracked: pathTrackedShadows,
+// tyndallPathTransmittance()), Henyey-Greenstein scattering, a bounce limit
+// and Russian roulette; an emission array's light along every segment
+// (TYNDALL_EMISSION_ARRAY); with TYNDALL_PATH_ENVIRONMENT the renderer's
+// sky, sampled at every collision and met by the paths that leave
+// (multiple importance sampling, the power heuristic). It writes the paths'
+// mean radiance (premultiplied) and 1 - the mean of their first flights'
+// escapes (an unbiased estimate of the view transmittance); the still
+// frames' images are averaged by vtkTransmittanceAccumulationPass. CPU twin:
+// vtkVolumetricPathTracer (DELTA_TRACKING, or CLOSED_FORM through detail:
+// the same estimator, term by term; Documentation/rendering-model.md, "Path
+// tracing").
 //
 // Bounded work: every loop trip counts against pathBudget (a collision's
 // light estimate from the maps as pathCollisionCost trips); a path still
@@ -26,7 +29,7 @@ uniform int pathSeed;           // and the mapper's seed
 uniform int pathSamples;        // paths per pixel in this frame
 uniform int pathBounces;        // the most scattering events of a path
 uniform float pathMajorant;     // an upper bound of the extinction (per world unit)
-uniform int pathTrackedShadows; // 1: light transmittance ratio tracked; 0: lightTransmittance()
+uniform int pathTrackedShadows; // 1: light transmittance tracked; 0: lightTransmittance()
 uniform int pathBudget;         // loop trips one fragment may run
 uniform int pathCollisionCost;  // trips of a collision's light estimate from the maps
 
@@ -153,11 +156,69 @@ bool tyndallNextCollision(inout TyndallWalk walk, out float m)
 #endif
 }
 
-// Delta tracking from o along w over (t0, t1): true at a real collision,
-// at x, with the medium's camera sample there; false when the flight
-// leaves the segment or the budget is spent.
+#if TYNDALL_PATH_CLOSED_FORM
+// A free flight through procedural detail in closed form (the cosine-noise
+// paper's distance sampling): from x along w over (0, tEnd), the distance t
+// at which the optical depth reaches `goal`, walking the shape's cells
+// (vtkTransmittanceDetailFS.glsl; a loop trip each) and solving within the
+// cell that holds it; false when the segment ends first or the budget is
+// spent. The CPU twin: vtkTyndallDetailMedium::SampleDistance().
+bool tyndallDetailFlight(vec3 x, vec3 w, float tEnd, float goal, out float t)
+{
+  t = tEnd;
+  if (!(detailScale > 0.0))
+  {
+    return false;
+  }
+  TyndallDetailWalk k = tyndallDetailWalkStart(x, w);
+  float target = goal / detailScale; // in the walk's unscaled integrals
+  float tau = 0.0;
+  for (int i = 0; i < detailMaxCells; ++i)
+  {
+    if (!tyndallPathStep())
+    {
+      return false;
+    }
+    float tNext = tyndallDetailCellEnd(k, tEnd);
+    if (tNext > k.t)
+    {
+      vec3 pa;
+      vec4 c;
+      float whole = tyndallDetailCellIntegral(k, tNext, pa, c);
+      if (tau + whole >= target)
+      {
+        t = k.t + tyndallDetailSolve(pa, k.d, c, tNext - k.t, target - tau, whole);
+        return true;
+      }
+      tau += whole;
+    }
+    if (tNext >= tEnd)
+    {
+      return false;
+    }
+    tyndallDetailWalkAdvance(k, tNext);
+  }
+  return false;
+}
+#endif
+
+// A free flight from o along w over (t0, t1), by delta tracking (or in
+// closed form: TYNDALL_PATH_CLOSED_FORM): true at a real collision, at x,
+// with the medium's camera sample there; false when the flight leaves the
+// segment or the budget is spent.
 bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out TyndallCameraSample s)
 {
+#if TYNDALL_PATH_CLOSED_FORM
+  vec3 start = o + t0 * w;
+  float t;
+  bool collided = tyndallDetailFlight(start, w, t1 - t0, -log(1.0 - tyndallRandom()), t);
+  x = start + t * w;
+  if (collided)
+  {
+    s = tyndallCameraSample(x, x, w, 0.0);
+  }
+  return collided;
+#else
   TyndallWalk walk = tyndallStartWalk(o, w, t0, t1);
   float m;
   for (int i = 0; i < pathBudget; ++i)
@@ -175,6 +236,7 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out Tynda
   }
   x = walk.Origin + walk.T * w;
   return false;
+#endif
 }
 
 // Ratio tracking from x along dir over (0, tEnd): an unbiased estimate of
@@ -204,11 +266,24 @@ float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
   return T;
 }
 
+// The transmittance from x along dir over (0, tEnd): ratio tracked, or
+// exact in closed form (TYNDALL_PATH_CLOSED_FORM: its walk counted as the
+// most cells it can cross).
+float tyndallPathTransmittance(vec3 x, vec3 dir, float tEnd)
+{
+#if TYNDALL_PATH_CLOSED_FORM
+  tyndallPathIterations += detailMaxCells;
+  return exp(-tyndallDetailDepth(x, dir, tEnd));
+#else
+  return tyndallRatioTrack(x, dir, tEnd);
+#endif
+}
+
 // The light scattered at x against the path's direction w, per unit of
 // scattering: ambient + sum_l E_l p(mu_l) T_l (next-event estimation),
 // T_l from the frame's method (the maps, a brute-force march or none) or
-// ratio tracked to the light or the box's side (a light whose method is
-// None is unshadowed either way).
+// tracked to the light or the box's side (tyndallPathTransmittance(); a
+// light whose method is None is unshadowed either way).
 vec3 tyndallPathInScattering(vec3 x, vec3 w)
 {
   if (pathTrackedShadows == 0)
@@ -234,7 +309,7 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
     float T = 1.0;
     if (lightMethod[l] != TYNDALL_NONE)
     {
-      T = tyndallRatioTrack(x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance));
+      T = tyndallPathTransmittance(x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance));
     }
     sum += E * tyndallPhaseHG(anisotropy, dot(toLight, w)) * T;
   }
@@ -247,9 +322,9 @@ uniform int pathEmissionSamples; // stratified points per segment (vtkTyndallMed
 // An emission array's light along the path's segment o + t w, t in (t0,
 // t1), per unit of throughput: its length over n times the sum over n
 // stratified points of the emission there (per unit length, scaled) and
-// the transmittance to it from the segment's start, ratio tracked (the CPU
-// tracer's AddArrayEmission()): unbiased, and independent of where the
-// flight collides.
+// the transmittance to it from the segment's start (tyndallPathTransmittance();
+// the CPU tracer's AddArrayEmission()): unbiased, and independent of where
+// the flight collides.
 vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
 {
   vec3 start = o + t0 * w;
@@ -265,7 +340,7 @@ vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
     vec3 e = tyndallArrayEmission(start + t * w);
     if (any(greaterThan(e, vec3(0.0))))
     {
-      sum += e * tyndallRatioTrack(start, w, t);
+      sum += e * tyndallPathTransmittance(start, w, t);
     }
   }
   return emissionScale * length * sum;
@@ -283,7 +358,8 @@ float tyndallPowerWeight(float a, float b)
 
 // Next-event estimation of the sky at x, for the path's direction w, per
 // unit of scattering: L(l) p(mu) T / pdf(l), l drawn from the sky
-// (vtkTransmittanceEnvironmentFS.glsl), T ratio tracked to the box's side,
+// (vtkTransmittanceEnvironmentFS.glsl), T to the box's side
+// (tyndallPathTransmittance()),
 // times the power heuristic's weight against the phase function's sampling
 // (1 at the path's last collision, which draws no direction). The CPU
 // tracer's AddSkyEvent().
@@ -299,7 +375,7 @@ vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
     return vec3(0.0);
   }
   float phase = tyndallPhaseHG(anisotropy, dot(l, w));
-  float T = tyndallRatioTrack(x, l, tyndallIntersectMapBox(x, l).y);
+  float T = tyndallPathTransmittance(x, l, tyndallIntersectMapBox(x, l).y);
   return L * (T * phase / pdf * (last ? 1.0 : tyndallPowerWeight(pdf, phase)));
 }
 
