@@ -94,18 +94,23 @@ vtkShaderProgram* vtkTransmittanceAccumulationPass::CompositeProgram(
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame& frame,
-  vtkTextureObject* image, int width, int height, int historyFrames, vtkObject* reporter)
+  vtkTextureObject* image, vtkTextureObject* opacity, int width, int height, int historyFrames,
+  vtkObject* reporter)
 {
   vtkTextureObject* old = this->History;
-  if (!this->AllocateImage(frame, this->History, width, height, reporter))
+  vtkTextureObject* oldOpacity = this->HistoryOpacity;
+  if (!this->AllocateImage(frame, this->History, width, height, reporter) ||
+    (opacity && !this->AllocateImage(frame, this->HistoryOpacity, width, height, reporter)))
   {
     this->HistoryFrames = 0;
     return false;
   }
-  if (old != this->History.GetPointer())
+  if (old != this->History.GetPointer() ||
+    (opacity && (oldOpacity != this->HistoryOpacity.GetPointer() || !this->HistoryChromatic)))
   {
     historyFrames = 0; // a new image: nothing to average with
   }
+  this->HistoryChromatic = opacity != nullptr;
   vtkShaderProgram* program = this->CompositeProgram(frame, reporter);
   if (!program)
   {
@@ -114,9 +119,8 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
   vtkOpenGLState* state = frame.State;
   vtkTransmittanceOffscreenDraw offscreen(state, this->Framebuffer, width, height);
   vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-  this->Framebuffer->AddColorAttachment(0, this->History);
-  this->Framebuffer->ActivateDrawBuffers(1);
-  // history = image / (n + 1) + history * n / (n + 1): the mean of n + 1 frames.
+  // history = image / (n + 1) + history * n / (n + 1): the mean of n + 1
+  // frames; each channel's opacity image beside it alike.
   if (historyFrames > 0)
   {
     state->vtkglEnable(GL_BLEND);
@@ -128,18 +132,28 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
   {
     state->vtkglDisable(GL_BLEND);
   }
-  image->SetMinificationFilter(vtkTextureObject::Nearest);
-  image->SetMagnificationFilter(vtkTextureObject::Nearest);
+  for (vtkTextureObject* mean : { this->History.GetPointer(), this->HistoryOpacity.GetPointer() })
   {
-    vtkTransmittanceScopedTextures bind({ image });
-    program->SetUniformi("accumulated", image->GetTextureUnit());
-    program->SetUniformi("opacityCoversRadiance", 0); // an image, not the picture
-    program->SetUniformi("chromaticBehind", 0);
-    frame.SetOutputUniforms(program, false);
-    this->Quad.Render();
+    vtkTextureObject* added = mean == this->History ? image : opacity;
+    if (!added)
+    {
+      continue;
+    }
+    this->Framebuffer->AddColorAttachment(0, mean);
+    this->Framebuffer->ActivateDrawBuffers(1);
+    added->SetMinificationFilter(vtkTextureObject::Nearest);
+    added->SetMagnificationFilter(vtkTextureObject::Nearest);
+    {
+      vtkTransmittanceScopedTextures bind({ added });
+      program->SetUniformi("accumulated", added->GetTextureUnit());
+      program->SetUniformi("opacityCoversRadiance", 0); // an image, not the picture
+      program->SetUniformi("chromaticBehind", 0);
+      frame.SetOutputUniforms(program, false);
+      this->Quad.Render();
+    }
+    this->Framebuffer->RemoveColorAttachments(1);
   }
   glBlendColor(0.0f, 0.0f, 0.0f, 0.0f); // GL's default; VTK does not track it
-  this->Framebuffer->RemoveColorAttachments(1);
   this->HistoryFrames = historyFrames + 1;
   return true;
 }
@@ -150,12 +164,6 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   vtkObject* reporter, int historyFrames, bool chromatic, bool composite)
 {
   this->Result = nullptr;
-  if (chromatic && historyFrames >= 0)
-  {
-    vtkErrorWithObjectMacro(
-      reporter, << "A coloured extinction cannot be averaged over still frames.");
-    return false;
-  }
   if (!this->Allocate(frame, width, height, chromatic, reporter))
   {
     return false;
@@ -205,16 +213,16 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   }
   const bool upscaled = width != viewport[2] || height != viewport[3];
   vtkTextureObject* result = this->Images[(passes - 1) % 2];
+  vtkTextureObject* opacity = chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr;
   this->Result = result;
   if (historyFrames < 0)
   {
     this->HistoryFrames = 0;
-    return !composite ||
-      this->Composite(frame, result,
-        chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr, upscaled, reporter);
+    return !composite || this->Composite(frame, result, opacity, upscaled, reporter);
   }
-  return this->AddToHistory(frame, result, width, height, historyFrames, reporter) &&
-    (!composite || this->Composite(frame, this->History, nullptr, upscaled, reporter));
+  return this->AddToHistory(frame, result, opacity, width, height, historyFrames, reporter) &&
+    (!composite ||
+      this->Composite(frame, this->History, this->GetHistoryOpacity(), upscaled, reporter));
 }
 
 //------------------------------------------------------------------------------
@@ -226,14 +234,14 @@ bool vtkTransmittanceAccumulationPass::CompositeHistory(
     vtkErrorWithObjectMacro(reporter, << "There is no running average to draw.");
     return false;
   }
-  return this->Composite(frame, this->History, nullptr, false, reporter);
+  return this->Composite(frame, this->History, this->GetHistoryOpacity(), false, reporter);
 }
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::CompositeImage(
   const vtkTransmittanceFrame& frame, vtkTextureObject* image, vtkObject* reporter)
 {
-  return this->Composite(frame, image, nullptr, false, reporter);
+  return this->Composite(frame, image, this->GetHistoryOpacity(), false, reporter);
 }
 
 //------------------------------------------------------------------------------
@@ -311,7 +319,7 @@ void vtkTransmittanceAccumulationPass::ReleaseScratch(vtkWindow* window)
 void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkSmartPointer<vtkTextureObject>* image : { &this->Images[0], &this->Images[1],
-         &this->Opacities[0], &this->Opacities[1], &this->History })
+         &this->Opacities[0], &this->Opacities[1], &this->History, &this->HistoryOpacity })
   {
     if (*image)
     {
@@ -320,6 +328,7 @@ void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* windo
     *image = nullptr;
   }
   this->HistoryFrames = 0;
+  this->HistoryChromatic = false;
   this->Result = nullptr;
   if (this->Framebuffer)
   {

@@ -30,7 +30,9 @@
  * channel (`previousOpacity`). The result is then composited in two draws,
  * the window's colour multiplied by the transmittance (blended ZERO,
  * ONE_MINUS_SRC_COLOR), then the radiance added (ONE, ONE): radiance +
- * transmittance x background, per channel. No history is kept for it.
+ * transmittance x background, per channel. A history then averages the
+ * opacity images too (GetHistoryOpacity()), and the running average is
+ * composited the same way.
  *
  * Internal to Tyndall::Rendering.
  */
@@ -119,6 +121,15 @@ public:
   /// The running average (null before the first Render() that keeps one).
   vtkTextureObject* GetHistory() const { return this->HistoryFrames > 0 ? this->History : nullptr; }
 
+  /**
+   * The running average of the opacity images (1 - the transmittance per
+   * channel) beside GetHistory(), with a coloured extinction; else null.
+   */
+  vtkTextureObject* GetHistoryOpacity() const
+  {
+    return this->HistoryFrames > 0 && this->HistoryChromatic ? this->HistoryOpacity : nullptr;
+  }
+
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /**
@@ -146,12 +157,15 @@ private:
 
   /// The texture-copy program, bound; nullptr (with an error) when it does not compile.
   vtkShaderProgram* CompositeProgram(const vtkTransmittanceFrame& frame, vtkObject* reporter);
-  bool AddToHistory(const vtkTransmittanceFrame& frame, vtkTextureObject* image, int width,
-    int height, int historyFrames, vtkObject* reporter);
+  /// Adds `image` (and `opacity`, with a coloured extinction) to the running average.
+  bool AddToHistory(const vtkTransmittanceFrame& frame, vtkTextureObject* image,
+    vtkTextureObject* opacity, int width, int height, int historyFrames, vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> Images[2];
   vtkSmartPointer<vtkTextureObject> Opacities[2]; // beside Images, with a coloured extinction
   vtkSmartPointer<vtkTextureObject> History;
+  vtkSmartPointer<vtkTextureObject> HistoryOpacity; // beside History, with a coloured extinction
+  bool HistoryChromatic = false;                    // whether HistoryOpacity is part of the mean
   int HistoryFrames = 0;
   vtkTextureObject* Result = nullptr; // one of Images
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;

@@ -52,10 +52,6 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "gradient shading (Shade on) is not a medium";
   }
-  if (medium.GetParameters().GetChromatic())
-  {
-    return "a coloured extinction (ExtinctionColor) is not path traced yet";
-  }
   if (!frame.Guests.empty())
   {
     return "other volumes in the renderer (their shadows, SceneShadows) are not path traced yet";
@@ -90,7 +86,7 @@ bool vtkTransmittancePathTracePass::UsesClosedForm(
 {
   const vtkTyndallMedium& medium = *frame.OwnMedium;
   return settings.ClosedForm && frame.Detail && frame.Detail->Enabled() && medium.HasClosedForm() &&
-    !medium.GetClip();
+    !medium.GetClip() && !Chromatic(frame);
 }
 
 //------------------------------------------------------------------------------
@@ -101,9 +97,21 @@ double vtkTransmittancePathTracePass::ClosedFormCost(const vtkTransmittanceFrame
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::Chromatic(const vtkTransmittanceFrame& frame)
+{
+  return frame.Medium->GetParameters().GetChromatic();
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittancePathTracePass::SpectralFactor(const vtkTransmittanceFrame& frame)
+{
+  return Chromatic(frame) ? 2.0 : 1.0;
+}
+
+//------------------------------------------------------------------------------
 double vtkTransmittancePathTracePass::Majorant(const vtkTransmittanceFrame& frame)
 {
-  const double majorant = frame.OwnMedium->GetMajorant() * kMajorantMargin;
+  const double majorant = frame.OwnMedium->GetMajorant() * kMajorantMargin * SpectralFactor(frame);
   return std::isfinite(majorant) && majorant > 1e-30 ? majorant : 1e-30;
 }
 
@@ -191,6 +199,10 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   variant.OpacityCoversRadiance = false; // drawn into images
   variant.PathBlocks = UsesBlocks(frame);
   variant.PathClosedForm = UsesClosedForm(frame, settings);
+  // A coloured extinction: the view transmittance per channel in a second
+  // image, which the accumulation images (and their running mean) carry.
+  const bool chromatic = Chromatic(frame);
+  variant.Accumulate = variant.Accumulate || chromatic;
   // The sky's textures (a failed upload, said once: the paths without the sky).
   variant.PathEnvironment =
     SamplesSky(frame) && this->Sky->Update(*frame.Environment, frame.Window, reporter);
@@ -227,7 +239,8 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   if (variant.PathBlocks)
   {
     program->SetUniformf("pathBlockScale",
-      static_cast<float>(frame.Medium->GetParameters().DensityScale * kMajorantMargin));
+      static_cast<float>(
+        frame.Medium->GetParameters().DensityScale * kMajorantMargin * SpectralFactor(frame)));
   }
   program->SetUniformi("pathTrackedShadows", settings.TrackedShadows ? 1 : 0);
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
@@ -238,7 +251,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   }
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
   const bool drawn = this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw,
-    reporter, std::max(historyFrames, 0), false, !settings.Denoise);
+    reporter, std::max(historyFrames, 0), chromatic, !settings.Denoise);
   ++this->MeanSerial;
   if (this->Accumulation->GetHistoryFrames() <= 1)
   {

@@ -399,12 +399,13 @@ public:
    * towards every light at every collision, Henyey-Greenstein scattering,
    * Russian roulette, the pixel's centre, the ambient term and the
    * table's emission at every collision, an emission array's along every
-   * segment (vtkTyndallMedium::PathEmissionSamples points); the property's
-   * octaves are not used (the paths scatter for real). The picture is
-   * unbiased but noisy; its noise falls as 1 / sqrt(samples).
+   * segment (vtkTyndallMedium::PathEmissionSamples points), a coloured
+   * extinction by spectral tracking (a view transmittance per channel); the
+   * property's octaves are not used (the paths scatter for real). The
+   * picture is unbiased but noisy; its noise falls as 1 / sqrt(samples).
    *
    * Not path traced yet, each said once in a warning, the map-based frame
-   * drawn instead: a coloured extinction, several volumes sharing their
+   * drawn instead: several volumes sharing their
    * shadows (guests), VTK's depth peeling for volumes, several processes;
    * and never (they are not media; the CPU tracer refuses them too): the
    * projection and isosurface blend modes, a plain property's gradient

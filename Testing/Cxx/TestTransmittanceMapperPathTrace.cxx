@@ -7,12 +7,14 @@
 //    light transmittance ratio tracked and read from the maps;
 // 2. unbiased: at 64 samples the image sums of both agree within their
 //    noise (4.5 standard errors), on procedural detail in closed form and
-//    delta tracked, and on fire from an emission array;
+//    delta tracked, a coloured extinction (spectral tracking, a view
+//    transmittance per channel) and fire from an emission array;
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples, a picture that has them all is redrawn unchanged, and a
 //    frame the tracer refuses (a plain property's Shade) says so and
-//    draws the map-based frame.
+//    draws the map-based frame; a coloured extinction's mean is redrawn
+//    unchanged, and denoised.
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
@@ -244,11 +246,36 @@ void Mode()
       warnings->Last.find("gradient shading") != std::string::npos,
     "a shaded plain property is refused, said once, and drawn from the maps");
 }
+
+// 3. (continued) a coloured extinction's mean (radiance and a transmittance
+// per channel, both averaged over the still frames) is redrawn unchanged
+// once it has its samples, and shown through the denoiser.
+void ChromaticRedraw()
+{
+  Scene scene(tyndall_test::MakeCloud(32), 0.7, 24);
+  scene.Property->SetExtinctionColor(0.25, 0.6, 1.0);
+  scene.Mapper->SetPathTraceSamplesPerFrame(2);
+  vtkNew<WarningCounter> complaints;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, complaints);
+  scene.Mapper->AddObserver(vtkCommand::ErrorEvent, complaints);
+  Check(scene.Trace(4) >= 4, "a coloured extinction is path traced");
+  vtkSmartPointer<vtkImageData> traced = scene.Picture();
+  scene.Window->Render();
+  Check(tyndall_test::PSNR(scene.Picture(), traced) == std::numeric_limits<double>::infinity(),
+    "a coloured extinction's finished mean is redrawn unchanged");
+  scene.Mapper->PathTraceDenoiseOn();
+  scene.Window->Render();
+  const double denoised = tyndall_test::PSNR(scene.Picture(), traced);
+  std::cout << "Coloured extinction, denoised against the mean: " << denoised << " dB" << std::endl;
+  Check(denoised > 20.0 && denoised < 100.0, "the denoiser shows a coloured extinction's mean");
+  Check(complaints->Count == 0, "no warning or error: " + complaints->Last);
+}
 }
 
 int TestTransmittanceMapperPathTrace(int, char*[])
 {
   Mode();
+  ChromaticRedraw();
   MeanAgainstCpu("Built-in cloud", tyndall_test::MakeCloud(32), 0.5, 32);
   MeanAgainstCpu("Built-in cloud, one majorant", tyndall_test::MakeCloud(32), 0.5, 32, false);
   MeanAgainstCpu("Built-in cloud, cell scalars", CellScalars(tyndall_test::MakeCloud(32)), 0.5, 32);
@@ -274,6 +301,9 @@ int TestTransmittanceMapperPathTrace(int, char*[])
             : vtkTransmittanceVolumeMapper::PATH_DISTANCE_DELTA_TRACKING);
       });
   }
+  // A coloured extinction (red 0.25, green 0.6 of blue's), spectral tracking.
+  MeanAgainstCpu("Coloured extinction", tyndall_test::MakeCloud(32), 0.7, 32, true,
+    [](Scene& scene) { scene.Property->SetExtinctionColor(0.25, 0.6, 1.0); });
   // Fire: black-body emission per unit length from the "temperature" array,
   // its only light (no sun, no ambient, a black background: the emission
   // seen and scattered is the whole picture, and its noise the only noise).

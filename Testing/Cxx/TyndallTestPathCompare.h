@@ -62,13 +62,14 @@ struct PathComparison
     const int components = this->Picture->GetNumberOfScalarComponents();
     const double rounding = 1.0 / (12.0 * 255.0 * 255.0);
     const double* bg = this->Background;
+    const int tc = T->GetNumberOfComponents() == 3 ? c : 0; // per channel: a coloured extinction
     double sum = 0.0, variance = 0.0;
     for (int y = y0; y < y1; ++y)
     {
       for (int x = x0; x < x1; ++x)
       {
         const vtkIdType p = static_cast<vtkIdType>(y) * dims[0] + x;
-        const double t = T->GetComponent(p, 0);
+        const double t = T->GetComponent(p, tc);
         sum += pixels[p * components + c] / 255.0 - this->Expected(p, c);
         variance += this->Pictures *
           (std::pow(E->GetComponent(p, c), 2) + bg[c] * bg[c] * t * (1.0 - t) / this->Samples +
@@ -167,7 +168,10 @@ struct BothTraced
     vtkDataArray* T = this->Traced->GetPointData()->GetArray("Transmittance");
     return PathComparison{ this->Gpu, this->Traced, bg, samples, 2,
       [L, T, bg](vtkIdType p, int c)
-      { return std::min(1.0, L->GetComponent(p, c) + T->GetComponent(p, 0) * bg[c]); } };
+      {
+        const int tc = T->GetNumberOfComponents() == 3 ? c : 0; // a coloured extinction's
+        return std::min(1.0, L->GetComponent(p, c) + T->GetComponent(p, tc) * bg[c]);
+      } };
   }
 };
 }

@@ -11,10 +11,13 @@
 // and Russian roulette; an emission array's light along every segment
 // (TYNDALL_EMISSION_ARRAY); with TYNDALL_PATH_ENVIRONMENT the renderer's
 // sky, sampled at every collision and met by the paths that leave
-// (multiple importance sampling, the power heuristic). It writes the paths'
+// (multiple importance sampling, the power heuristic); a coloured
+// extinction by spectral tracking (TYNDALL_CHROMATIC). It writes the paths'
 // mean radiance (premultiplied) and 1 - the mean of their first flights'
-// escapes (an unbiased estimate of the view transmittance); the still
-// frames' images are averaged by vtkTransmittanceAccumulationPass. CPU twin:
+// escapes (an unbiased estimate of the view transmittance; per channel into
+// a second image with a coloured extinction, the escapes weighted by
+// spectral tracking); the still frames' images are averaged by
+// vtkTransmittanceAccumulationPass. CPU twin:
 // vtkVolumetricPathTracer (DELTA_TRACKING, or CLOSED_FORM through detail:
 // the same estimator, term by term; Documentation/rendering-model.md, "Path
 // tracing").
@@ -205,8 +208,13 @@ bool tyndallDetailFlight(vec3 x, vec3 w, float tEnd, float goal, out float t)
 // A free flight from o along w over (t0, t1), by delta tracking (or in
 // closed form: TYNDALL_PATH_CLOSED_FORM): true at a real collision, at x,
 // with the medium's camera sample there; false when the flight leaves the
-// segment or the budget is spent.
-bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out TyndallCameraSample s)
+// segment or the budget is spent. With a coloured extinction
+// (TYNDALL_CHROMATIC) spectral tracking: the grey (densest) extinction's
+// collisions against twice its majorant (pathMajorant is), each channel's
+// `weight` multiplied by extinctionColor at the real collision and by
+// (m - e sigma) / (m - sigma) at each null one (the CPU tracer's FlightIn()).
+bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out TyndallCameraSample s,
+  inout TyndallTransmittance weight)
 {
 #if TYNDALL_PATH_CLOSED_FORM
   vec3 start = o + t0 * w;
@@ -231,8 +239,14 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out Tynda
     s = tyndallCameraSample(x, x, w, 0.0);
     if (tyndallRandom() * m < s.Sigma)
     {
+#if TYNDALL_CHROMATIC
+      weight *= extinctionColor;
+#endif
       return true;
     }
+#if TYNDALL_CHROMATIC
+    weight *= (m - extinctionColor * s.Sigma) / (m - s.Sigma);
+#endif
   }
   x = walk.Origin + walk.T * w;
   return false;
@@ -240,12 +254,13 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out Tynda
 }
 
 // Ratio tracking from x along dir over (0, tEnd): an unbiased estimate of
-// the transmittance, with Russian roulette (survival 1/2) below 0.1 (the
-// CPU tracer's RatioTrack()).
-float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
+// the transmittance (per channel with a coloured extinction), with Russian
+// roulette (survival 1/2) once its largest channel is below 0.1 (the CPU
+// tracer's RatioTrack()).
+TyndallTransmittance tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
 {
   TyndallWalk walk = tyndallStartWalk(x, dir, 0.0, tEnd);
-  float T = 1.0;
+  TyndallTransmittance T = TyndallTransmittance(1.0);
   float m;
   for (int i = 0; i < pathBudget; ++i)
   {
@@ -253,12 +268,18 @@ float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
     {
       break;
     }
-    T *= max(0.0, 1.0 - tyndallSceneExtinction(walk.Origin + walk.T * dir, dir, 0.0) / m);
-    if (T < 0.1)
+    float sigma = tyndallSceneExtinction(walk.Origin + walk.T * dir, dir, 0.0);
+#if TYNDALL_CHROMATIC
+    T *= max(vec3(0.0), 1.0 - extinctionColor * (sigma / m));
+#else
+    T *= max(0.0, 1.0 - sigma / m);
+#endif
+    float largest = tyndallLargest(T);
+    if (largest < 0.1)
     {
-      if (T <= 0.0 || tyndallRandom() < 0.5)
+      if (largest <= 0.0 || tyndallRandom() < 0.5)
       {
-        return 0.0;
+        return TyndallTransmittance(0.0);
       }
       T *= 2.0;
     }
@@ -269,7 +290,7 @@ float tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
 // The transmittance from x along dir over (0, tEnd): ratio tracked, or
 // exact in closed form (TYNDALL_PATH_CLOSED_FORM: its walk counted as the
 // most cells it can cross).
-float tyndallPathTransmittance(vec3 x, vec3 dir, float tEnd)
+TyndallTransmittance tyndallPathTransmittance(vec3 x, vec3 dir, float tEnd)
 {
 #if TYNDALL_PATH_CLOSED_FORM
   tyndallPathIterations += detailMaxCells;
@@ -306,7 +327,7 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
     {
       continue;
     }
-    float T = 1.0;
+    TyndallTransmittance T = TyndallTransmittance(1.0);
     if (lightMethod[l] != TYNDALL_NONE)
     {
       T = tyndallPathTransmittance(x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance));
@@ -375,7 +396,7 @@ vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
     return vec3(0.0);
   }
   float phase = tyndallPhaseHG(anisotropy, dot(l, w));
-  float T = tyndallPathTransmittance(x, l, tyndallIntersectMapBox(x, l).y);
+  TyndallTransmittance T = tyndallPathTransmittance(x, l, tyndallIntersectMapBox(x, l).y);
   return L * (T * phase / pdf * (last ? 1.0 : tyndallPowerWeight(pdf, phase)));
 }
 
@@ -414,8 +435,8 @@ vec3 tyndallSampleHG(vec3 w, float g)
 // radiance to `radiance` and its first flight's escape (1 or 0) to
 // `escaped`; false when the budget ran out on the way (the path is kept as
 // far as it got; a first flight cut short counts as an escape).
-bool tyndallTracePath(
-  vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radiance, inout float escaped)
+bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radiance,
+  inout TyndallTransmittance escaped)
 {
   vec3 beta = vec3(1.0);
   vec3 o = p0;
@@ -429,9 +450,15 @@ bool tyndallTracePath(
 #if TYNDALL_EMISSION_ARRAY
     radiance += beta * tyndallPathArrayEmission(o, w, t0, t1);
 #endif
-    if (!tyndallFreeFlight(o, w, t0, t1, x, s))
+    TyndallTransmittance weight = TyndallTransmittance(1.0); // spectral tracking's
+    bool collided = tyndallFreeFlight(o, w, t0, t1, x, s, weight);
+    if (!collided && bounce == 0)
     {
-      escaped += bounce == 0 ? 1.0 : 0.0; // the camera sees the background, not the sky
+      escaped += weight; // the camera sees the background, not the sky
+    }
+    beta *= weight;
+    if (!collided)
+    {
 #if TYNDALL_PATH_ENVIRONMENT
       if (bounce > 0 && !tyndallPathSpent())
       {
@@ -485,7 +512,7 @@ void main()
   }
   uvec2 pixel = uvec2(gl_FragCoord.xy);
   vec3 radiance = vec3(0.0);
-  float escaped = 0.0;
+  TyndallTransmittance escaped = TyndallTransmittance(0.0);
   int traced = 0;
   for (int k = 0; k < pathSamples; ++k)
   {
@@ -498,5 +525,13 @@ void main()
     }
   }
   float n = float(traced);
+#if TYNDALL_CHROMATIC
+  // 1 - the view transmittance per channel into the second image; the first
+  // image's opacity their mean (vtkTransmittanceRayCastFS.glsl's tyndallWrite()).
+  vec3 opacity = 1.0 - escaped / n;
+  gl_FragData[0] = vec4(radiance / n, (opacity.r + opacity.g + opacity.b) / 3.0);
+  gl_FragData[1] = vec4(opacity, gl_FragData[0].a);
+#else
   gl_FragData[0] = vec4(radiance / n, 1.0 - escaped / n);
+#endif
 }
