@@ -669,7 +669,7 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   }
   int volumes[kMaxGuests] = {}, tables[kMaxGuests] = {};
   float toBox[16 * kMaxGuests] = {}, scale[kMaxGuests][3] = {}, shift[kMaxGuests][3] = {},
-                   toTable[kMaxGuests][2] = {}, density[kMaxGuests] = {}, camera[kMaxGuests] = {};
+                   toTable[kMaxGuests][2] = {}, density[kMaxGuests] = {};
   for (int g = 0; g < n; ++g)
   {
     const Guest& guest = this->Guests[g];
@@ -685,7 +685,6 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
     toTable[g][0] = static_cast<float>(table.TextureScale() * map[0]);
     toTable[g][1] = static_cast<float>(table.TextureScale() * map[1] + table.TextureShift());
     density[g] = static_cast<float>(guest.Medium->GetParameters().DensityScale);
-    camera[g] = guest.Camera ? 1.0f : 0.0f;
   }
   program->SetUniform1iv("guestVolume", n, volumes);
   program->SetUniform1iv("guestTransfer", n, tables);
@@ -723,22 +722,31 @@ void vtkTransmittanceFrame::SetGuestUniforms(vtkShaderProgram* program) const
   program->SetUniform3fv("guestAtlasDims", n, atlasDims);
   if (this->HasCameraGuests())
   {
-    program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only
-    // Declared by the coloured-guest variant only: a coloured particle
-    // cloud's scattering grid, the others their own volume (a valid 3-D
-    // texture on a unit of its own, never read).
-    int scattering[kMaxGuests] = {};
-    float colored[kMaxGuests] = {};
-    for (int g = 0; g < n; ++g)
-    {
-      vtkTextureObject* grid = this->Guests[g].Textures->GetScatteringTexture();
-      colored[g] = grid && this->Guests[g].Camera ? 1.0f : 0.0f;
-      scattering[g] =
-        (grid ? grid : this->Guests[g].Textures->GetVolumeTexture())->GetTextureUnit();
-    }
-    program->SetUniform1iv("guestScattering", n, scattering);
-    program->SetUniform1fv("guestColored", n, colored);
+    this->SetCameraGuestUniforms(program, false);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTransmittanceFrame::SetCameraGuestUniforms(vtkShaderProgram* program, bool every) const
+{
+  const int n = static_cast<int>(this->Guests.size());
+  float camera[kMaxGuests] = {};
+  // Declared by the coloured-guest variant only: a coloured particle
+  // cloud's scattering grid, the others their own volume (a valid 3-D
+  // texture on a unit of its own, never read).
+  int scattering[kMaxGuests] = {};
+  float colored[kMaxGuests] = {};
+  for (int g = 0; g < n; ++g)
+  {
+    const Guest& guest = this->Guests[g];
+    camera[g] = guest.Camera ? 1.0f : 0.0f;
+    vtkTextureObject* grid = guest.Textures->GetScatteringTexture();
+    colored[g] = grid && (guest.Camera || every) ? 1.0f : 0.0f;
+    scattering[g] = (grid ? grid : guest.Textures->GetVolumeTexture())->GetTextureUnit();
+  }
+  program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only
+  program->SetUniform1iv("guestScattering", n, scattering);
+  program->SetUniform1fv("guestColored", n, colored);
 }
 
 //------------------------------------------------------------------------------

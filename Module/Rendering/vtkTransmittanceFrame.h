@@ -134,6 +134,16 @@ public:
   void SetMediumUniforms(vtkShaderProgram* program) const;
 
   /**
+   * Sets the uniforms of the guests the camera samples (TYNDALL_CAMERA_GUESTS:
+   * which guests are drawn with this medium, the coloured particle clouds'
+   * scattering grids); `every`: the program samples every guest at times
+   * (the path tracer's scattered flights), so every coloured cloud's colour
+   * is read. SetMediumUniforms() sets them (`every` false) when the frame
+   * has camera guests.
+   */
+  void SetCameraGuestUniforms(vtkShaderProgram* program, bool every) const;
+
+  /**
    * Sets the sky's terms of the camera rays' light (vtkTransmittanceRayCastFS.
    * glsl's ambient and numberOfSkyLights): the map-based frame's, MapAmbient
    * and the SkyLights lights; or, `sampled` (the path tracer, which samples

@@ -1,5 +1,6 @@
 #include "vtkTransmittancePathTracePass.h"
 
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -52,10 +53,6 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "gradient shading (Shade on) is not a medium";
   }
-  if (!frame.Guests.empty())
-  {
-    return "other volumes in the renderer (their shadows, SceneShadows) are not path traced yet";
-  }
   if (distributed)
   {
     return "several processes draw the picture (a path would scatter between their pieces)";
@@ -77,7 +74,7 @@ bool vtkTransmittancePathTracePass::UsesBlocks(const vtkTransmittanceFrame& fram
   // majorant too (their tables' bounds are the blocks' as well, untested).
   const vtkTransmittanceShaderSource::Variant variant = frame.GetShaderVariant();
   return variant.SkipEmpty && variant.DetailGroups == 0 && !variant.Transfer2D &&
-    !variant.LabelMap && !(frame.Detail && frame.Detail->Enabled());
+    !variant.LabelMap && !(frame.Detail && frame.Detail->Enabled()) && frame.Guests.empty();
 }
 
 //------------------------------------------------------------------------------
@@ -86,7 +83,7 @@ bool vtkTransmittancePathTracePass::UsesClosedForm(
 {
   const vtkTyndallMedium& medium = *frame.OwnMedium;
   return settings.ClosedForm && frame.Detail && frame.Detail->Enabled() && medium.HasClosedForm() &&
-    !medium.GetClip() && !Chromatic(frame);
+    !medium.GetClip() && !Chromatic(frame) && frame.Guests.empty();
 }
 
 //------------------------------------------------------------------------------
@@ -94,6 +91,27 @@ double vtkTransmittancePathTracePass::ClosedFormCost(const vtkTransmittanceFrame
 {
   const int* n = frame.Detail->GetDimensions(); // the shape's cells (detailMaxCells)
   return n[0] + n[1] + n[2] + 3.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkTransmittancePathTracePass::FlightLength(const vtkTransmittanceFrame& frame)
+{
+  if (frame.Guests.empty())
+  {
+    return frame.Diagonal;
+  }
+  // The maps' box (every medium's): the longest distance between its corners.
+  double longest = frame.Diagonal;
+  for (int a = 0; a < 8; ++a)
+  {
+    for (int b = a + 1; b < 8; ++b)
+    {
+      longest = std::max(longest,
+        std::sqrt(
+          vtkMath::Distance2BetweenPoints(frame.MapCorners + 3 * a, frame.MapCorners + 3 * b)));
+    }
+  }
+  return longest;
 }
 
 //------------------------------------------------------------------------------
@@ -111,7 +129,13 @@ double vtkTransmittancePathTracePass::SpectralFactor(const vtkTransmittanceFrame
 //------------------------------------------------------------------------------
 double vtkTransmittancePathTracePass::Majorant(const vtkTransmittanceFrame& frame)
 {
-  const double majorant = frame.OwnMedium->GetMajorant() * kMajorantMargin * SpectralFactor(frame);
+  // With guests the flights cross every medium: their extinctions add.
+  double sum = frame.OwnMedium->GetMajorant();
+  for (const vtkTransmittanceFrame::Guest& guest : frame.Guests)
+  {
+    sum += guest.Medium->GetMajorant();
+  }
+  const double majorant = sum * kMajorantMargin * SpectralFactor(frame);
   return std::isfinite(majorant) && majorant > 1e-30 ? majorant : 1e-30;
 }
 
@@ -122,7 +146,7 @@ double vtkTransmittancePathTracePass::PathBound(
   // A flight's tentative collisions across the whole box at the majorant,
   // and with the blocks a trip per block it crosses; in closed form a trip
   // per cell.
-  double flight = 2.0 + Majorant(frame) * frame.Diagonal;
+  double flight = 2.0 + Majorant(frame) * FlightLength(frame);
   if (UsesClosedForm(frame, settings))
   {
     flight = ClosedFormCost(frame);
@@ -203,6 +227,14 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   // image, which the accumulation images (and their running mean) carry.
   const bool chromatic = Chromatic(frame);
   variant.Accumulate = variant.Accumulate || chromatic;
+  // Guests: the scattered flights sample every one (tyndallEveryGuest), the
+  // camera ray its camera guests.
+  if (!frame.Guests.empty())
+  {
+    variant.CameraGuests = true;
+    variant.GuestColors = std::any_of(frame.Guests.begin(), frame.Guests.end(),
+      [](const vtkTransmittanceFrame::Guest& g) { return g.Textures->GetScatteringTexture(); });
+  }
   // The sky's textures (a failed upload, said once: the paths without the sky).
   variant.PathEnvironment =
     SamplesSky(frame) && this->Sky->Update(*frame.Environment, frame.Window, reporter);
@@ -218,6 +250,10 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
     { inputs.Depth, inputs.Cache ? inputs.Cache : inputs.Maps, inputs.Occlusion });
   vtkTransmittanceRayCastPass::SetUniforms(frame, inputs, program);
   frame.SetSkyUniforms(program, true); // the paths sample the sky
+  if (!frame.Guests.empty())
+  {
+    frame.SetCameraGuestUniforms(program, true);
+  }
   if (variant.PathEnvironment)
   {
     for (vtkTextureObject* texture : this->Sky->GetTextures())

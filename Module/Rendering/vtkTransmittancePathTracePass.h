@@ -97,8 +97,8 @@ public:
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode, a plain property's gradient shading (neither is
-   * a medium: the CPU tracer refuses them too), other volumes in the scene
-   * (guests), depth peeling (`peeling`), several processes (`distributed`).
+   * a medium: the CPU tracer refuses them too), depth peeling (`peeling`),
+   * several processes (`distributed`).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
 
@@ -160,11 +160,17 @@ private:
 
   /**
    * The majorant the paths track against (per world unit, above 0): the
-   * medium's, twice it with a coloured extinction (SpectralFactor()).
+   * medium's plus its guests', twice that with a coloured extinction
+   * (SpectralFactor()).
    */
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the medium has a coloured extinction (spectral tracking).
   static bool Chromatic(const vtkTransmittanceFrame& frame);
+  /**
+   * The longest flight (world length): the camera box's diagonal, with
+   * guests the maps' box's (scattered flights cross every medium).
+   */
+  static double FlightLength(const vtkTransmittanceFrame& frame);
   /**
    * Spectral tracking's majorant factor: 2 with a coloured extinction (a
    * null collision's weight then stays below 2, the CPU tracer's), else 1.

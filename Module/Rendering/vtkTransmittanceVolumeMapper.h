@@ -404,9 +404,12 @@ public:
    * property's octaves are not used (the paths scatter for real). The
    * picture is unbiased but noisy; its noise falls as 1 / sqrt(samples).
    *
+   * Several volumes sharing their shadows (guests) are traced as the CPU
+   * tracer traces them: the camera ray through the media this mapper
+   * draws, scattered paths through every one.
+   *
    * Not path traced yet, each said once in a warning, the map-based frame
-   * drawn instead: several volumes sharing their
-   * shadows (guests), VTK's depth peeling for volumes, several processes;
+   * drawn instead: VTK's depth peeling for volumes, several processes;
    * and never (they are not media; the CPU tracer refuses them too): the
    * projection and isosurface blend modes, a plain property's gradient
    * shading (Shade on).

@@ -12,7 +12,10 @@
 // (TYNDALL_EMISSION_ARRAY); with TYNDALL_PATH_ENVIRONMENT the renderer's
 // sky, sampled at every collision and met by the paths that leave
 // (multiple importance sampling, the power heuristic); a coloured
-// extinction by spectral tracking (TYNDALL_CHROMATIC). It writes the paths'
+// extinction by spectral tracking (TYNDALL_CHROMATIC); with guests (other
+// volumes) the camera ray's flight through the camera media, scattered
+// flights through every medium (TYNDALL_CAMERA_GUESTS: tyndallEveryGuest)
+// to the maps' box, the collision's colour their mixture. It writes the paths'
 // mean radiance (premultiplied) and 1 - the mean of their first flights'
 // escapes (an unbiased estimate of the view transmittance; per channel into
 // a second image with a coloured extinction, the escapes weighted by
@@ -451,6 +454,9 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
     radiance += beta * tyndallPathArrayEmission(o, w, t0, t1);
 #endif
     TyndallTransmittance weight = TyndallTransmittance(1.0); // spectral tracking's
+#if TYNDALL_CAMERA_GUESTS
+    tyndallEveryGuest = bounce > 0; // the camera ray sees the camera media; scattered light, all
+#endif
     bool collided = tyndallFreeFlight(o, w, t0, t1, x, s, weight);
     if (!collided && bounce == 0)
     {
@@ -496,7 +502,11 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
     phasePdf = tyndallPhaseHG(anisotropy, dot(w, previous));
     o = x;
     t0 = 0.0;
+#if TYNDALL_GUESTS > 0
+    t1 = tyndallIntersectMapBox(x, w).y; // every medium's box
+#else
     t1 = tyndallIntersectCameraBox(x, w).y;
+#endif
   }
   return !tyndallPathSpent();
 }

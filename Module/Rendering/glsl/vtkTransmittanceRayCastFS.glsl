@@ -481,6 +481,9 @@ vec3 tyndallComponentShading(
 // Guests drawn with this medium (vtkTyndallSceneReader::GetCameraGuests():
 // they overlap it and are lit alike): 1 for a guest the camera rays sample.
 uniform float guestCamera[TYNDALL_GUESTS];
+// Every guest sampled, camera guest or not: the path tracer's scattered
+// flights (vtkTransmittancePathTraceFS.glsl), which cross every medium.
+bool tyndallEveryGuest = false;
 
 #if TYNDALL_GUEST_COLORS
 // Coloured particle clouds among the guests: 1 for such a guest, whose
@@ -494,8 +497,8 @@ uniform float guestColored[TYNDALL_GUESTS];
 #endif
 
 // Guest g's extinction at x (0 outside its box or when the camera rays do
-// not sample it); adds its colour and emission, weighted by it, to `color`
-// and `emission`.
+// not sample it, unless tyndallEveryGuest); adds its colour and emission,
+// weighted by it, to `color` and `emission`.
 float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER sampler2D table,
 #if TYNDALL_GUEST_COLORS
   sampler3D scattering,
@@ -503,7 +506,8 @@ float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER 
   int g, vec3 x, inout vec3 color, inout vec3 emission)
 {
   vec3 q = (guestWorldToBox[g] * vec4(x, 1.0)).xyz;
-  if (guestCamera[g] == 0.0 || any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(1.0))))
+  if ((guestCamera[g] == 0.0 && !tyndallEveryGuest) || any(lessThan(q, vec3(0.0))) ||
+    any(greaterThan(q, vec3(1.0))))
   {
     return 0.0;
   }
