@@ -37,6 +37,16 @@ vtkTransmittancePathTracePass::vtkTransmittancePathTracePass() = default;
 vtkTransmittancePathTracePass::~vtkTransmittancePathTracePass() = default;
 
 //------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::TableEmission(const vtkTyndallGridMedium& medium)
+{
+  // vtkTransmittanceGridAdapter::DeclareColorSwitches()'s Variant::Emission,
+  // under which the camera samples mix the guests' emission colours.
+  const vtkTyndallMediumParameters& parameters = medium.GetParameters();
+  return parameters.HasEmission && parameters.EmissionScale > 0.0 && !medium.GetArrayEmission() &&
+    !medium.GetIsosurfaces().Enabled() && !medium.GetTable().Has2D();
+}
+
+//------------------------------------------------------------------------------
 std::string vtkTransmittancePathTracePass::Refusal(
   const vtkTransmittanceFrame& frame, bool peeling, bool distributed)
 {
@@ -52,6 +62,20 @@ std::string vtkTransmittancePathTracePass::Refusal(
   if (medium.GetShading().Enabled())
   {
     return "gradient shading (Shade on) is not a medium";
+  }
+  for (const vtkTransmittanceFrame::Guest& guest : frame.Guests)
+  {
+    // The scattered paths cross the guests but add only this volume's
+    // emission terms (a guest's table emission through this one's).
+    if (guest.Medium->GetEmissionFromArray())
+    {
+      return "another volume's emission array (EmissionArrayName) is not path traced yet";
+    }
+    if (guest.Medium->GetParameters().HasEmission && !TableEmission(medium))
+    {
+      return "another volume's emission is path traced only with this volume's (give this one "
+             "an EmissionScale and emission colour too)";
+    }
   }
   if (distributed)
   {
@@ -89,8 +113,9 @@ bool vtkTransmittancePathTracePass::UsesClosedForm(
 //------------------------------------------------------------------------------
 double vtkTransmittancePathTracePass::ClosedFormCost(const vtkTransmittanceFrame& frame)
 {
-  const int* n = frame.Detail->GetDimensions(); // the shape's cells (detailMaxCells)
-  return n[0] + n[1] + n[2] + 3.0;
+  // The shape's cells (detailMaxCells) and a flight's solve at its most.
+  const int* n = frame.Detail->GetDimensions();
+  return n[0] + n[1] + n[2] + 3.0 + vtkTransmittanceShaderSource::DetailSolveIterations;
 }
 
 //------------------------------------------------------------------------------

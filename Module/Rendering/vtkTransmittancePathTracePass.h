@@ -5,17 +5,20 @@
  * One full-viewport quad (vtkTransmittancePathTraceFS.glsl, after the camera
  * rays' functions of vtkTransmittanceRayCastFS.glsl): each pixel traces a
  * few volumetric paths from its camera ray, with delta tracking against
- * the majorant grid's blocks (or the medium's majorant), next-event
- * estimation towards every light at every collision (the light
- * transmittance read from the frame's maps, or ratio tracked:
- * Settings::TrackedShadows), Henyey-Greenstein scattering, a bounce limit
- * and Russian roulette, and the renderer's sky (vtkTyndallEnvironment:
- * drawn from at every collision, its light ratio tracked, and met by the
- * paths that leave; the power heuristic weighs the two): the estimator of
- * vtkVolumetricPathTracer
- * (DELTA_TRACKING), its CPU twin. The frames' images are averaged into a
- * running mean (vtkTransmittanceAccumulationPass), which is composited
- * over the renderer's viewport.
+ * the majorant grid's blocks (or the media's majorant; through procedural
+ * detail in closed form with Settings::ClosedForm; spectral tracking with a
+ * coloured extinction), next-event estimation towards every light at every
+ * collision (the light transmittance read from the frame's maps, or
+ * tracked: Settings::TrackedShadows), Henyey-Greenstein scattering, a bounce
+ * limit and Russian roulette, an emission array's light along every
+ * segment, and the renderer's sky (vtkTyndallEnvironment: drawn from at
+ * every collision, its light tracked, and met by the paths that leave; the
+ * power heuristic weighs the two): the estimator of vtkVolumetricPathTracer
+ * (DELTA_TRACKING, or CLOSED_FORM through detail), its CPU twin. The
+ * frames' images are averaged into a running mean
+ * (vtkTransmittanceAccumulationPass; with a coloured extinction the
+ * transmittance per channel beside it), which is composited over the
+ * renderer's viewport.
  *
  * It is a fragment shader, not a compute shader: VTK's context is OpenGL
  * 3.2 (GLSL 1.50) on every platform it supports (macOS stops at 4.1, which
@@ -28,8 +31,10 @@
  * long (GetLastSamplesPerFrame()), and a path still running when the
  * budget is spent is kept as far as it got.
  *
- * What it draws is what the CPU tracer draws: one medium (a grid, with its
- * procedural detail, or a particle cloud's grid), participating-medium or
+ * What it draws is what the CPU tracer draws: a medium (a grid, with its
+ * procedural detail, or a particle cloud's grid) and the other volumes that
+ * share its shadows (guests: the camera ray through the media this volume
+ * draws, scattered paths through every one), participating-medium or
  * emission-absorption, with the complete mapper's classification
  * (components, 2-D functions, gradient opacity, labels, clipping, missing
  * data). Refusal() names what it does not draw yet; the mapper then draws
@@ -62,6 +67,7 @@
 #include <string> // For std::string
 
 class vtkTransmittanceFrame;
+class vtkTyndallGridMedium;
 class vtkWindow;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittancePathTracePass : public vtkObject
@@ -97,8 +103,9 @@ public:
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode, a plain property's gradient shading (neither is
-   * a medium: the CPU tracer refuses them too), depth peeling (`peeling`),
-   * several processes (`distributed`).
+   * a medium: the CPU tracer refuses them too), another volume's emission
+   * array, another volume's emission while this one has no table emission,
+   * depth peeling (`peeling`), several processes (`distributed`).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
 
@@ -166,6 +173,11 @@ private:
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the medium has a coloured extinction (spectral tracking).
   static bool Chromatic(const vtkTransmittanceFrame& frame);
+  /**
+   * Whether the camera samples add the table's emission (Variant::Emission),
+   * and with it their guests' (tyndallCameraMedium()).
+   */
+  static bool TableEmission(const vtkTyndallGridMedium& medium);
   /**
    * The longest flight (world length): the camera box's diagonal, with
    * guests the maps' box's (scattered flights cross every medium).

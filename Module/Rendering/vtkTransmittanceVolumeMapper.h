@@ -487,10 +487,12 @@ public:
   /**
    * How paths sample distances: PATH_DISTANCE_CLOSED_FORM or
    * PATH_DISTANCE_DELTA_TRACKING (default), as vtkVolumetricPathTracer's
-   * DistanceSampling. Only procedural detail has a closed form; it clamps
-   * each cell's integral at 0 where delta tracking clamps each point's
-   * noise (a noise whose offset lets it dip below 0 is a slightly different
-   * medium, as on the CPU). Delta tracking is the default because it was
+   * DistanceSampling. Only procedural detail has a closed form, and it is
+   * used only with nothing clipped, one colour of extinction and no other
+   * volumes sharing the shadows (else tracking, silently: the same picture,
+   * other noise); it clamps each cell's integral at 0 where delta tracking
+   * clamps each point's noise (a noise whose offset lets it dip below 0 is a
+   * slightly different medium, as on the CPU). Delta tracking is the default because it was
    * faster where measured: on llvmpipe the closed form's paths ran at 0.14
    * (a cloud's shape) and 0.27 (the paper's box) times its rate, for 0.3 dB
    * less noise at equal samples (BenchCinematic --detail, 144 waves; the

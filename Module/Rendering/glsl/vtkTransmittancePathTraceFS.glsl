@@ -191,8 +191,10 @@ bool tyndallDetailFlight(vec3 x, vec3 w, float tEnd, float goal, out float t)
       vec3 pa;
       vec4 c;
       float whole = tyndallDetailCellIntegral(k, tNext, pa, c);
-      if (tau + whole >= target)
+      if (whole > 0.0 && tau + whole >= target)
       {
+        // The solve's iterations, counted at their most.
+        tyndallPathIterations += TYNDALL_DETAIL_SOLVE_ITERATIONS;
         t = k.t + tyndallDetailSolve(pa, k.d, c, tNext - k.t, target - tau, whole);
         return true;
       }
@@ -259,8 +261,10 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out Tynda
 // Ratio tracking from x along dir over (0, tEnd): an unbiased estimate of
 // the transmittance (per channel with a coloured extinction), with Russian
 // roulette (survival 1/2) once its largest channel is below 0.1 (the CPU
-// tracer's RatioTrack()).
-TyndallTransmittance tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
+// tracer's RatioTrack()); through every medium the light crosses, or with
+// `flight` the media the path's flights cross (with guests: the camera ray's
+// own media, tyndallEveryGuest).
+TyndallTransmittance tyndallRatioTrack(vec3 x, vec3 dir, float tEnd, bool flight)
 {
   TyndallWalk walk = tyndallStartWalk(x, dir, 0.0, tEnd);
   TyndallTransmittance T = TyndallTransmittance(1.0);
@@ -271,7 +275,12 @@ TyndallTransmittance tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
     {
       break;
     }
-    float sigma = tyndallSceneExtinction(walk.Origin + walk.T * dir, dir, 0.0);
+    vec3 y = walk.Origin + walk.T * dir;
+#if TYNDALL_CAMERA_GUESTS
+    float sigma = flight ? tyndallCameraSample(y, y, dir, 0.0).Sigma : tyndallSceneExtinction(y, dir, 0.0);
+#else
+    float sigma = tyndallSceneExtinction(y, dir, 0.0);
+#endif
 #if TYNDALL_CHROMATIC
     T *= max(vec3(0.0), 1.0 - extinctionColor * (sigma / m));
 #else
@@ -292,14 +301,14 @@ TyndallTransmittance tyndallRatioTrack(vec3 x, vec3 dir, float tEnd)
 
 // The transmittance from x along dir over (0, tEnd): ratio tracked, or
 // exact in closed form (TYNDALL_PATH_CLOSED_FORM: its walk counted as the
-// most cells it can cross).
-TyndallTransmittance tyndallPathTransmittance(vec3 x, vec3 dir, float tEnd)
+// most cells it can cross; no guests then); `flight`: see tyndallRatioTrack().
+TyndallTransmittance tyndallPathTransmittance(vec3 x, vec3 dir, float tEnd, bool flight)
 {
 #if TYNDALL_PATH_CLOSED_FORM
   tyndallPathIterations += detailMaxCells;
   return exp(-tyndallDetailDepth(x, dir, tEnd));
 #else
-  return tyndallRatioTrack(x, dir, tEnd);
+  return tyndallRatioTrack(x, dir, tEnd, flight);
 #endif
 }
 
@@ -333,7 +342,8 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
     TyndallTransmittance T = TyndallTransmittance(1.0);
     if (lightMethod[l] != TYNDALL_NONE)
     {
-      T = tyndallPathTransmittance(x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance));
+      T = tyndallPathTransmittance(
+        x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance), false);
     }
     sum += E * tyndallPhaseHG(anisotropy, dot(toLight, w)) * T;
   }
@@ -351,6 +361,15 @@ uniform int pathEmissionSamples; // stratified points per segment (vtkTyndallMed
 // the flight collides.
 vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
 {
+  // The part of the segment in this volume's box (with guests a scattered
+  // segment runs to the maps' box): the array's texture clamps to its edge.
+  vec2 own = tyndallIntersectBox(worldToVolume, o, w);
+  t0 = max(t0, own.x);
+  t1 = min(t1, own.y);
+  if (!(t0 < t1))
+  {
+    return vec3(0.0);
+  }
   vec3 start = o + t0 * w;
   float length = (t1 - t0) / float(pathEmissionSamples);
   vec3 sum = vec3(0.0);
@@ -364,7 +383,7 @@ vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
     vec3 e = tyndallArrayEmission(start + t * w);
     if (any(greaterThan(e, vec3(0.0))))
     {
-      sum += e * tyndallPathTransmittance(start, w, t);
+      sum += e * tyndallPathTransmittance(start, w, t, true);
     }
   }
   return emissionScale * length * sum;
@@ -399,7 +418,7 @@ vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
     return vec3(0.0);
   }
   float phase = tyndallPhaseHG(anisotropy, dot(l, w));
-  TyndallTransmittance T = tyndallPathTransmittance(x, l, tyndallIntersectMapBox(x, l).y);
+  TyndallTransmittance T = tyndallPathTransmittance(x, l, tyndallIntersectMapBox(x, l).y, false);
   return L * (T * phase / pdf * (last ? 1.0 : tyndallPowerWeight(pdf, phase)));
 }
 
@@ -450,13 +469,13 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
   {
     vec3 x;
     TyndallCameraSample s;
+#if TYNDALL_CAMERA_GUESTS
+    tyndallEveryGuest = bounce > 0; // the camera ray sees the camera media; scattered light, all
+#endif
 #if TYNDALL_EMISSION_ARRAY
     radiance += beta * tyndallPathArrayEmission(o, w, t0, t1);
 #endif
     TyndallTransmittance weight = TyndallTransmittance(1.0); // spectral tracking's
-#if TYNDALL_CAMERA_GUESTS
-    tyndallEveryGuest = bounce > 0; // the camera ray sees the camera media; scattered light, all
-#endif
     bool collided = tyndallFreeFlight(o, w, t0, t1, x, s, weight);
     if (!collided && bounce == 0)
     {
