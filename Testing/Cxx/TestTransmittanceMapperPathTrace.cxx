@@ -71,6 +71,21 @@ public:
 
 using Scene = tyndall_test::PathScene;
 
+// Renders the scene twice: the paths refused (no samples; the map-based
+// frame drawn), said in one warning that contains `reason`.
+void CheckRefusedOnce(Scene& scene, const char* reason, const std::string& what)
+{
+  vtkNew<WarningCounter> warnings;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+  scene.Window->Render();
+  scene.Window->Render();
+  std::cout << "Refused: " << warnings->Last;
+  Check(scene.Mapper->GetLastPathTraceSamples() == 0 && warnings->Count == 1 &&
+      warnings->Last.find(reason) != std::string::npos,
+    what);
+  scene.Mapper->RemoveObserver(warnings);
+}
+
 // The image's point scalars as the cell scalars of an image one sample
 // larger, its cells centred where the points were (its box half a sample
 // wider: the block grid starts outside the samples).
@@ -259,13 +274,7 @@ void TwoVolumesAgainstCpu()
   glow->AddRGBPoint(0.0, 1.0, 0.5, 0.2);
   otherProperty->SetEmissionColor(glow);
   otherProperty->SetEmissionScale(1.0);
-  vtkNew<WarningCounter> warnings;
-  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-  scene.Window->Render();
-  scene.Window->Render();
-  std::cout << "Two volumes, the other glowing: " << warnings->Last;
-  Check(scene.Mapper->GetLastPathTraceSamples() == 0 && warnings->Count == 1 &&
-      warnings->Last.find("another volume's emission") != std::string::npos,
+  CheckRefusedOnce(scene, "another volume's emission",
     "another volume's emission without this one's is refused, said once");
 }
 
@@ -314,13 +323,7 @@ void Mode()
   plain->SetColor(scene.Property->GetRGBTransferFunction());
   plain->ShadeOn();
   scene.Volume->SetProperty(plain);
-  vtkNew<WarningCounter> warnings;
-  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-  scene.Window->Render();
-  scene.Window->Render();
-  std::cout << "Shade on: " << warnings->Last;
-  Check(scene.Mapper->GetLastPathTraceSamples() == 0 && warnings->Count == 1 &&
-      warnings->Last.find("gradient shading") != std::string::npos,
+  CheckRefusedOnce(scene, "gradient shading",
     "a shaded plain property is refused, said once, and drawn from the maps");
 }
 
