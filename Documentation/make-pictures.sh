@@ -33,6 +33,10 @@ PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/shaded_ct_picture.py" "$images"
 
+# A shaded CT path traced: the map-based frame | the GPU's paths | the CPU tracer's (rendering-model.md).
+PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
+  "$root/Documentation/scripts/shaded_ct_paths_picture.py" "$images"
+
 # A cloud's shadow on the ground (vtkVolumeShadowReceiverPass, rendering-model.md).
 run "$build/bin/tyndall-render" --ground --camera-position 0 2.2 4.5 --focal-point 0 -0.7 0 \
   --light-direction -0.4 -1 -0.5 --light-intensity 0.8 -s 480 320 -o "$images/ground-shadow.png"

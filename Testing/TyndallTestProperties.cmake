@@ -31,7 +31,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace 40
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 70
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 8
-  Tyndall::RenderingCxx-TestTransmittanceMapperSky 7
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky 11
   Tyndall::RenderingCxx-TestTransmittanceMapperOctaves 37
   Tyndall::RenderingCxx-TestTransmittanceMapperTransmittanceCache 25
   TyndallParaView-MPI 24
@@ -52,7 +52,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperDataTypes 12
   Tyndall::RenderingCxx-TestTransmittanceMapperBricks 8
   TyndallParaView-GUI 10
-  Tyndall::ReferenceCxx-TestVolumetricPathTracer 9
+  Tyndall::ReferenceCxx-TestVolumetricPathTracer 15
   Tyndall::ReferenceCxx-TestVolumetricPathTracerScenes 13
   TyndallIO-FuzzOpenVDBReader 9
   Tyndall::MediumCxx-TestTyndallDetailMedium 8
@@ -102,7 +102,7 @@ set(tyndall_no_sanitizer_tests
   # 8 s unsanitized: 1024 spp of paths at 64^2 (the denoiser's twin: TestTyndallDenoiser;
   # the mapper's denoised paths: TyndallCLI-PathTraceDenoise)
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise
-  # 7 s unsanitized: 64 spp of paths at 32^2, six times, beside the CPU tracer's (the sky's
+  # 11 s unsanitized: 64 spp of paths at 32^2, seven times, beside the CPU tracer's (the sky's
   # twin: TestTyndallEnvironment; the programs' --sky: TyndallCLI-Sky*)
   Tyndall::RenderingCxx-TestTransmittanceMapperSky
   # 38 s: the majorant grid (TyndallCLI-*, every rendering test kept: skipping is on by default)

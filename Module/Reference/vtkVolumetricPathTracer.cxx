@@ -11,11 +11,14 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTyndallComponents.h"
 #include "vtkTyndallEnvironment.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallProjection.h"
 #include "vtkTyndallReferenceScene.h"
 #include "vtkTyndallSceneReader.h"
+#include "vtkTyndallShading.h"
+#include "vtkTyndallSurfaceLobe.h"
 
 #include <algorithm>
 #include <chrono>
@@ -121,6 +124,13 @@ struct Scene : public vtkTyndallReferenceScene
   int MaxBounces = 1;
   std::uint64_t Seed = 1;
   double* StandardError = nullptr;
+  /// The volume's grid when its collisions scatter as VTK's shaded surfaces
+  /// (vtkTyndallSurfaceLobe; a plain property with Shade on), else null.
+  const vtkTyndallGridMedium* Surface = nullptr;
+  /// How far a shaded collision's light is exchanged from (world, along its direction).
+  double SurfaceOffset = 0.0;
+  /// The sky's radiance factor (vtkTyndallSurfaceLobe::LightUnit in a shaded scene).
+  double SkyScale = 1.0;
 };
 
 // A ray in world (origin X, unit direction W) and in every medium's frame,
@@ -348,6 +358,17 @@ private:
   void LightTransmittance(const Ray& ray, double t, const double x[3], const double l[3],
     double tMax, Random& rng, Timing& timing, const PathState& path, double T[3]) const
   {
+    double own[3];
+    ray.Local.At(0, t, own); // the path's own frame, as the collision was found
+    this->MediaTransmittance(x, own, l, tMax, rng, timing, path, T);
+  }
+
+  // T_l per channel from the world point x (`own`: its point in the
+  // volume's own frame, or null to map x) along the unit world direction l
+  // to the world distance tMax: the product of every medium's.
+  void MediaTransmittance(const double x[3], const double* own, const double l[3], double tMax,
+    Random& rng, Timing& timing, const PathState& path, double T[3]) const
+  {
     const auto start = Clock::now();
     const Scene& s = *this->S;
     T[0] = T[1] = T[2] = 1.0;
@@ -355,9 +376,9 @@ private:
     {
       const vtkTyndallMedium& medium = *s.Media[k].Medium;
       double p[3], d[3], Tk[3];
-      if (k == 0)
+      if (k == 0 && own)
       {
-        ray.Local.At(0, t, p); // the path's own frame, as the collision was found
+        std::copy(own, own + 3, p);
       }
       else
       {
@@ -438,6 +459,88 @@ private:
     }
   }
 
+  // The surface lobe of a collision in the shaded volume at its own point p
+  // (vtkTyndallSurfaceLobe): the gradient's normal, towards where the path
+  // came from (-w).
+  vtkTyndallSurfaceLobe SurfaceLobe(const double p[3], const double w[3], const Point& point) const
+  {
+    const vtkTyndallGridMedium& grid = *this->S->Surface;
+    double n[3];
+    grid.FieldGradient(p, n);
+    const double length = vtkMath::Norm(n);
+    for (int c = 0; c < 3; ++c)
+    {
+      n[c] = length > 0.0 ? n[c] / length : 0.0;
+    }
+    const double v[3] = { -w[0], -w[1], -w[2] };
+    vtkTyndallSurfaceLobe lobe;
+    lobe.Set(grid.GetShading(), n, v, point.Albedo);
+    return lobe;
+  }
+
+  // T_l per channel of a shaded collision at the world point x towards l
+  // (up to tMax): from SurfaceOffset along l (vtkTyndallShading::ShadowOffset,
+  // as the map-based frame and vtkSingleScatteringReference take it).
+  void SurfaceTransmittance(const double x[3], const double l[3], double tMax, Random& rng,
+    Timing& timing, const PathState& path, double T[3]) const
+  {
+    const double offset = this->S->SurfaceOffset;
+    const double y[3] = { x[0] + offset * l[0], x[1] + offset * l[1], x[2] + offset * l[2] };
+    this->MediaTransmittance(y, nullptr, l, std::max(tMax - offset, 0.0), rng, timing, path, T);
+  }
+
+  // The source term of a shaded collision (colour c) at the world point x:
+  // VTK's ambient Ka c, plus each light's E f(v, l) T_l and, with a sky,
+  // its next-event estimate weighted by the power heuristic against the
+  // lobe's sampling (1 at the path's last collision).
+  void SurfaceSource(const double x[3], const Point& point, const vtkTyndallSurfaceLobe& lobe,
+    bool last, Random& rng, Timing& timing, const PathState& path, double J[3]) const
+  {
+    const Scene& s = *this->S;
+    const double ambient = s.Surface->GetShading().GetAmbient();
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] = ambient * point.Albedo[c];
+    }
+    if (!lobe.Scatters())
+    {
+      return;
+    }
+    double l[3], f[3], T[3];
+    for (const Scene::LightSource& light : s.Lights)
+    {
+      double factor, tMax;
+      if (!s.LightGeometry(light, x, l, factor, tMax))
+      {
+        continue;
+      }
+      lobe.Evaluate(l, f);
+      this->SurfaceTransmittance(x, l, tMax, rng, timing, path, T);
+      for (int c = 0; c < 3; ++c)
+      {
+        J[c] += factor * light.Color[c] * f[c] * T[c];
+      }
+    }
+    if (!s.Environment || !s.Environment->Enabled())
+    {
+      return;
+    }
+    const double u[4] = { rng.Uniform(), rng.Uniform(), rng.Uniform(), rng.Uniform() };
+    double sky[3];
+    const double pdf = s.Environment->Sample(u, l, sky);
+    if (!(pdf > 0.0))
+    {
+      return;
+    }
+    lobe.Evaluate(l, f);
+    this->SurfaceTransmittance(x, l, kInfinity, rng, timing, path, T);
+    const double weight = (last ? 1.0 : PowerWeight(pdf, lobe.Pdf(l))) * s.SkyScale / pdf;
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] += sky[c] * f[c] * T[c] * weight;
+    }
+  }
+
   // The power heuristic's weight of a strategy of density a against one of density b.
   static double PowerWeight(double a, double b) { return a * a / (a * a + b * b); }
 
@@ -460,7 +563,7 @@ private:
     const double phase = s.Phase(vtkMath::Dot(l, ray.W));
     double T[3];
     this->LightTransmittance(ray, t, x, l, kInfinity, rng, timing, path, T);
-    const double weight = (last ? 1.0 : PowerWeight(pdf, phase)) * phase / pdf;
+    const double weight = (last ? 1.0 : PowerWeight(pdf, phase)) * phase * s.SkyScale / pdf;
     for (int c = 0; c < 3; ++c)
     {
       J[c] += albedo[c] * sky[c] * T[c] * weight;
@@ -475,7 +578,7 @@ private:
     const vtkTyndallEnvironment& sky = *this->S->Environment;
     double radiance[3];
     sky.Evaluate(ray.W, radiance);
-    const double weight = PowerWeight(phasePdf, sky.Pdf(ray.W));
+    const double weight = PowerWeight(phasePdf, sky.Pdf(ray.W)) * this->S->SkyScale;
     for (int c = 0; c < 3; ++c)
     {
       L[c] += beta[c] * radiance[c] * weight;
@@ -545,47 +648,107 @@ private:
       {
         beta[c] *= weight[c];
       }
-      const double x[3] = { ray.X[0] + t * ray.W[0], ray.X[1] + t * ray.W[1],
-        ray.X[2] + t * ray.W[2] };
-      double p[3];
-      ray.Local.At(k, t, p);
-      Point point;
-      if (!s.Media[k].Medium->Material(p, point))
-      {
-        point = Point(); // missing data: no colour, no emission
-      }
-      double J[3];
-      if (!s.Parameters->GetSingleScattering())
-      {
-        std::copy(point.Albedo, point.Albedo + 3, J);
-      }
-      else
-      {
-        this->Source(ray, t, x, point, rng, timing, path, J);
-        if (sky)
-        {
-          this->AddSkyEvent(
-            ray, t, x, point.Albedo, bounce + 1 >= s.MaxBounces, rng, timing, path, J);
-        }
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        L[c] += beta[c] * J[c];
-        beta[c] *= point.Albedo[c];
-      }
-      if (!s.Parameters->GetSingleScattering() || bounce + 1 >= s.MaxBounces || !Survive(beta, rng))
+      if (!this->Scatter(
+            ray, t, k, bounce + 1 >= s.MaxBounces, rng, timing, path, beta, phasePdf, L))
       {
         return;
       }
-      std::copy(x, x + 3, ray.X);
-      const double w[3] = { ray.W[0], ray.W[1], ray.W[2] };
-      const double u1 = rng.Uniform();
-      vtkVolumetricPathTracer::SampleHenyeyGreenstein(
-        s.Parameters->ScatteringAnisotropy, w, u1, rng.Uniform(), ray.W);
-      phasePdf = s.Phase(vtkMath::Dot(ray.W, w));
-      ray.T0 = 0.0;
-      ray.T1 = kInfinity;
     }
+  }
+
+  // At a real collision of medium k at the distance t of `ray`: adds beta J
+  // to L and, unless the path ends there (`last`, an emission-absorption
+  // medium, Russian roulette), turns `ray` into the scattered one, beta
+  // times the scattering's weight and phasePdf its direction's density.
+  // False when the path ends.
+  bool Scatter(Ray& ray, double t, int k, bool last, Random& rng, Timing& timing, PathState& path,
+    double beta[3], double& phasePdf, double L[3]) const
+  {
+    const Scene& s = *this->S;
+    const double x[3] = { ray.X[0] + t * ray.W[0], ray.X[1] + t * ray.W[1],
+      ray.X[2] + t * ray.W[2] };
+    double p[3];
+    ray.Local.At(k, t, p);
+    Point point;
+    if (!s.Media[k].Medium->Material(p, point))
+    {
+      point = Point(); // missing data: no colour, no emission
+    }
+    const bool single = s.Parameters->GetSingleScattering();
+    if (single && k == 0 && s.Surface)
+    {
+      return this->ScatterAtSurface(ray, x, p, point, last, rng, timing, path, beta, phasePdf, L);
+    }
+    double J[3];
+    if (!single)
+    {
+      std::copy(point.Albedo, point.Albedo + 3, J);
+    }
+    else
+    {
+      this->Source(ray, t, x, point, rng, timing, path, J);
+      if (s.Environment && s.Environment->Enabled())
+      {
+        this->AddSkyEvent(ray, t, x, point.Albedo, last, rng, timing, path, J);
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      L[c] += beta[c] * J[c];
+      beta[c] *= point.Albedo[c];
+    }
+    if (!single || last || !Survive(beta, rng))
+    {
+      return false;
+    }
+    std::copy(x, x + 3, ray.X);
+    const double w[3] = { ray.W[0], ray.W[1], ray.W[2] };
+    const double u1 = rng.Uniform();
+    vtkVolumetricPathTracer::SampleHenyeyGreenstein(
+      s.Parameters->ScatteringAnisotropy, w, u1, rng.Uniform(), ray.W);
+    phasePdf = s.Phase(vtkMath::Dot(ray.W, w));
+    ray.T0 = 0.0;
+    ray.T1 = kInfinity;
+    return true;
+  }
+
+  // Scatter() at a collision in the shaded volume (world point x, own point
+  // p): its lobe's source term, then a direction drawn from the lobe, the
+  // scattered ray leaving from SurfaceOffset along it (as its light does).
+  bool ScatterAtSurface(Ray& ray, const double x[3], const double p[3], const Point& point,
+    bool last, Random& rng, Timing& timing, PathState& path, double beta[3], double& phasePdf,
+    double L[3]) const
+  {
+    const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, ray.W, point);
+    double J[3];
+    this->SurfaceSource(x, point, lobe, last, rng, timing, path, J);
+    for (int c = 0; c < 3; ++c)
+    {
+      L[c] += beta[c] * J[c];
+    }
+    if (last)
+    {
+      return false;
+    }
+    double weight[3];
+    const double u[3] = { rng.Uniform(), rng.Uniform(), rng.Uniform() };
+    phasePdf = lobe.Sample(u[0], u[1], u[2], ray.W, weight);
+    for (int c = 0; c < 3; ++c)
+    {
+      beta[c] *= weight[c];
+    }
+    if (!(phasePdf > 0.0) || !Survive(beta, rng))
+    {
+      return false;
+    }
+    const double offset = this->S->SurfaceOffset;
+    for (int c = 0; c < 3; ++c)
+    {
+      ray.X[c] = x[c] + offset * ray.W[c];
+    }
+    ray.T0 = 0.0;
+    ray.T1 = kInfinity;
+    return true;
   }
 
   // The exact view transmittance of the camera ray, per channel, when every
@@ -760,6 +923,51 @@ bool SetUpSampling(int mode, Scene& scene, vtkObject* reporter)
   }
   return true;
 }
+
+// A plain property's Shade: its collisions scatter as VTK's shaded surfaces
+// (vtkTyndallSurfaceLobe). False (with an error through `reporter`) for
+// what the lobe does not cover: independent components' own gradients,
+// VTK 9.2's volumetric scattering blending.
+bool SetUpSurface(Scene& scene, vtkObject* reporter)
+{
+  const vtkTyndallGridMedium& grid = *scene.Shaded;
+  if (grid.GetComponents().GetMode() == vtkTyndallComponents::Independent)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: a plain vtkVolumeProperty with Shade on and "
+                                         "independent components (each shaded with its own "
+                                         "gradient) is not path traced.");
+    return false;
+  }
+  if (grid.GetShading().GetBlending() > 0.0)
+  {
+    vtkErrorWithObjectMacro(reporter, << "Render: the volumetric scattering blending "
+                                      << grid.GetShading().GetBlending()
+                                      << " of a shaded plain vtkVolumeProperty is not path "
+                                         "traced; set it to 0.");
+    return false;
+  }
+  scene.Surface = &grid;
+  scene.SurfaceOffset = vtkTyndallShading::ShadowOffset * grid.GetMinimumWorldSpacing();
+  return true;
+}
+
+// Every light, the sky and the ambient light `unit` times brighter.
+void ScaleLights(Scene& scene, double unit)
+{
+  for (Scene::LightSource& light : scene.Lights)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      light.E[c] *= unit;
+      light.Color[c] *= unit;
+    }
+  }
+  for (double& ambient : scene.Ambient)
+  {
+    ambient *= unit;
+  }
+  scene.SkyScale = unit;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -778,12 +986,8 @@ bool vtkVolumetricPathTracer::RenderImage(
     vtkWarningMacro(<< "The volume's vtkParticipatingMediumProperty has Shade on: its gradient "
                        "surface term (vtkTyndallShading) is not path traced; the medium is.");
   }
-  else if (scene.Shaded)
+  else if (scene.Shaded && !SetUpSurface(scene, this))
   {
-    vtkErrorMacro(<< "The volume's plain vtkVolumeProperty has Shade on: VTK's gradient shading "
-                     "is a surface model, not a medium the path tracer can scatter in "
-                     "(vtkSingleScatteringReference draws it; a vtkParticipatingMediumProperty "
-                     "is a medium).");
     return false;
   }
   if (scene.Isosurfaced)
@@ -811,6 +1015,10 @@ bool vtkVolumetricPathTracer::RenderImage(
   if (!scene.SetUpView(tyndall, renderer, this))
   {
     return false;
+  }
+  if (scene.Surface)
+  {
+    ScaleLights(scene, vtkTyndallSurfaceLobe::LightUnit);
   }
 
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;

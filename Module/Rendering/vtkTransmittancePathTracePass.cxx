@@ -10,12 +10,15 @@
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
+#include "vtkTyndallComponents.h"
 #include "vtkTyndallDenoiser.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallEnvironment.h"
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMajorantGrid.h"
 #include "vtkTyndallMedium.h"
+#include "vtkTyndallShading.h"
+#include "vtkTyndallSurfaceLobe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,9 +62,26 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "the isosurface blend mode draws surfaces, not a medium";
   }
-  if (medium.GetShading().Enabled())
+  // A plain property's Shade: collisions scatter as its surfaces
+  // (vtkTyndallSurfaceLobe), as the CPU tracer's, alone in the scene.
+  const vtkTyndallShading& shading = medium.GetShading();
+  if (shading.Enabled() && shading.GetAdditive())
   {
-    return "gradient shading (Shade on) is not a medium";
+    return "a vtkParticipatingMediumProperty's Shade (its gradient surface term) is not path "
+           "traced";
+  }
+  if (shading.Enabled() && medium.GetComponents().GetMode() == vtkTyndallComponents::Independent)
+  {
+    return "Shade on independent components (each shaded with its own gradient) is not path "
+           "traced";
+  }
+  if (shading.Enabled() && shading.GetBlending() > 0.0)
+  {
+    return "the volumetric scattering blending of a shaded volume is not path traced";
+  }
+  if (shading.Enabled() && !frame.Guests.empty())
+  {
+    return "a shaded volume beside other volumes is not path traced on the GPU yet";
   }
   for (const vtkTransmittanceFrame::Guest& guest : frame.Guests)
   {
@@ -309,6 +329,11 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   if (variant.EmissionArray)
   {
     program->SetUniformi("pathEmissionSamples", vtkTyndallMedium::PathEmissionSamples);
+  }
+  if (variant.Shading)
+  {
+    // Declared only by the shading variant: the lights' unit against the lobe.
+    program->SetUniformf("pathLightUnit", static_cast<float>(vtkTyndallSurfaceLobe::LightUnit));
   }
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
   const bool drawn = this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw,

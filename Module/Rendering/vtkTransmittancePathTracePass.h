@@ -102,8 +102,11 @@ public:
 
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
-   * isosurface blend mode, a plain property's gradient shading (neither is
-   * a medium: the CPU tracer refuses them too), another volume's emission
+   * isosurface blend mode (neither is a medium: the CPU tracer refuses them
+   * too), a vtkParticipatingMediumProperty's Shade (its surface term), a
+   * plain property's Shade over independent components, with a volumetric
+   * scattering blending or beside other volumes (a plain property's Shade
+   * is otherwise traced: vtkTyndallSurfaceLobe), another volume's emission
    * array, another volume's emission while this one has no table emission,
    * depth peeling (`peeling`), several processes (`distributed`).
    */

@@ -408,11 +408,18 @@ public:
    * tracer traces them: the camera ray through the media this mapper
    * draws, scattered paths through every one.
    *
+   * A plain vtkVolumeProperty with Shade on (a shaded CT) is traced as the
+   * CPU tracer traces it: each collision scatters as VTK's shaded surface
+   * (vtkTyndallSurfaceLobe: a lobe about the gradient, the lights' first
+   * bounce VTK's shading term, VTK's ambient term an emission).
+   *
    * Not path traced yet, each said once in a warning, the map-based frame
-   * drawn instead: VTK's depth peeling for volumes, several processes;
-   * and never (they are not media; the CPU tracer refuses them too): the
-   * projection and isosurface blend modes, a plain property's gradient
-   * shading (Shade on).
+   * drawn instead: VTK's depth peeling for volumes, several processes, a
+   * vtkParticipatingMediumProperty's Shade (its surface term), a shaded
+   * plain property over independent components, with VTK 9.2's volumetric
+   * scattering blending or beside other volumes; and never (they are not
+   * media; the CPU tracer refuses them too): the projection and isosurface
+   * blend modes.
    */
   vtkSetMacro(PathTracing, bool);
   vtkGetMacro(PathTracing, bool);

@@ -1,7 +1,10 @@
 // BenchCinematic: the mapper's path-traced mode (vtkTransmittanceVolumeMapper::
 // PathTracing) beside its CPU twin, vtkVolumetricPathTracer (DELTA_TRACKING,
-// the same estimator and bounce limit), on the built-in cloud and the dense
-// medium (the tests' scenes: a sun of intensity 1.5, ambient 0.05, g 0.4).
+// the same estimator and bounce limit), on the built-in cloud, the dense
+// medium (the tests' scenes: a sun of intensity 1.5, ambient 0.05, g 0.4)
+// and a shaded CT (the dense medium's ball through a plain property with
+// Shade on: its collisions scatter as VTK's shaded surfaces; the map-based
+// frame's octaves do not apply to it).
 //
 // For each scene, at W x W pixels:
 // 1. the converged picture: the GPU's, ratio-tracked shadows, at --reference
@@ -530,7 +533,12 @@ int main(int argc, char* argv[])
   const int resolution = o.Quick ? 24 : 64;
   Scene cloud("Built-in cloud", tyndall_test::MakeCloud(resolution), 0.5, o, display);
   Scene dense("Dense medium", tyndall_test::MakeDenseMedium(resolution), 0.9, o, display);
-  for (Scene* s : { &cloud, &dense })
+  // A shaded CT: the dense medium's ball through a plain property with
+  // Shade on (vtkTyndallSurfaceLobe), the tests' (TestTransmittanceMapperPathTrace).
+  Scene shaded("Shaded CT (the dense medium's ball, a plain property with Shade on)",
+    tyndall_test::MakeDenseMedium(resolution), 0.9, o, display);
+  shaded.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9));
+  for (Scene* s : { &cloud, &dense, &shaded })
   {
     if (!Run(*s, o))
     {

@@ -9,13 +9,15 @@
 //    noise (4.5 standard errors), on procedural detail in closed form and
 //    delta tracked, a coloured extinction (spectral tracking, a view
 //    transmittance per channel), several volumes (two half-density copies
-//    drawn as one; two side by side, the other's shadow on this one) and
-//    fire from an emission array;
+//    drawn as one; two side by side, the other's shadow on this one), fire
+//    from an emission array and a shaded CT (a plain property with Shade on:
+//    vtkTyndallSurfaceLobe; z below 1.6; the GPU's shadow offset left out
+//    z 51, its scattered ray's z 30);
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples, a picture that has them all is redrawn unchanged, and a
-//    frame the tracer refuses (a plain property's Shade) says so and
-//    draws the map-based frame; a coloured extinction's mean is redrawn
+//    frame the tracer refuses (a vtkParticipatingMediumProperty's Shade)
+//    says so and draws the map-based frame; a coloured extinction's mean is redrawn
 //    unchanged, and denoised.
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -317,14 +319,12 @@ void Mode()
   scene.Window->Render();
   Check(scene.Mapper->GetLastPathTraceSamples() == 2, "and the paths start anew when it stops");
 
-  // A plain property's Shade: refused (the CPU tracer refuses it too).
-  vtkNew<vtkVolumeProperty> plain;
-  plain->SetScalarOpacity(scene.Property->GetScalarOpacity());
-  plain->SetColor(scene.Property->GetRGBTransferFunction());
-  plain->ShadeOn();
-  scene.Volume->SetProperty(plain);
-  CheckRefusedOnce(scene, "gradient shading",
-    "a shaded plain property is refused, said once, and drawn from the maps");
+  // A vtkParticipatingMediumProperty's Shade (its surface term): refused
+  // (the CPU tracer traces the medium without it, with a warning).
+  scene.Property->ShadeOn();
+  CheckRefusedOnce(scene, "gradient surface term",
+    "a medium's Shade is refused, said once, and drawn from the maps");
+  scene.Property->ShadeOff();
 }
 
 // The mean of an 8-bit picture's channel c, in levels.
@@ -434,6 +434,11 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       scene.Renderer->AddVolume(copy);
     });
   TwoVolumesAgainstCpu();
+  // A shaded CT: a plain property with Shade on over the dense medium's
+  // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
+  MeanAgainstCpu("Shaded CT", tyndall_test::MakeDenseMedium(32), 0.9, 24, true,
+    [](Scene& scene)
+    { scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9)); });
   // Fire: black-body emission per unit length from the "temperature" array,
   // its only light (no sun, no ambient, a black background: the emission
   // seen and scattered is the whole picture, and its noise the only noise).

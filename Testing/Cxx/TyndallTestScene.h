@@ -23,6 +23,7 @@
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkVolumeProperty.h"
 
 #include <cmath>
 
@@ -144,6 +145,32 @@ inline vtkSmartPointer<vtkParticipatingMediumProperty> MakeCloudProperty(double 
   property->SetInterpolationTypeToLinear();
   property->SetScalarOpacityUnitDistance(0.05);
   property->SetScatteringOctaves(1);
+  return property;
+}
+
+// A CT's look: a plain vtkVolumeProperty with Shade on (VTK's gradient
+// shading; path traced as vtkTyndallSurfaceLobe), an opacity ramp from 0
+// at the scalar `low` to `peakOpacity` at `high`, a bone colour, Ka 0.1,
+// Kd 0.6, Ks 0.3, p 15.
+inline vtkSmartPointer<vtkVolumeProperty> MakeShadedProperty(
+  double low, double high, double peakOpacity)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(low, 0.0);
+  opacity->AddPoint(high, peakOpacity);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(low, 0.85, 0.6, 0.45);
+  color->AddRGBPoint(high, 0.95, 0.9, 0.8);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetInterpolationTypeToLinear();
+  property->SetScalarOpacityUnitDistance(0.05);
+  property->ShadeOn();
+  property->SetAmbient(0.1);
+  property->SetDiffuse(0.6);
+  property->SetSpecular(0.3);
+  property->SetSpecularPower(15.0);
   return property;
 }
 

@@ -431,6 +431,27 @@ vec3 tyndallPathSkyEscape(vec3 w, float phasePdf)
 }
 #endif
 
+// Russian roulette on the throughput: false when the path ends (nothing
+// left, or below 1/4 and not drawn to survive; a survivor divided by the
+// odds: the CPU tracer's Survive()).
+bool tyndallPathRoulette(inout vec3 beta)
+{
+  float q = max(beta.r, max(beta.g, beta.b));
+  if (!(q > 0.0))
+  {
+    return false;
+  }
+  if (q < 0.25)
+  {
+    if (tyndallRandom() >= q)
+    {
+      return false;
+    }
+    beta /= q;
+  }
+  return true;
+}
+
 // A direction drawn from the Henyey-Greenstein phase function of
 // asymmetry g about w (the CPU tracer's SampleHenyeyGreenstein()).
 vec3 tyndallSampleHG(vec3 w, float g)
@@ -452,6 +473,265 @@ vec3 tyndallSampleHG(vec3 w, float g)
   vec3 v = cross(w, u);
   return normalize(sinTheta * cos(phi) * u + sinTheta * sin(phi) * v + mu * w);
 }
+
+// How a collision scatters: with TYNDALL_SHADING (a plain property's
+// Shade, vtkTyndallSurfaceLobe: its CPU twin) a lobe about the scalar's
+// unit gradient n, towards where the path came from V (h = normalize(l +
+// V)):
+//   f(l) = (Kd c |n.l| + Ks |n.h|^p) / (2 pi),
+// drawn from the mixture of a two-sided cosine lobe and Blinn-Phong's
+// half-vector lobe (shares Diffuse and Specular); else the phase function.
+// The renderer's lights and sky are pathLightUnit (vtkTyndallSurfaceLobe::
+// LightUnit, 2 pi) brighter against the lobe, so that a light's first bounce
+// is VTK's shading term, and a shaded collision exchanges its light from
+// shadowOffset along its direction, as the map-based frame's shading takes
+// T_l (a surface does not shadow itself).
+struct TyndallScatterer
+{
+#if TYNDALL_SHADING
+  vec3 N;
+  vec3 V;
+  vec3 Color;    // c
+  float Diffuse; // the probability of the cosine lobe
+  float Specular; // ... and of the half-vector lobe
+#else
+  float Unused;
+#endif
+};
+
+#if TYNDALL_SHADING
+uniform float pathLightUnit; // vtkTyndallSurfaceLobe::LightUnit
+
+// The lobe at x for the path's direction w and the colour c (the CPU's
+// vtkTyndallSurfaceLobe::Set(), shadingCoefficients[0]: Ka, Kd, Ks, p).
+TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, vec3 color)
+{
+  TyndallScatterer lobe;
+  vec3 g = tyndallScalarGradient(x);
+  float magnitude = length(g);
+  lobe.N = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+  lobe.V = -w;
+  lobe.Color = color;
+  vec4 k = shadingCoefficients[0];
+  float d = magnitude > 0.0 ? max(k.y, 0.0) * (color.r + color.g + color.b) / 3.0 : 0.0;
+  float s = magnitude > 0.0 ? max(k.z, 0.0) * min(1.0, 4.0 / (max(k.w, 0.0) + 1.0)) : 0.0;
+  lobe.Diffuse = d + s > 0.0 ? d / (d + s) : 0.0;
+  lobe.Specular = d + s > 0.0 ? s / (d + s) : 0.0;
+  return lobe;
+}
+
+bool tyndallLobeScatters(TyndallScatterer lobe)
+{
+  return lobe.Diffuse + lobe.Specular > 0.0;
+}
+
+// f(l) per channel (vtkTyndallSurfaceLobe::Evaluate()).
+vec3 tyndallLobeValue(TyndallScatterer lobe, vec3 l)
+{
+  if (!tyndallLobeScatters(lobe))
+  {
+    return vec3(0.0);
+  }
+  vec4 k = shadingCoefficients[0];
+  vec3 lv = l + lobe.V;
+  float specular = 0.0;
+  if (length(lv) > 1e-6)
+  {
+    specular = max(k.z, 0.0) * pow(abs(dot(lobe.N, normalize(lv))), max(k.w, 0.0));
+  }
+  return (max(k.y, 0.0) * lobe.Color * abs(dot(lobe.N, l)) + specular) / (2.0 * TYNDALL_PI);
+}
+
+// The density the lobe draws l with (vtkTyndallSurfaceLobe::Pdf()).
+float tyndallLobePdf(TyndallScatterer lobe, vec3 l)
+{
+  float pdf = lobe.Diffuse * abs(dot(lobe.N, l)) / (2.0 * TYNDALL_PI);
+  vec3 lv = l + lobe.V;
+  if (lobe.Specular > 0.0 && length(lv) > 1e-6)
+  {
+    vec3 h = normalize(lv);
+    float vh = abs(dot(lobe.V, h));
+    float p = max(shadingCoefficients[0].w, 0.0);
+    if (vh > 0.0)
+    {
+      pdf += lobe.Specular * (p + 1.0) / (2.0 * TYNDALL_PI) * pow(abs(dot(lobe.N, h)), p) /
+        (4.0 * vh);
+    }
+  }
+  return pdf;
+}
+
+// The unit direction at the cosine mu and the angle phi about the unit axis a.
+vec3 tyndallAboutAxis(vec3 a, float mu, float phi)
+{
+  vec3 b = abs(a.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  vec3 u = normalize(cross(a, b));
+  vec3 v = cross(a, u);
+  float sinTheta = sqrt(max(0.0, 1.0 - mu * mu));
+  return normalize(sinTheta * cos(phi) * u + sinTheta * sin(phi) * v + mu * a);
+}
+
+// A direction drawn from the lobe, its weight f / pdf and density pdf (0
+// when the lobe does not scatter; vtkTyndallSurfaceLobe::Sample()).
+vec3 tyndallSampleLobe(TyndallScatterer lobe, out vec3 weight, out float pdf)
+{
+  float u0 = tyndallRandom();
+  float u1 = tyndallRandom();
+  float phi = 2.0 * TYNDALL_PI * tyndallRandom();
+  weight = vec3(0.0);
+  pdf = 0.0;
+  if (!tyndallLobeScatters(lobe))
+  {
+    return lobe.V;
+  }
+  vec3 l;
+  if (u0 < lobe.Diffuse)
+  {
+    vec3 axis = u0 < 0.5 * lobe.Diffuse ? lobe.N : -lobe.N;
+    l = tyndallAboutAxis(axis, sqrt(u1), phi);
+  }
+  else
+  {
+    vec3 axis = dot(lobe.N, lobe.V) < 0.0 ? -lobe.N : lobe.N;
+    vec3 h = tyndallAboutAxis(axis, pow(u1, 1.0 / (max(shadingCoefficients[0].w, 0.0) + 1.0)), phi);
+    l = normalize(2.0 * dot(lobe.V, h) * h - lobe.V);
+  }
+  pdf = tyndallLobePdf(lobe, l);
+  if (pdf > 0.0)
+  {
+    weight = tyndallLobeValue(lobe, l) / pdf;
+  }
+  return l;
+}
+
+// The transmittance of a shaded collision at x towards l up to tEnd: from
+// shadowOffset along l, by the frame's method for light `light` (-1: the
+// sky, tracked) or tracked (the CPU tracer's SurfaceTransmittance()).
+TyndallTransmittance tyndallLobeTransmittance(int light, vec3 x, vec3 l, float tEnd)
+{
+  vec3 y = x + shadowOffset * l;
+  float length = max(min(tyndallIntersectMapBox(y, l).y, tEnd - shadowOffset), 0.0);
+  if (light >= 0 && lightMethod[light] == TYNDALL_NONE)
+  {
+    return TyndallTransmittance(1.0);
+  }
+  if (light >= 0 && pathTrackedShadows == 0)
+  {
+    return lightTransmittance(light, y, l, tEnd - shadowOffset);
+  }
+  return tyndallPathTransmittance(y, l, length, false);
+}
+
+// A shaded collision's light at x per unit of throughput (the CPU tracer's
+// SurfaceSource()): VTK's ambient Ka c, each light's E f(l) T_l and, with
+// the sky, its next-event estimate against the lobe's sampling.
+vec3 tyndallPathCollisionLight(
+  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool last)
+{
+  vec3 sum = shadingCoefficients[0].x * s.Color;
+  if (!tyndallLobeScatters(lobe))
+  {
+    return sum;
+  }
+  bool tracked = pathTrackedShadows != 0;
+  if (!tracked)
+  {
+    // The light loop and its brute-force marches, counted at once.
+    tyndallPathIterations += pathCollisionCost;
+  }
+  for (int l = 0; l < numberOfLights; ++l)
+  {
+    if (tracked && !tyndallPathStep())
+    {
+      break;
+    }
+    vec3 toLight;
+    float distance;
+    vec3 E = lightColor[l];
+    if (!tyndallLightAt(l, x, E, toLight, distance) || occluded(l, x))
+    {
+      continue;
+    }
+    sum += pathLightUnit * E * tyndallLobeValue(lobe, toLight) *
+      tyndallLobeTransmittance(l, x, toLight, distance);
+  }
+#if TYNDALL_PATH_ENVIRONMENT
+  tyndallPathIterations += pathSkySearchCost;
+  vec4 u = vec4(tyndallRandom(), tyndallRandom(), tyndallRandom(), tyndallRandom());
+  vec3 l;
+  vec3 L;
+  float pdf = tyndallSampleSky(u, l, L);
+  if (pdf > 0.0)
+  {
+    float weight = last ? 1.0 : tyndallPowerWeight(pdf, tyndallLobePdf(lobe, l));
+    sum += pathLightUnit * L * tyndallLobeValue(lobe, l) *
+      tyndallLobeTransmittance(-1, x, l, 1e30) * (weight / pdf);
+  }
+#endif
+  return sum;
+}
+
+// Draws the scattered direction w from the lobe (its density phasePdf),
+// the throughput times its weight; false when the path ends there
+// (Russian roulette, or a lobe that does not scatter). The scattered
+// path leaves from shadowOffset along w (o).
+bool tyndallPathScatter(TyndallScatterer lobe, TyndallCameraSample s, vec3 x, inout vec3 beta,
+  inout vec3 w, out vec3 o, out float phasePdf)
+{
+  vec3 weight;
+  w = tyndallSampleLobe(lobe, weight, phasePdf);
+  beta *= weight;
+  o = x + shadowOffset * w;
+  return phasePdf > 0.0 && tyndallPathRoulette(beta);
+}
+
+float tyndallPathSkyUnit()
+{
+  return pathLightUnit;
+}
+#else
+TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, vec3 color)
+{
+  return TyndallScatterer(0.0);
+}
+
+// A collision's light at x per unit of throughput: its colour times the
+// in-scattered light (next-event estimation) and, with the sky, its
+// estimate against the phase function's sampling, plus its emission.
+vec3 tyndallPathCollisionLight(
+  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer phase, bool last)
+{
+  vec3 light = tyndallPathInScattering(x, w);
+#if TYNDALL_PATH_ENVIRONMENT
+  light += tyndallPathSkyEvent(x, w, last);
+#endif
+  return s.Color * light + tyndallSampleEmission(s);
+}
+
+// The throughput times the collision's colour, then (unless the path ends
+// there: Russian roulette) the scattered direction w drawn from the phase
+// function (its density phasePdf), from x (o).
+bool tyndallPathScatter(TyndallScatterer phase, TyndallCameraSample s, vec3 x, inout vec3 beta,
+  inout vec3 w, out vec3 o, out float phasePdf)
+{
+  beta *= s.Color;
+  o = x;
+  phasePdf = 0.0;
+  if (!tyndallPathRoulette(beta))
+  {
+    return false;
+  }
+  vec3 previous = w;
+  w = tyndallSampleHG(w, anisotropy);
+  phasePdf = tyndallPhaseHG(anisotropy, dot(w, previous));
+  return true;
+}
+
+float tyndallPathSkyUnit()
+{
+  return 1.0;
+}
+#endif
 
 // One path from the camera ray p0 + t w, t in [tNear, tFar]: adds its
 // radiance to `radiance` and its first flight's escape (1 or 0) to
@@ -487,7 +767,7 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
 #if TYNDALL_PATH_ENVIRONMENT
       if (bounce > 0 && !tyndallPathSpent())
       {
-        radiance += beta * tyndallPathSkyEscape(w, phasePdf);
+        radiance += beta * tyndallPathSkyUnit() * tyndallPathSkyEscape(w, phasePdf);
       }
 #endif
       break;
@@ -497,29 +777,14 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
       radiance += beta * s.Color; // emission-absorption: the colour, and the path ends
       break;
     }
-    vec3 light = tyndallPathInScattering(x, w);
-#if TYNDALL_PATH_ENVIRONMENT
-    light += tyndallPathSkyEvent(x, w, bounce + 1 >= pathBounces);
-#endif
-    radiance += beta * (s.Color * light + tyndallSampleEmission(s));
-    beta *= s.Color;
-    float q = max(beta.r, max(beta.g, beta.b));
-    if (bounce + 1 >= pathBounces || !(q > 0.0) || tyndallPathSpent())
+    bool last = bounce + 1 >= pathBounces;
+    TyndallScatterer scatterer = tyndallPathScatterer(x, w, s.Color);
+    radiance += beta * tyndallPathCollisionLight(x, w, s, scatterer, last);
+    if (last || tyndallPathSpent() || !tyndallPathScatter(scatterer, s, x, beta, w, o, phasePdf))
     {
       break;
     }
-    if (q < 0.25)
-    {
-      if (tyndallRandom() >= q)
-      {
-        break;
-      }
-      beta /= q;
-    }
-    vec3 previous = w;
-    w = tyndallSampleHG(w, anisotropy);
-    phasePdf = tyndallPhaseHG(anisotropy, dot(w, previous));
-    o = x;
+    x = o;
     t0 = 0.0;
 #if TYNDALL_GUESTS > 0
     t1 = tyndallIntersectMapBox(x, w).y; // every medium's box
