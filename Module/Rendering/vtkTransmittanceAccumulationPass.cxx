@@ -105,12 +105,17 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
     this->HistoryFrames = 0;
     return false;
   }
-  if (old != this->History.GetPointer() ||
-    (opacity && (oldOpacity != this->HistoryOpacity.GetPointer() || !this->HistoryChromatic)))
+  if (!opacity && this->HistoryOpacity)
   {
-    historyFrames = 0; // a new image: nothing to average with
+    // A grey mean: no opacity images beside it (GetHistoryOpacity() null).
+    this->HistoryOpacity->ReleaseGraphicsResources(frame.Window);
+    this->HistoryOpacity = nullptr;
   }
-  this->HistoryChromatic = opacity != nullptr;
+  if (old != this->History.GetPointer() ||
+    (opacity && oldOpacity != this->HistoryOpacity.GetPointer()))
+  {
+    historyFrames = 0; // a new image (or the first opacity image): nothing to average with
+  }
   vtkShaderProgram* program = this->CompositeProgram(frame, reporter);
   if (!program)
   {
@@ -328,7 +333,6 @@ void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* windo
     *image = nullptr;
   }
   this->HistoryFrames = 0;
-  this->HistoryChromatic = false;
   this->Result = nullptr;
   if (this->Framebuffer)
   {

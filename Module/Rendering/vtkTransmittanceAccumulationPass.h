@@ -127,7 +127,7 @@ public:
    */
   vtkTextureObject* GetHistoryOpacity() const
   {
-    return this->HistoryFrames > 0 && this->HistoryChromatic ? this->HistoryOpacity : nullptr;
+    return this->HistoryFrames > 0 ? this->HistoryOpacity : nullptr;
   }
 
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -164,8 +164,8 @@ private:
   vtkSmartPointer<vtkTextureObject> Images[2];
   vtkSmartPointer<vtkTextureObject> Opacities[2]; // beside Images, with a coloured extinction
   vtkSmartPointer<vtkTextureObject> History;
-  vtkSmartPointer<vtkTextureObject> HistoryOpacity; // beside History, with a coloured extinction
-  bool HistoryChromatic = false;                    // whether HistoryOpacity is part of the mean
+  // Beside History while the mean is of a coloured extinction's frames, else null.
+  vtkSmartPointer<vtkTextureObject> HistoryOpacity;
   int HistoryFrames = 0;
   vtkTextureObject* Result = nullptr; // one of Images
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;

@@ -11,20 +11,23 @@
 //    transmittance per channel), several volumes (two half-density copies
 //    drawn as one; two side by side, the other's shadow on this one), fire
 //    from an emission array and a shaded CT (a plain property with Shade on:
-//    vtkTyndallSurfaceLobe; z below 1.6; the GPU's shadow offset left out
-//    z 51, its scattered ray's z 30);
+//    vtkTyndallSurfaceLobe, lit by a sun and a spot light; z below 2.4; the
+//    GPU's shadow offset left out z 51, its scattered ray's z 30);
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples, a picture that has them all is redrawn unchanged, and a
-//    frame the tracer refuses (a vtkParticipatingMediumProperty's Shade)
-//    says so and draws the map-based frame; a coloured extinction's mean is redrawn
+//    frame the tracer refuses (a vtkParticipatingMediumProperty's Shade; a
+//    shaded plain property's volumetric scattering blending, or beside
+//    another volume) says so once and draws the map-based frame; a coloured extinction's mean is redrawn
 //    unchanged, and denoised.
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkCosineNoise.h"
+#include "vtkCullerCollection.h"
 #include "vtkDataArray.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -325,6 +328,26 @@ void Mode()
   CheckRefusedOnce(scene, "gradient surface term",
     "a medium's Shade is refused, said once, and drawn from the maps");
   scene.Property->ShadeOff();
+  // A shaded plain property is traced, but not with VTK 9.2's volumetric
+  // scattering blending, nor beside another volume (on the GPU).
+  scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(1.0, 8.0, 0.5));
+  scene.Mapper->SetVolumetricScatteringBlending(1.0f);
+  CheckRefusedOnce(
+    scene, "volumetric scattering blending", "a shaded volume's blending is refused, said once");
+  scene.Mapper->SetVolumetricScatteringBlending(0.0f);
+  vtkNew<vtkTransmittanceVolumeMapper> otherMapper;
+  otherMapper->SetInputData(tyndall_test::MakeCloud(16));
+  vtkNew<vtkVolume> other;
+  other->SetMapper(otherMapper);
+  other->SetProperty(tyndall_test::MakeCloudProperty(0.5));
+  other->SetPosition(3.0, 0.0, 0.0);
+  scene.Renderer->AddVolume(other);
+  // (Sorted back to front: no warning about the compositing order.)
+  vtkFrustumCoverageCuller::SafeDownCast(scene.Renderer->GetCullers()->GetLastItem())
+    ->SetSortingStyleToBackToFront();
+  CheckRefusedOnce(scene, "beside other volumes", "a shaded volume beside another is refused");
+  scene.Renderer->RemoveVolume(other);
+  scene.Volume->SetProperty(scene.Property);
 }
 
 // The mean of an 8-bit picture's channel c, in levels.
@@ -438,7 +461,20 @@ int TestTransmittanceMapperPathTrace(int, char*[])
   // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
   MeanAgainstCpu("Shaded CT", tyndall_test::MakeDenseMedium(32), 0.9, 24, true,
     [](Scene& scene)
-    { scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9)); });
+    {
+      scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9));
+      // A spot light too: a positional light's attenuation and distance.
+      vtkNew<vtkLight> spot;
+      spot->SetLightTypeToSceneLight();
+      spot->SetPositional(true);
+      spot->SetPosition(-1.5, 1.0, 2.5);
+      spot->SetFocalPoint(0.0, 0.0, 0.0);
+      spot->SetConeAngle(30.0);
+      spot->SetAttenuationValues(1.0, 0.2, 0.05);
+      spot->SetColor(0.6, 0.8, 1.0);
+      spot->SetIntensity(1.0);
+      scene.Renderer->AddLight(spot);
+    });
   // Fire: black-body emission per unit length from the "temperature" array,
   // its only light (no sun, no ambient, a black background: the emission
   // seen and scattered is the whole picture, and its noise the only noise).

@@ -6,7 +6,11 @@
 //    to it), whatever the medium and the phase function (g 0.6). The CPU's
 //    and the GPU's 64-spp pictures, their sums over the picture and over
 //    each quadrant within 4.5 standard errors of L's. A sky counted twice (the sampled sky's and
-//    the escaped paths' weights not summing to 1) or missed is off by far more;
+//    the escaped paths' weights not summing to 1) or missed is off by far more.
+//    And a shaded furnace: a white plain property with Shade on, Kd 1, Ks
+//    0, Ka 0 (vtkTyndallSurfaceLobe's weight exactly 1), the sky L seen as
+//    LightUnit L and the background LightUnit L: every pixel LightUnit L
+//    (z below 0.3; the unit left out of the escapes: z -81 on both);
 // 2. the GPU against the CPU: a gradient sky with the sun, and an image sky
 //    (a bright patch, the only light, a dark ground), on the built-in cloud:
 //    the sums of both at 64 spp, over the picture and each quadrant, within
@@ -38,7 +42,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkTransmittanceVolumeMapper.h"
+#include "vtkTyndallSurfaceLobe.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 #include "vtkVolumetricPathTracer.h"
 
 #include "TyndallTestCheck.h"
@@ -63,43 +69,64 @@ constexpr int kSamples = 64;
 // the sky's 4 lights would cost 1.1 s of llvmpipe at the default 256.
 constexpr int kCacheSize = 64;
 
-// 1. the white furnace.
-void Furnace()
+// 1. the white furnace; `shaded`: a shaded one (a plain property with
+// Shade on, white, Kd 1, Ks 0, Ka 0: every collision scatters all it
+// receives, its lobe's weight exactly 1; the sky is LightUnit L to it, the
+// sky's unit in a shaded scene, and so is the background), which holds
+// the paths' own loop with vtkTyndallSurfaceLobe (the lobe's weights, the
+// sky's draws and the escapes weighed against each other, the unit on
+// both, the offset start: one bounce does not reach them).
+void Furnace(bool shaded)
 {
   const int size = 32;
   Scene scene(tyndall_test::MakeCloud(32), 0.5, size);
   scene.Mapper->SetTransmittanceCacheSize(kCacheSize);
-  const double L = 0.6;
+  const double L = shaded ? 0.1 : 0.6;
+  const double seen = shaded ? vtkTyndallSurfaceLobe::LightUnit * L : L;
   scene.Renderer->RemoveAllLights();
   scene.Renderer->AutomaticLightCreationOff();
   scene.Renderer->SetEnvironmentalBG(L, L, L);
-  scene.Renderer->SetBackground(L, L, L);
+  scene.Renderer->SetBackground(seen, seen, seen);
   vtkColorTransferFunction* color = scene.Property->GetRGBTransferFunction();
   color->RemoveAllPoints();
   color->AddRGBPoint(0.0, 1.0, 1.0, 1.0);
   scene.Property->SetAmbientIntensity(0.0);
   scene.Property->SetScatteringAnisotropy(0.6);
+  if (shaded)
+  {
+    vtkNew<vtkVolumeProperty> plain;
+    plain->SetScalarOpacity(scene.Property->GetScalarOpacity());
+    plain->SetColor(color);
+    plain->SetScalarOpacityUnitDistance(scene.Property->GetScalarOpacityUnitDistance());
+    plain->SetInterpolationTypeToLinear();
+    plain->ShadeOn();
+    plain->SetAmbient(0.0);
+    plain->SetDiffuse(1.0);
+    plain->SetSpecular(0.0);
+    scene.Volume->SetProperty(plain);
+  }
   scene.Mapper->SetPathTraceMaximumBounces(1000);
   scene.Mapper->SetPathTraceShadowsToTracked();
   scene.Mapper->SetPathTraceSamplesPerFrame(16);
+  const std::string name = shaded ? "Shaded furnace" : "Furnace";
 
   auto cpu = tyndall_test::MakeCpuTracer(scene, kSamples);
   vtkImageData* traced = cpu->Render(scene.Renderer, scene.Volume, size, size);
   if (!traced)
   {
-    Check(false, "furnace: the CPU tracer renders");
+    Check(false, name + ": the CPU tracer renders");
     return;
   }
   const double* bg = scene.Renderer->GetBackground();
-  auto sky = [&](vtkIdType, int) { return L; };
+  auto sky = [&](vtkIdType, int) { return seen; };
   const tyndall_test::PathComparison cpuPicture{ cpu->Composite(), traced, bg, kSamples, 1, sky };
-  Check(cpuPicture.WorstZ("Furnace, CPU", true) < 4.5,
-    "furnace: the CPU tracer's picture is the sky's radiance everywhere");
-  Check(scene.Trace(kSamples) >= kSamples, "furnace: the GPU's picture has its samples");
+  Check(cpuPicture.WorstZ(name + ", CPU", true) < 4.5,
+    name + ": the CPU tracer's picture is the sky's radiance everywhere");
+  Check(scene.Trace(kSamples) >= kSamples, name + ": the GPU's picture has its samples");
   vtkSmartPointer<vtkImageData> picture = scene.Picture();
   const tyndall_test::PathComparison gpuPicture{ picture, traced, bg, kSamples, 1, sky };
-  Check(gpuPicture.WorstZ("Furnace, GPU", true) < 4.5,
-    "furnace: the GPU's picture is the sky's radiance everywhere");
+  Check(gpuPicture.WorstZ(name + ", GPU", true) < 4.5,
+    name + ": the GPU's picture is the sky's radiance everywhere");
 }
 
 // An equirectangular sky of 32 x 16 (VTK's renderer does not prefilter a
@@ -299,7 +326,8 @@ void MapFrame()
 
 int TestTransmittanceMapperSky(int, char*[])
 {
-  Furnace();
+  Furnace(false);
+  Furnace(true);
   AgainstCpu("Gradient sky",
     [](vtkRenderer* renderer)
     {

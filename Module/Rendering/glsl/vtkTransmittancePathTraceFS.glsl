@@ -537,7 +537,8 @@ vec3 tyndallLobeValue(TyndallScatterer lobe, vec3 l)
   float specular = 0.0;
   if (length(lv) > 1e-6)
   {
-    specular = max(k.z, 0.0) * pow(abs(dot(lobe.N, normalize(lv))), max(k.w, 0.0));
+    // (pow(0, 0) is undefined in GLSL: 1 as the CPU's std::pow, tyndallShadingTerm()'s guard.)
+    specular = max(k.z, 0.0) * pow(max(abs(dot(lobe.N, normalize(lv))), 1e-30), max(k.w, 0.0));
   }
   return (max(k.y, 0.0) * lobe.Color * abs(dot(lobe.N, l)) + specular) / (2.0 * TYNDALL_PI);
 }
@@ -554,8 +555,8 @@ float tyndallLobePdf(TyndallScatterer lobe, vec3 l)
     float p = max(shadingCoefficients[0].w, 0.0);
     if (vh > 0.0)
     {
-      pdf += lobe.Specular * (p + 1.0) / (2.0 * TYNDALL_PI) * pow(abs(dot(lobe.N, h)), p) /
-        (4.0 * vh);
+      pdf += lobe.Specular * (p + 1.0) / (2.0 * TYNDALL_PI) *
+        pow(max(abs(dot(lobe.N, h)), 1e-30), p) / (4.0 * vh);
     }
   }
   return pdf;
