@@ -1,8 +1,11 @@
 """What the documentation's picture scripts share: the built-in cloud and a
 white cloud medium, a renderer with one sun and the tests' camera around a
-volume, a window, and grabbing its picture."""
+volume, a window, and grabbing its picture; VTK's CT head and its view."""
+
+import os
 
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+from vtkmodules.vtkIOImage import vtkNrrdReader
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
                                          vtkRenderWindow, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
@@ -71,3 +74,43 @@ def grab(window):
     copy = grabber.GetOutput().NewInstance()
     copy.DeepCopy(grabber.GetOutput())
     return copy
+
+
+def ct_head_reader():
+    """A reader of VTK's CT head (../shared/data/volumes/headsq), updated;
+    None (after saying so) when the data is absent."""
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    head = os.path.join(root, "..", "shared", "data", "volumes", "headsq", "quarter.nhdr")
+    if not os.path.exists(head):
+        print("skip: %s is absent" % head)
+        return None
+    reader = vtkNrrdReader()
+    reader.SetFileName(head)
+    reader.Update()
+    return reader
+
+
+def ct_head_window(volume, size):
+    """A size x size off-screen window whose renderer shows `volume` (its
+    mapper set) lit by one scene light from the upper left, the camera
+    turned 30 degrees round and 20 up, as the CT head's pictures are."""
+    renderer = vtkRenderer()
+    renderer.SetBackground(0.2, 0.3, 0.4)
+    renderer.AddVolume(volume)
+    light = vtkLight()
+    light.SetLightTypeToSceneLight()
+    light.SetPosition(-1.0, 1.0, 0.6)
+    light.SetFocalPoint(0.0, 0.0, 0.0)
+    renderer.AddLight(light)
+    window = vtkRenderWindow()
+    window.SetMultiSamples(0)
+    window.SetOffScreenRendering(1)
+    window.SetSize(size, size)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    camera = renderer.GetActiveCamera()
+    camera.Azimuth(30.0)
+    camera.Elevation(20.0)
+    renderer.ResetCamera()
+    camera.Zoom(1.3)
+    return window, renderer

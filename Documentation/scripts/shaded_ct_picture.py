@@ -10,31 +10,23 @@ isosurface-ct.png: the isosurface blend mode, skin (translucent) and bone.
         Documentation/scripts/shaded_ct_picture.py Documentation/images
 """
 
-import os
 import sys
 
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkFiltersCore import vtkImageAppend
-from vtkmodules.vtkIOImage import vtkNrrdReader, vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolume, vtkVolumeProperty
 from vtkmodules.vtkRenderingVolume import vtkGPUVolumeRayCastMapper
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (its OpenGL implementation)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factories)
 
 from tyndall import vtkTransmittanceVolumeMapper
+from doc_scene import ct_head_reader, ct_head_window, grab
 
 SIZE = 320
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-HEAD = os.path.join(ROOT, "..", "shared", "data", "volumes", "headsq", "quarter.nhdr")
-if not os.path.exists(HEAD):
-    print("skip: %s is absent" % HEAD)
+reader = ct_head_reader()
+if reader is None:
     sys.exit(0)
-
-reader = vtkNrrdReader()
-reader.SetFileName(HEAD)
-reader.Update()
 lo, hi = reader.GetOutput().GetPointData().GetScalars().GetRange()
 span = hi - lo
 color = vtkColorTransferFunction()
@@ -55,41 +47,13 @@ prop.SetAmbient(0.0)  # VTK's ambient with a scene light: its ambient colour, bl
 
 volume = vtkVolume()
 volume.SetProperty(prop)
-renderer = vtkRenderer()
-renderer.SetBackground(0.2, 0.3, 0.4)
-renderer.AddVolume(volume)
-light = vtkLight()
-light.SetLightTypeToSceneLight()
-light.SetPosition(-1.0, 1.0, 0.6)
-light.SetFocalPoint(0.0, 0.0, 0.0)
-renderer.AddLight(light)
-window = vtkRenderWindow()
-window.SetMultiSamples(0)
-window.SetOffScreenRendering(1)
-window.SetSize(SIZE, SIZE)
-window.AddRenderer(renderer)
-
 vtk_mapper = vtkGPUVolumeRayCastMapper()
 vtk_mapper.SetInputConnection(reader.GetOutputPort())
 tyndall = vtkTransmittanceVolumeMapper()
 tyndall.SetInputConnection(reader.GetOutputPort())
 tyndall.SetLightSampleCount(256)
 volume.SetMapper(vtk_mapper)
-renderer.ResetCamera()
-camera = renderer.GetActiveCamera()
-camera.Azimuth(30.0)
-camera.Elevation(20.0)
-renderer.ResetCamera()
-camera.Zoom(1.3)
-
-
-def grab():
-    window.Render()
-    image = vtkWindowToImageFilter()
-    image.SetInput(window)
-    image.ReadFrontBufferOff()
-    image.Update()
-    return image.GetOutput()
+window, renderer = ct_head_window(volume, SIZE)
 
 
 def picture(name):
@@ -97,11 +61,11 @@ def picture(name):
     row = vtkImageAppend()
     row.SetAppendAxis(0)
     volume.SetMapper(vtk_mapper)
-    row.AddInputData(grab())
+    row.AddInputData(grab(window))
     volume.SetMapper(tyndall)
     for method in ("None", "AdaptiveETM", "BruteForce"):
         getattr(tyndall, "SetTransmittanceMethodTo" + method)()
-        row.AddInputData(grab())
+        row.AddInputData(grab(window))
     writer = vtkPNGWriter()
     writer.SetInputConnection(row.GetOutputPort())
     writer.SetFileName(sys.argv[1] + "/" + name)

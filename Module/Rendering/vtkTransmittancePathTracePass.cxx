@@ -316,12 +316,15 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   program->SetUniformi("pathSeed", settings.Seed);
   program->SetUniformi("pathSamples", this->LastSamplesPerFrame);
   program->SetUniformi("pathBounces", std::max(settings.MaximumBounces, 1));
-  program->SetUniformf("pathMajorant", static_cast<float>(Majorant(frame)));
+  // The grey majorants; the flights' (spectral tracking's) SpectralFactor
+  // times them, the shadow rays' themselves (the CPU tracer's).
+  program->SetUniformf(
+    "pathMajorant", static_cast<float>(Majorant(frame) / SpectralFactor(frame)));
+  program->SetUniformf("pathFlightScale", static_cast<float>(SpectralFactor(frame)));
   if (variant.PathBlocks)
   {
     program->SetUniformf("pathBlockScale",
-      static_cast<float>(
-        frame.Medium->GetParameters().DensityScale * kMajorantMargin * SpectralFactor(frame)));
+      static_cast<float>(frame.Medium->GetParameters().DensityScale * kMajorantMargin));
   }
   program->SetUniformi("pathTrackedShadows", settings.TrackedShadows ? 1 : 0);
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);

@@ -169,9 +169,10 @@ private:
   void operator=(const vtkTransmittancePathTracePass&) = delete;
 
   /**
-   * The majorant the paths track against (per world unit, above 0): the
-   * medium's plus its guests', twice that with a coloured extinction
-   * (SpectralFactor()).
+   * The majorant the paths' flights track against (per world unit, above
+   * 0): the medium's plus its guests', twice that with a coloured
+   * extinction (SpectralFactor(); their shadow rays track against the
+   * majorant itself, as the CPU tracer's).
    */
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the medium has a coloured extinction (spectral tracking).
@@ -187,8 +188,9 @@ private:
    */
   static double FlightLength(const vtkTransmittanceFrame& frame);
   /**
-   * Spectral tracking's majorant factor: 2 with a coloured extinction (a
-   * null collision's weight then stays below 2, the CPU tracer's), else 1.
+   * Spectral tracking's majorant factor for the flights: 2 with a coloured
+   * extinction (a null collision's weight then stays below 2, the CPU
+   * tracer's), else 1 (the uniform pathFlightScale).
    */
   static double SpectralFactor(const vtkTransmittanceFrame& frame);
   /// Whether the paths track against the majorant grid's blocks (Variant::PathBlocks).

@@ -51,8 +51,10 @@
 //
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
 //   [--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail]
-//   [--scene 0|1|2] [--help]
+//   [--scene 0|1|2] [--chromatic] [--help]
 // --scene N measures one scene: 0 the cloud, 1 the dense medium, 2 the shaded CT.
+// --chromatic gives the media a coloured extinction (red 0.25, green 0.6 of
+// blue's, the tests'): spectral tracking (not the shaded CT's plain property).
 // --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp, a light
 // cache of 32 texels a side: every render works, never a timing or a PSNR.
 #include "vtkCosineNoise.h"
@@ -101,6 +103,7 @@ struct Options
   bool Sun = false;
   bool Detail = false;
   int Scene = -1; // --scene: 0 the cloud, 1 the dense medium, 2 the shaded CT; -1 every one
+  bool Chromatic = false;
 };
 
 // The --sun sky: an equirectangular 128 x 64 image, the --sky gradient with a
@@ -200,6 +203,10 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       ok = next(o.Scene, 0, 2);
     }
+    else if (a == "--chromatic")
+    {
+      o.Chromatic = true;
+    }
     else
     {
       ok = false;
@@ -208,7 +215,7 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
                   "[--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail] "
-                  "[--scene 0|1|2] [--help]\n");
+                  "[--scene 0|1|2] [--chromatic] [--help]\n");
       return false;
     }
   }
@@ -227,6 +234,10 @@ struct Scene : tyndall_test::PathScene
   {
     this->Mapper->SetPathTraceMaximumBounces(o.Bounces);
     this->Mapper->SetPathTraceSamplesPerFrame(o.FrameSamples);
+    if (o.Chromatic)
+    {
+      this->Property->SetExtinctionColor(0.25, 0.6, 1.0);
+    }
     if (o.Quick)
     {
       // No figure: the sky's 4 lights' caches kept small (1.1 s each on

@@ -35,6 +35,7 @@ uniform int pathSeed;           // and the mapper's seed
 uniform int pathSamples;        // paths per pixel in this frame
 uniform int pathBounces;        // the most scattering events of a path
 uniform float pathMajorant;     // an upper bound of the extinction (per world unit)
+uniform float pathFlightScale;  // the flights' majorants' factor (2 with a coloured extinction)
 uniform int pathTrackedShadows; // 1: light transmittance tracked; 0: lightTransmittance()
 uniform int pathBudget;         // loop trips one fragment may run
 uniform int pathCollisionCost;  // trips of a collision's light estimate from the maps
@@ -86,8 +87,9 @@ struct TyndallWalk
 {
   vec3 Origin;    // the segment's start: T is measured from it (precision far from the camera)
   vec3 Direction;
-  float T;  // the last tentative collision (0 at first)
-  float T1; // the segment's end
+  float T;     // the last tentative collision (0 at first)
+  float T1;    // the segment's end
+  float Scale; // the majorants' factor (pathFlightScale for a flight, 1 for a shadow ray)
 #if TYNDALL_PATH_BLOCKS
   vec3 BlockOrigin; // the ray in block coordinates (tyndallBlockRay())
   vec3 BlockDirection;
@@ -99,13 +101,14 @@ struct TyndallWalk
 uniform float pathBlockScale;
 #endif
 
-TyndallWalk tyndallStartWalk(vec3 o, vec3 w, float t0, float t1)
+TyndallWalk tyndallStartWalk(vec3 o, vec3 w, float t0, float t1, float scale)
 {
   TyndallWalk walk;
   walk.Origin = o + t0 * w;
   walk.Direction = w;
   walk.T = 0.0;
   walk.T1 = t1 - t0;
+  walk.Scale = scale;
 #if TYNDALL_PATH_BLOCKS
   tyndallBlockRay(walk.Origin, w, walk.BlockOrigin, walk.BlockDirection);
   vec3 d = abs(walk.BlockDirection);
@@ -131,7 +134,7 @@ bool tyndallNextCollision(inout TyndallWalk walk, out float m)
     float least = max(walk.Nudge, abs(walk.T) * 4e-7);
     vec3 p = walk.BlockOrigin + (walk.T + least) * walk.BlockDirection;
     vec3 cell = clamp(floor(p), vec3(0.0), blockCount - 1.0);
-    m = texelFetch(blockTexture, ivec3(cell), 0).r * pathBlockScale;
+    m = texelFetch(blockTexture, ivec3(cell), 0).r * pathBlockScale * walk.Scale;
     // The edge blocks reach outward without end (outside the grid the
     // medium reads the edge samples or nothing): a ray outside it is one
     // block, not a stall at a face behind it.
@@ -156,7 +159,7 @@ bool tyndallNextCollision(inout TyndallWalk walk, out float m)
   {
     return false;
   }
-  m = pathMajorant;
+  m = pathMajorant * walk.Scale;
   walk.T -= log(1.0 - tyndallRandom()) / m;
   return walk.T < walk.T1;
 #endif
@@ -215,7 +218,7 @@ bool tyndallDetailFlight(vec3 x, vec3 w, float tEnd, float goal, out float t)
 // with the medium's camera sample there; false when the flight leaves the
 // segment or the budget is spent. With a coloured extinction
 // (TYNDALL_CHROMATIC) spectral tracking: the grey (densest) extinction's
-// collisions against twice its majorant (pathMajorant is), each channel's
+// collisions against twice its majorant (pathFlightScale 2), each channel's
 // `weight` multiplied by extinctionColor at the real collision and by
 // (m - e sigma) / (m - sigma) at each null one (the CPU tracer's FlightIn()).
 bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out TyndallCameraSample s,
@@ -232,7 +235,7 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out Tynda
   }
   return collided;
 #else
-  TyndallWalk walk = tyndallStartWalk(o, w, t0, t1);
+  TyndallWalk walk = tyndallStartWalk(o, w, t0, t1, pathFlightScale);
   float m;
   for (int i = 0; i < pathBudget; ++i)
   {
@@ -259,14 +262,15 @@ bool tyndallFreeFlight(vec3 o, vec3 w, float t0, float t1, out vec3 x, out Tynda
 }
 
 // Ratio tracking from x along dir over (0, tEnd): an unbiased estimate of
-// the transmittance (per channel with a coloured extinction), with Russian
+// the transmittance (per channel with a coloured extinction, against the
+// grey majorant itself: no flight's weights to bound), with Russian
 // roulette (survival 1/2) once its largest channel is below 0.1 (the CPU
 // tracer's RatioTrack()); through every medium the light crosses, or with
 // `flight` the media the path's flights cross (with guests: the camera ray's
 // own media, tyndallEveryGuest).
 TyndallTransmittance tyndallRatioTrack(vec3 x, vec3 dir, float tEnd, bool flight)
 {
-  TyndallWalk walk = tyndallStartWalk(x, dir, 0.0, tEnd);
+  TyndallWalk walk = tyndallStartWalk(x, dir, 0.0, tEnd, 1.0);
   TyndallTransmittance T = TyndallTransmittance(1.0);
   float m;
   for (int i = 0; i < pathBudget; ++i)
@@ -388,6 +392,11 @@ vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
   }
   return emissionScale * length * sum;
 }
+#else
+vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
+{
+  return vec3(0.0); // no emission array
+}
 #endif
 
 #if TYNDALL_PATH_ENVIRONMENT
@@ -429,7 +438,38 @@ vec3 tyndallPathSkyEscape(vec3 w, float phasePdf)
 {
   return tyndallSkyRadiance(w) * tyndallPowerWeight(phasePdf, tyndallSkyPdf(w));
 }
+#else
+// No sky: nothing to estimate at a collision, nothing met on leaving.
+vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
+{
+  return vec3(0.0);
+}
+
+vec3 tyndallPathSkyEscape(vec3 w, float phasePdf)
+{
+  return vec3(0.0);
+}
 #endif
+
+// The media a flight crosses: the camera ray's (the camera media) or a
+// scattered one's (every medium: tyndallEveryGuest), with guests.
+void tyndallPathFlightMedia(bool scattered)
+{
+#if TYNDALL_CAMERA_GUESTS
+  tyndallEveryGuest = scattered;
+#endif
+}
+
+// Where a scattered ray from x along w leaves the media: every medium's
+// box (the maps') with guests, else the volume's.
+float tyndallPathBoxExit(vec3 x, vec3 w)
+{
+#if TYNDALL_GUESTS > 0
+  return tyndallIntersectMapBox(x, w).y;
+#else
+  return tyndallIntersectCameraBox(x, w).y;
+#endif
+}
 
 // Russian roulette on the throughput: false when the path ends (nothing
 // left, or below 1/4 and not drawn to survive; a survivor divided by the
@@ -623,6 +663,28 @@ TyndallTransmittance tyndallLobeTransmittance(int light, vec3 x, vec3 l, float t
   return tyndallPathTransmittance(y, l, length, false);
 }
 
+// Next-event estimation of the sky at a shaded collision x: LightUnit L(l)
+// f(l) T / pdf(l), l drawn from the sky, T from shadowOffset along l,
+// weighed by the power heuristic against the lobe's draws (1 at the path's
+// last collision; the CPU tracer's SurfaceSource()); 0 without a sky.
+vec3 tyndallLobeSkyEvent(vec3 x, TyndallScatterer lobe, bool last)
+{
+#if TYNDALL_PATH_ENVIRONMENT
+  tyndallPathIterations += pathSkySearchCost;
+  vec4 u = vec4(tyndallRandom(), tyndallRandom(), tyndallRandom(), tyndallRandom());
+  vec3 l;
+  vec3 L;
+  float pdf = tyndallSampleSky(u, l, L);
+  if (pdf > 0.0)
+  {
+    float weight = last ? 1.0 : tyndallPowerWeight(pdf, tyndallLobePdf(lobe, l));
+    return pathLightUnit * L * tyndallLobeValue(lobe, l) *
+      tyndallLobeTransmittance(-1, x, l, 1e30) * (weight / pdf);
+  }
+#endif
+  return vec3(0.0);
+}
+
 // A shaded collision's light at x per unit of throughput (the CPU tracer's
 // SurfaceSource()): VTK's ambient Ka c, each light's E f(l) T_l and, with
 // the sky, its next-event estimate against the lobe's sampling.
@@ -656,20 +718,7 @@ vec3 tyndallPathCollisionLight(
     sum += pathLightUnit * E * tyndallLobeValue(lobe, toLight) *
       tyndallLobeTransmittance(l, x, toLight, distance);
   }
-#if TYNDALL_PATH_ENVIRONMENT
-  tyndallPathIterations += pathSkySearchCost;
-  vec4 u = vec4(tyndallRandom(), tyndallRandom(), tyndallRandom(), tyndallRandom());
-  vec3 l;
-  vec3 L;
-  float pdf = tyndallSampleSky(u, l, L);
-  if (pdf > 0.0)
-  {
-    float weight = last ? 1.0 : tyndallPowerWeight(pdf, tyndallLobePdf(lobe, l));
-    sum += pathLightUnit * L * tyndallLobeValue(lobe, l) *
-      tyndallLobeTransmittance(-1, x, l, 1e30) * (weight / pdf);
-  }
-#endif
-  return sum;
+  return sum + tyndallLobeSkyEvent(x, lobe, last);
 }
 
 // Draws the scattered direction w from the lobe (its density phasePdf),
@@ -702,10 +751,7 @@ TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, vec3 color)
 vec3 tyndallPathCollisionLight(
   vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer phase, bool last)
 {
-  vec3 light = tyndallPathInScattering(x, w);
-#if TYNDALL_PATH_ENVIRONMENT
-  light += tyndallPathSkyEvent(x, w, last);
-#endif
+  vec3 light = tyndallPathInScattering(x, w) + tyndallPathSkyEvent(x, w, last);
   return s.Color * light + tyndallSampleEmission(s);
 }
 
@@ -750,12 +796,8 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
   {
     vec3 x;
     TyndallCameraSample s;
-#if TYNDALL_CAMERA_GUESTS
-    tyndallEveryGuest = bounce > 0; // the camera ray sees the camera media; scattered light, all
-#endif
-#if TYNDALL_EMISSION_ARRAY
+    tyndallPathFlightMedia(bounce > 0);
     radiance += beta * tyndallPathArrayEmission(o, w, t0, t1);
-#endif
     TyndallTransmittance weight = TyndallTransmittance(1.0); // spectral tracking's
     bool collided = tyndallFreeFlight(o, w, t0, t1, x, s, weight);
     if (!collided && bounce == 0)
@@ -765,12 +807,10 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
     beta *= weight;
     if (!collided)
     {
-#if TYNDALL_PATH_ENVIRONMENT
       if (bounce > 0 && !tyndallPathSpent())
       {
         radiance += beta * tyndallPathSkyUnit() * tyndallPathSkyEscape(w, phasePdf);
       }
-#endif
       break;
     }
     if (scatteringModel == 0)
@@ -785,15 +825,25 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
     {
       break;
     }
-    x = o;
     t0 = 0.0;
-#if TYNDALL_GUESTS > 0
-    t1 = tyndallIntersectMapBox(x, w).y; // every medium's box
-#else
-    t1 = tyndallIntersectCameraBox(x, w).y;
-#endif
+    t1 = tyndallPathBoxExit(o, w);
   }
   return !tyndallPathSpent();
+}
+
+// Writes the mean of n paths' radiance and 1 - the mean of their escapes
+// (the view transmittance's estimate); with a coloured extinction 1 - the
+// view transmittance per channel into the second image, the first image's
+// opacity their mean (vtkTransmittanceRayCastFS.glsl's tyndallWrite()).
+void tyndallPathWrite(vec3 radiance, TyndallTransmittance escaped, float n)
+{
+#if TYNDALL_CHROMATIC
+  vec3 opacity = 1.0 - escaped / n;
+  gl_FragData[0] = vec4(radiance / n, (opacity.r + opacity.g + opacity.b) / 3.0);
+  gl_FragData[1] = vec4(opacity, gl_FragData[0].a);
+#else
+  gl_FragData[0] = vec4(radiance / n, 1.0 - escaped / n);
+#endif
 }
 
 void main()
@@ -819,14 +869,5 @@ void main()
       break;
     }
   }
-  float n = float(traced);
-#if TYNDALL_CHROMATIC
-  // 1 - the view transmittance per channel into the second image; the first
-  // image's opacity their mean (vtkTransmittanceRayCastFS.glsl's tyndallWrite()).
-  vec3 opacity = 1.0 - escaped / n;
-  gl_FragData[0] = vec4(radiance / n, (opacity.r + opacity.g + opacity.b) / 3.0);
-  gl_FragData[1] = vec4(opacity, gl_FragData[0].a);
-#else
-  gl_FragData[0] = vec4(radiance / n, 1.0 - escaped / n);
-#endif
+  tyndallPathWrite(radiance, escaped, float(traced));
 }
