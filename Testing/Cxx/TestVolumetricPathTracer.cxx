@@ -70,6 +70,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <random>
@@ -311,31 +312,34 @@ void TestSurfaceLobe()
     Check(std::abs(fUniform - fDrawn) < 5.0 * std::sqrt(e2 * e2 + e3 * e3),
       "surface lobe: draws follow the density");
   }
+  // The largest of `measure(weight)` over `draws` draws from `lobe`.
+  const auto largestOver = [&](const vtkTyndallSurfaceLobe& lobe, int draws,
+                             const std::function<double(const double*)>& measure)
+  {
+    double largest = 0.0;
+    for (int i = 0; i < draws; ++i)
+    {
+      double l[3], weight[3];
+      const double u0 = uniform(engine), u1 = uniform(engine);
+      lobe.Sample(u0, u1, uniform(engine), l, weight);
+      largest = std::max(largest, measure(weight));
+    }
+    return largest;
+  };
   vtkTyndallSurfaceLobe diffuse;
   diffuse.Set(0.7, 0.0, 10.0, n, v, color);
-  double worst = 0.0;
-  for (int i = 0; i < 1000; ++i)
-  {
-    double l[3], weight[3];
-    const double u0 = uniform(engine), u1 = uniform(engine);
-    diffuse.Sample(u0, u1, uniform(engine), l, weight);
-    for (int c = 0; c < 3; ++c)
+  const double worst = largestOver(diffuse, 1000,
+    [&](const double* weight)
     {
-      worst = std::max(worst, std::abs(weight[c] - 0.7 * color[c]));
-    }
-  }
+      return std::max({ std::abs(weight[0] - 0.7 * color[0]), std::abs(weight[1] - 0.7 * color[1]),
+        std::abs(weight[2] - 0.7 * color[2]) });
+    });
   Check(worst < 1.0e-12, "surface lobe: a diffuse lobe scatters exactly Kd c");
   vtkTyndallSurfaceLobe specular;
   const double white[3] = { 1.0, 1.0, 1.0 };
   specular.Set(0.0, 0.5, 10.0, n, v, white);
-  double largest = 0.0;
-  for (int i = 0; i < 10000; ++i)
-  {
-    double l[3], weight[3];
-    const double u0 = uniform(engine), u1 = uniform(engine);
-    specular.Sample(u0, u1, uniform(engine), l, weight);
-    largest = std::max(largest, weight[0]);
-  }
+  const double largest =
+    largestOver(specular, 10000, [](const double* weight) { return weight[0]; });
   Check(largest <= 4.0 * 0.5 / 11.0 + 1.0e-12, "surface lobe: specular weight at most 4 Ks/(p+1)");
   vtkTyndallSurfaceLobe none;
   const double zero[3] = { 0.0, 0.0, 0.0 };
