@@ -40,16 +40,6 @@ vtkTransmittancePathTracePass::vtkTransmittancePathTracePass() = default;
 vtkTransmittancePathTracePass::~vtkTransmittancePathTracePass() = default;
 
 //------------------------------------------------------------------------------
-bool vtkTransmittancePathTracePass::TableEmission(const vtkTyndallGridMedium& medium)
-{
-  // vtkTransmittanceGridAdapter::DeclareColorSwitches()'s Variant::Emission,
-  // under which the camera samples mix the guests' emission colours.
-  const vtkTyndallMediumParameters& parameters = medium.GetParameters();
-  return parameters.HasEmission && parameters.EmissionScale > 0.0 && !medium.GetArrayEmission() &&
-    !medium.GetIsosurfaces().Enabled() && !medium.GetTable().Has2D();
-}
-
-//------------------------------------------------------------------------------
 std::string vtkTransmittancePathTracePass::Refusal(
   const vtkTransmittanceFrame& frame, bool peeling, bool distributed)
 {
@@ -91,7 +81,9 @@ std::string vtkTransmittancePathTracePass::Refusal(
     {
       return "another volume's emission array (EmissionArrayName) is not path traced yet";
     }
-    if (guest.Medium->GetParameters().HasEmission && !TableEmission(medium))
+    // (Variant::Emission: this volume's table emission, under which the
+    // camera samples mix the guests' emission colours.)
+    if (guest.Medium->GetParameters().HasEmission && !frame.GetShaderVariant().Emission)
     {
       return "another volume's emission is path traced only with this volume's (give this one "
              "an EmissionScale and emission colour too)";
@@ -318,8 +310,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   program->SetUniformi("pathBounces", std::max(settings.MaximumBounces, 1));
   // The grey majorants; the flights' (spectral tracking's) SpectralFactor
   // times them, the shadow rays' themselves (the CPU tracer's).
-  program->SetUniformf(
-    "pathMajorant", static_cast<float>(Majorant(frame) / SpectralFactor(frame)));
+  program->SetUniformf("pathMajorant", static_cast<float>(Majorant(frame) / SpectralFactor(frame)));
   program->SetUniformf("pathFlightScale", static_cast<float>(SpectralFactor(frame)));
   if (variant.PathBlocks)
   {

@@ -67,7 +67,6 @@
 #include <string> // For std::string
 
 class vtkTransmittanceFrame;
-class vtkTyndallGridMedium;
 class vtkWindow;
 
 class TYNDALLRENDERING_EXPORT vtkTransmittancePathTracePass : public vtkObject
@@ -177,11 +176,6 @@ private:
   static double Majorant(const vtkTransmittanceFrame& frame);
   /// Whether the medium has a coloured extinction (spectral tracking).
   static bool Chromatic(const vtkTransmittanceFrame& frame);
-  /**
-   * Whether the camera samples add the table's emission (Variant::Emission),
-   * and with it their guests' (tyndallCameraMedium()).
-   */
-  static bool TableEmission(const vtkTyndallGridMedium& medium);
   /**
    * The longest flight (world length): the camera box's diagonal, with
    * guests the maps' box's (scattered flights cross every medium).
