@@ -351,6 +351,17 @@ void TestSurfaceLobe()
     "surface lobe: no normal, no scattering");
 }
 
+// Every light of `renderer` `factor` times as intense.
+void ScaleIntensities(vtkRenderer* renderer, double factor)
+{
+  vtkLightCollection* lights = renderer->GetLights();
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    light->SetIntensity(factor * light->GetIntensity());
+  }
+}
+
 // A plain vtkVolumeProperty with Shade on, path traced with one bounce,
 // against vtkSingleScatteringReference's VTK shading (the same
 // expectation: the lights' first bounce off the lobe is VTK's term, see
@@ -374,12 +385,7 @@ void TestShadedSurface(Scene& scene)
   shaded->SetSpecular(0.25);
   shaded->SetSpecularPower(12.0);
   scene.Volume->SetProperty(shaded);
-  vtkLightCollection* lights = scene.Renderer->GetLights();
-  lights->InitTraversal();
-  while (vtkLight* light = lights->GetNextItem())
-  {
-    light->SetIntensity(0.4 * light->GetIntensity());
-  }
+  ScaleIntensities(scene.Renderer, 0.4);
   vtkNew<vtkSingleScatteringReference> reference;
   reference->SetStepSize(0.005);
   reference->SetEarlyTerminationThreshold(1.0e-4);
@@ -408,11 +414,7 @@ void TestShadedSurface(Scene& scene)
   {
     Check(false, "shaded: 6 bounces render");
   }
-  lights->InitTraversal();
-  while (vtkLight* light = lights->GetNextItem())
-  {
-    light->SetIntensity(light->GetIntensity() / 0.4);
-  }
+  ScaleIntensities(scene.Renderer, 1.0 / 0.4);
   scene.Volume->SetProperty(scene.Property);
 }
 
