@@ -47,7 +47,7 @@ set(tyndall_test_costs
   TyndallCLI-Particles 13
   Tyndall::RenderingCxx-TestVolumeShadowReceiver 13
   TyndallCLI-DetailSampled 12
-  Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 310
+  Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 160
   Tyndall::RenderingCxx-TestTransmittanceMapperScenes 10
   Tyndall::RenderingCxx-TestTransmittanceMapperDataTypes 12
   Tyndall::RenderingCxx-TestTransmittanceMapperBricks 8

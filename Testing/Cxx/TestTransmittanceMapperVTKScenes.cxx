@@ -4,7 +4,11 @@
 // pictures must agree within 35 dB (the floor). The projection
 // scenes are also rendered by the CPU reference (vtkSingleScatteringReference,
 // vtkTyndallProjection's rules) and must agree with the GPU within 40 dB,
-// both at the reference's step (a quarter voxel; jitter off).
+// both at the reference's step (a quarter voxel; jitter off), a shadowed
+// scene (shaded or a medium, brute-force shadows on both sides) at 80 x 80
+// but an isosurface (at 160 x 160 the references were 90 % of the test's
+// time; the PSNRs measured at both sizes within 0.2 dB of each other, with
+// and without a sabotage of the shadows).
 //
 // The scenes follow VTK's tests (Rendering/VolumeOpenGL2/Testing/Cxx):
 // TestGPURayCastBlendModes (a box of unsigned chars in each blend mode),
@@ -1432,6 +1436,13 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
   }
   else if (scene.Reference)
   {
+    // A shadowed scene is compared with the CPU reference at 80 x 80 (an
+    // isosurface's at the test's size: its edges' share of the pixels grows
+    // as the picture shrinks): the brute-force shadows on both sides cost
+    // pixels x steps x light samples, 90 % of the test's time at 160 x 160.
+    const bool iso = tyndall->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND;
+    const int referenceSize = shadowed && !iso ? 80 : size;
+    window->SetSize(referenceSize, referenceSize);
     // The oracle's step (a quarter voxel) on both: the GPU's own default is
     // VTK's one voxel, whose samples land on a crop's edge differently.
     const double* spacing = data->GetSpacing();
@@ -1451,12 +1462,12 @@ bool RunScene(const Scene& scene, vtkRenderWindow* window, const std::string& ou
     vtkNew<vtkSingleScatteringReference> reference;
     reference->SetStepSize(tyndall->GetSampleDistance());
     double cpu = -1.0;
-    if (reference->Render(renderer, volume, size, size))
+    if (reference->Render(renderer, volume, referenceSize, referenceSize))
     {
       vtkImageData* expected = reference->Composite();
       cpu = tyndall_test::PSNR(fine, expected);
       Write(expected, out + "/" + scene.Name + "-reference.png");
-      if (vtkImage && scene.Floor < 35.0)
+      if (vtkImage && scene.Floor < 35.0 && referenceSize == size)
       {
         // Why the floor is lower: VTK's own picture against the oracle.
         std::cout << ", VTK against the CPU reference " << std::setw(6)
