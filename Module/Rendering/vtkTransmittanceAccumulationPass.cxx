@@ -169,6 +169,7 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   vtkObject* reporter, int historyFrames, bool chromatic, bool composite)
 {
   this->Result = nullptr;
+  this->ResultOpacity = nullptr;
   if (!this->Allocate(frame, width, height, chromatic, reporter))
   {
     return false;
@@ -220,6 +221,7 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   vtkTextureObject* result = this->Images[(passes - 1) % 2];
   vtkTextureObject* opacity = chromatic ? this->Opacities[(passes - 1) % 2].GetPointer() : nullptr;
   this->Result = result;
+  this->ResultOpacity = opacity;
   if (historyFrames < 0)
   {
     this->HistoryFrames = 0;
@@ -228,6 +230,18 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
   return this->AddToHistory(frame, result, opacity, width, height, historyFrames, reporter) &&
     (!composite ||
       this->Composite(frame, this->History, this->GetHistoryOpacity(), upscaled, reporter));
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittanceAccumulationPass::CompositeResult(
+  const vtkTransmittanceFrame& frame, vtkObject* reporter)
+{
+  if (!this->Result)
+  {
+    vtkErrorWithObjectMacro(reporter, << "There is no image to draw.");
+    return false;
+  }
+  return this->Composite(frame, this->Result, this->ResultOpacity, false, reporter);
 }
 
 //------------------------------------------------------------------------------
@@ -334,6 +348,7 @@ void vtkTransmittanceAccumulationPass::ReleaseGraphicsResources(vtkWindow* windo
   }
   this->HistoryFrames = 0;
   this->Result = nullptr;
+  this->ResultOpacity = nullptr;
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(window);

@@ -88,6 +88,15 @@ public:
    */
   vtkTextureObject* GetResult() const { return this->Result; }
 
+  /**
+   * Composites the last Render()'s result (with its opacity image, with a
+   * coloured extinction) over the renderer's viewport, as Render() with
+   * `composite` does: a result kept (`composite` false) and shown after all.
+   * It must be the viewport's size. False (with an error through `reporter`)
+   * when there is none or the compositing program does not compile.
+   */
+  bool CompositeResult(const vtkTransmittanceFrame& frame, vtkObject* reporter);
+
   /// Frames in the running average after the last Render() (0: no history kept).
   int GetHistoryFrames() const { return this->HistoryFrames; }
 
@@ -167,7 +176,8 @@ private:
   // Beside History while the mean is of a coloured extinction's frames, else null.
   vtkSmartPointer<vtkTextureObject> HistoryOpacity;
   int HistoryFrames = 0;
-  vtkTextureObject* Result = nullptr; // one of Images
+  vtkTextureObject* Result = nullptr;        // one of Images
+  vtkTextureObject* ResultOpacity = nullptr; // beside Result, with a coloured extinction
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTransmittanceShaderQuad Quad;
 };

@@ -335,7 +335,10 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   ++this->MeanSerial;
   if (this->Accumulation->GetHistoryFrames() <= 1)
   {
-    this->GuideReady = false; // a new mean (asked for, or a new image): a new view
+    // A new mean (asked for, or a new image): a new view, whose guide
+    // DrawGuide() may have drawn just before.
+    this->GuideReady = this->GuideReady && this->GuideForNextMean;
+    this->GuideForNextMean = false;
   }
   if (!drawn)
   {
@@ -362,6 +365,47 @@ bool vtkTransmittancePathTracePass::Redraw(const vtkTransmittanceFrame& frame,
 }
 
 //------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::CanGuide(const vtkTransmittanceRayCastPass::Inputs& inputs)
+{
+  return inputs.Reduction <= 1 && inputs.StepScale <= 1.0 && inputs.DetailSamples <= 0 &&
+    !inputs.KeepsImage();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::DrawGuide(const vtkTransmittanceFrame& frame,
+  const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter)
+{
+  this->GuideForNextMean = false;
+  this->DenoiserAllocated = true;
+  if (!this->RenderGuide(frame, inputs, reporter))
+  {
+    return false;
+  }
+  this->GuideForNextMean = true;
+  return this->GuideCast->CompositeImage(frame, reporter);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::RenderGuide(const vtkTransmittanceFrame& frame,
+  const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter)
+{
+  this->FilteredSerial = 0;
+  vtkTransmittanceRayCastPass::Inputs guide = inputs;
+  guide.Offscreen = true;
+  guide.Reduction = 1;
+  guide.StepScale = 1.0;
+  guide.DetailSamples = 0; // marched: no noise of its own
+  guide.HistoryFrames = 0;
+  ++this->GuideRenders;
+  this->GuideReady = this->GuideCast->Render(frame, guide, reporter);
+  if (this->GuideReady)
+  {
+    this->GuideCast->ReleaseScratch(frame.Window); // the guide is one image
+  }
+  return this->GuideReady;
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittancePathTracePass::GuideFits(const vtkTransmittanceFrame& frame) const
 {
   vtkTextureObject* guide = this->GuideCast->GetImage(0);
@@ -380,6 +424,7 @@ void vtkTransmittancePathTracePass::ReleaseDenoiser(vtkWindow* window, bool forc
   }
   this->DenoiserAllocated = false;
   this->GuideReady = false;
+  this->GuideForNextMean = false;
   this->FilteredSerial = 0;
   this->Denoised = nullptr;
 }
@@ -391,15 +436,7 @@ bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& fr
   this->DenoiserAllocated = true; // (whatever fails below: the images made so far)
   if (!this->GuideFits(frame))
   {
-    this->FilteredSerial = 0;
-    vtkTransmittanceRayCastPass::Inputs guide = inputs;
-    guide.Offscreen = true;
-    guide.Reduction = 1;
-    guide.StepScale = 1.0;
-    guide.DetailSamples = 0; // marched: no noise of its own
-    guide.HistoryFrames = 0;
-    this->GuideReady = this->GuideCast->Render(frame, guide, reporter);
-    if (!this->GuideReady)
+    if (!this->RenderGuide(frame, inputs, reporter))
     {
       return false;
     }
@@ -410,7 +447,6 @@ bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& fr
         reporter, << "The denoiser's guide is not the size of the paths' mean.");
       return false;
     }
-    this->GuideCast->ReleaseScratch(frame.Window); // the guide is one image
   }
   // The mean as filtered last, while it has not changed (a finished picture's redraws).
   if (this->FilteredSerial != this->MeanSerial || !this->Denoised)

@@ -46,7 +46,11 @@
  * when its context or size is not the mean's), is its noise-free guide;
  * the mean itself is kept, so turning it on or off keeps the samples. A
  * finished mean's redraws composite the filtered image as it was; with
- * the denoiser off its images are freed.
+ * the denoiser off its images are freed. Where the map-based frame the
+ * mapper draws before the paths start is already the guide's (full size,
+ * full step, marched: CanGuide()), DrawGuide() draws it as the guide and
+ * composites it, and the mean that starts next takes it (one map-based
+ * frame fewer: GetGuideRenders()).
  *
  * Internal to Tyndall::Rendering.
  */
@@ -132,6 +136,28 @@ public:
   bool Redraw(const vtkTransmittanceFrame& frame, const vtkTransmittanceRayCastPass::Inputs& inputs,
     const Settings& settings, vtkObject* reporter);
 
+  /**
+   * Draws the map-based frame of the camera rays' `inputs` (CanGuide())
+   * into the denoiser's guide and composites it over the viewport: the same
+   * picture as vtkTransmittanceRayCastPass::Render()'s, which the mean that
+   * the next Render() starts takes as its guide instead of drawing it again.
+   * False (with an error) when it cannot be drawn.
+   */
+  bool DrawGuide(const vtkTransmittanceFrame& frame,
+    const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
+
+  /**
+   * Whether the camera rays' `inputs` draw the denoiser's guide: full size,
+   * full step, marched (no samples of procedural detail), into the viewport.
+   */
+  static bool CanGuide(const vtkTransmittanceRayCastPass::Inputs& inputs);
+
+  /// Forgets a guide DrawGuide() drew for the next mean (the view moved on without one).
+  void DropGuide() { this->GuideForNextMean = false; }
+
+  /// How many times the denoiser's guide was drawn (by DrawGuide() or for a mean without one).
+  int GetGuideRenders() const { return this->GuideRenders; }
+
   /// Frames in the mean after the last Render().
   int GetHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
 
@@ -213,6 +239,9 @@ private:
    */
   bool ShowDenoised(const vtkTransmittanceFrame& frame,
     const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
+  /// Draws the guide (the map-based frame, full size, marched) from the camera rays' `inputs`.
+  bool RenderGuide(const vtkTransmittanceFrame& frame,
+    const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
   /// Whether the guide is drawn for the mean: its view, its context and size.
   bool GuideFits(const vtkTransmittanceFrame& frame) const;
   /// Frees the guide's and the filter's images (the denoiser is off; `force`: whether or not
@@ -225,6 +254,8 @@ private:
   vtkNew<vtkTransmittanceDenoisePass> Denoiser;
   vtkNew<vtkTransmittanceEnvironmentTextures> Sky; // the renderer's sky's tables
   bool GuideReady = false;              // GuideCast's image is the mean's map-based frame
+  bool GuideForNextMean = false;        // DrawGuide() drew it for the mean that starts next
+  int GuideRenders = 0;                 // the guides drawn
   bool DenoiserAllocated = false;       // the guide's or the filter's images may exist
   vtkMTimeType MeanSerial = 0;          // counts Render()'s frames added to the mean
   vtkMTimeType FilteredSerial = 0;      // MeanSerial when Denoised was filtered (0: not)

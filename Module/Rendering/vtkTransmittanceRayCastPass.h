@@ -136,6 +136,16 @@ public:
   /// Still frames averaged in the last Render()'s picture (0: no average kept).
   int GetLastHistoryFrames() const { return this->Accumulation[0]->GetHistoryFrames(); }
 
+  /**
+   * Composites the image the last Render() kept (Inputs::Offscreen) over
+   * the viewport: the picture a Render() without Offscreen draws. False
+   * (with an error) when there is none.
+   */
+  bool CompositeImage(const vtkTransmittanceFrame& frame, vtkObject* reporter)
+  {
+    return this->Accumulation[0]->CompositeResult(frame, reporter);
+  }
+
   /// The image of the part `segment` (Inputs::DepthRanges) the last Render() of it drew.
   vtkTextureObject* GetImage(int segment) const
   {

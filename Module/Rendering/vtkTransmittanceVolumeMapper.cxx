@@ -323,7 +323,10 @@ public:
   bool RefusePaths(vtkTransmittanceVolumeMapper* self, bool peeling);
   void ChooseDetail(vtkRenderer* renderer, vtkVolume* volume, bool adjust, int maximum,
     vtkTransmittanceRayCastPass::Inputs& inputs) const;
-  bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter);
+  // The camera rays of `inputs`; with `guide`, drawn as the path tracer's
+  // denoising guide (vtkTransmittancePathTracePass::DrawGuide(): the same picture).
+  bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter,
+    bool guide = false);
   // The camera rays' cost per full-size pixel of `seconds` for a frame at
   // the last Reduction and StepScale.
   double CostPerPixel(double seconds) const;
@@ -588,10 +591,17 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   still.StepScale = 1.0;
   if (!SameStillKey(this->StillFrameKey(self, renderer, volume, still), this->PathKey))
   {
-    // Something moved: the map-based frame; the paths start at the next still one.
+    // Something moved: the map-based frame; the paths start at the next
+    // still one. Drawn full size for the denoiser, it is their guide too.
     this->PathKey.clear();
     this->PathFrames = 0;
-    this->Complete = this->CastRays(inputs, self->InteractiveAdjustment, self);
+    const bool guide =
+      self->GetPathTraceDenoise() && vtkTransmittancePathTracePass::CanGuide(inputs);
+    if (!guide)
+    {
+      this->PathTracer->DropGuide();
+    }
+    this->Complete = this->CastRays(inputs, self->InteractiveAdjustment, self, guide);
     if (this->Complete)
     {
       this->PathKey = this->StillFrameKey(self, renderer, volume, still);
@@ -648,11 +658,12 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceVolumeMapper::vtkInternals::CastRays(
-  const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter)
+  const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter, bool guide)
 {
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  if (!this->RayCast->Render(this->Frame, inputs, reporter))
+  if (guide ? !this->PathTracer->DrawGuide(this->Frame, inputs, reporter)
+            : !this->RayCast->Render(this->Frame, inputs, reporter))
   {
     return false;
   }
@@ -759,6 +770,12 @@ double vtkTransmittanceVolumeMapper::GetLastMapBuildTime()
 int vtkTransmittanceVolumeMapper::GetTransmittanceCacheBuildCount()
 {
   return this->Internals->Cache->GetBuildCount();
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittanceVolumeMapper::GetPathTraceGuideRenderCount()
+{
+  return this->Internals->PathTracer->GetGuideRenders();
 }
 
 //------------------------------------------------------------------------------
@@ -1419,6 +1436,7 @@ void vtkTransmittanceVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TransmittanceCacheSize: " << this->TransmittanceCacheSize << "\n";
   os << indent << "TransmittanceCacheBuildCount: " << this->GetTransmittanceCacheBuildCount()
      << "\n";
+  os << indent << "PathTraceGuideRenderCount: " << this->GetPathTraceGuideRenderCount() << "\n";
   os << indent << "MapBuildCount: " << this->GetMapBuildCount() << "\n";
   os << indent << "LastMapBuildTime: " << this->GetLastMapBuildTime() << "\n";
 }

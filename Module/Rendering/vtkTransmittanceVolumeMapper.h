@@ -539,13 +539,22 @@ public:
    * its description). The filter narrows as the samples grow, so the
    * picture tends to the paths' mean; the mean itself is kept, and turning
    * the denoiser on or off keeps its samples (as the display transform
-   * does). Costs one map-based frame when the paths start and two
-   * filtering passes per frame. Off in the tests unless a test asks.
+   * does). Costs one map-based frame when the paths start (none where the
+   * frame drawn just before them, while something moved, was full size and
+   * marched: that frame is the guide) and two filtering passes per frame.
+   * Off in the tests unless a test asks.
    */
   void SetPathTraceDenoise(bool denoise);
   vtkGetMacro(PathTraceDenoise, bool);
   vtkBooleanMacro(PathTraceDenoise, bool);
   ///@}
+
+  /**
+   * How many times the denoiser's guide was drawn (PathTraceDenoise): at
+   * most once per start of the paths, and not where the map-based frame
+   * drawn before them was the guide's (full size, full step, marched).
+   */
+  int GetPathTraceGuideRenderCount();
 
   ///@{
   /**

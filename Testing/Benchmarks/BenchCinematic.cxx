@@ -14,7 +14,9 @@
 //    draws while anything moves): its time and its PSNR against the
 //    converged picture (under a sky, the sky's two models, each also with
 //    the property's default two octaves); its time with the display transform (ACES, sRGB)
-//    against linear, alternated, the best of five each;
+//    against linear, alternated, the best of five each; and at the paths'
+//    start drawn as the denoiser's guide (PathTraceDenoise) against
+//    directly, alternated likewise;
 // 3. for each light transmittance (the maps, ratio tracked), then the maps'
 //    with the denoiser (PathTraceDenoise): frames of paths from a new start,
 //    the time and samples per pixel at which the picture first reaches 30 dB
@@ -367,6 +369,24 @@ bool Run(Scene& s, const Options& o)
   std::printf("  the map-based frame with ACES and sRGB: %.4f s, linear %.4f s (best of 5 each): "
               "%.3fx\n",
     best[1], best[0], best[1] / best[0]);
+  // The map-based frame at the paths' start drawn as the denoiser's guide
+  // (into an image, then composited) against drawn directly, alternated.
+  s.Mapper->PathTracingOn();
+  double start[2] = { 1e30, 1e30 };
+  for (int i = 0; i < 10; ++i)
+  {
+    const bool guide = i % 2 == 1;
+    s.Mapper->SetPathTraceDenoise(guide);
+    s.Mapper->ResetAccumulation();
+    const auto begin = std::chrono::steady_clock::now();
+    s.Window->Render();
+    s.Finish();
+    start[guide ? 1 : 0] = std::min(start[guide ? 1 : 0], Seconds(begin));
+  }
+  s.Mapper->SetPathTraceDenoise(false);
+  std::printf("  the paths' start (the map-based frame) drawn as the denoiser's guide: %.4f s, "
+              "directly %.4f s (best of 5 each): %.3fx\n",
+    start[1], start[0], start[1] / start[0]);
   // 3. time to 30 dB, each light transmittance (seed 0), then the maps' denoised.
   double gpuRate = 0.0, mapsReached = -1.0;
   struct Run

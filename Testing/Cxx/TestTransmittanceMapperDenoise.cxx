@@ -58,6 +58,17 @@ double Decibels(double rms, double peak)
 {
   return 20.0 * std::log10(peak / std::max(rms, 1e-30));
 }
+
+// The largest difference of two pictures' values over `peak` (1e30: not the same size).
+double Largest(const std::vector<float>& a, const std::vector<float>& b, double peak)
+{
+  double worst = a.size() == b.size() ? 0.0 : 1e30;
+  for (size_t i = 0; i < a.size() && worst < 1e30; ++i)
+  {
+    worst = std::max(worst, std::abs(double(a[i]) - b[i]) / peak);
+  }
+  return worst;
+}
 }
 
 int TestTransmittanceMapperDenoise(int, char*[])
@@ -100,11 +111,7 @@ int TestTransmittanceMapperDenoise(int, char*[])
             vtkTyndallDenoiser::DefaultIterations, vtkTyndallDenoiser::EdgeStopFor(samples),
             twin.data()),
       what.str() + ": the twin filters");
-    double worst = shown.size() == twin.size() ? 0.0 : 1e30;
-    for (size_t i = 0; i < twin.size() && worst < 1e30; ++i)
-    {
-      worst = std::max(worst, std::abs(double(shown[i]) - twin[i]) / peak);
-    }
+    const double worst = Largest(shown, twin, peak);
     const double raw = Decibels(RMS(mean, converged), peak);
     const double denoised = Decibels(RMS(shown, converged), peak);
     const double twinDb = Decibels(RMS(twin, converged), peak);
@@ -117,11 +124,46 @@ int TestTransmittanceMapperDenoise(int, char*[])
     Check(frame.Render() == mean, what.str() + ": turned off, the mean again");
   }
 
-  // The denoiser on from the paths' start, then the camera turned: the
-  // paths and the guide start again for the new view (the twin filters the
-  // new mean with the new map-based frame).
+  // The denoiser on from the paths' start: the map-based frame drawn when
+  // they start (full size, marched) is drawn as the guide, the same
+  // picture as without the denoiser, and the paths draw no guide again.
+  mapper->PathTracingOn();
+  mapper->PathTraceDenoiseOn();
+  mapper->ResetAccumulation();
+  const int guides = mapper->GetPathTraceGuideRenderCount();
+  const std::vector<float> startAsGuide = frame.Render();
+  const int startGuides = mapper->GetPathTraceGuideRenderCount() - guides;
+  mapper->PathTraceDenoiseOff();
+  mapper->ResetAccumulation();
+  const double startWorst = Largest(startAsGuide, frame.Render(), peak);
+  // A coloured extinction's start frame too, composited per channel over a
+  // grey background (over black the channels' opacities would not show).
+  scene.Property->SetExtinctionColor(0.25, 0.6, 1.0);
+  scene.Renderer->SetBackground(0.4, 0.4, 0.4); // (102 / 255: a whole 8-bit level)
+  scene.Renderer->SetBackgroundAlpha(1.0);
+  mapper->PathTraceDenoiseOn();
+  mapper->ResetAccumulation();
+  const std::vector<float> chromaticAsGuide = frame.Render();
+  mapper->PathTraceDenoiseOff();
+  mapper->ResetAccumulation();
+  const double chromaticWorst = Largest(chromaticAsGuide, frame.Render(), peak);
+  scene.Property->SetExtinctionColor(1.0, 1.0, 1.0);
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.Renderer->SetBackgroundAlpha(0.0);
   mapper->PathTraceDenoiseOn();
   Check(scene.Trace(16) == 16, "denoised from the start: 16 samples per pixel");
+  const int traceGuides = mapper->GetPathTraceGuideRenderCount() - guides - startGuides - 1;
+  std::cout << "the paths' start, denoised: the map-based frame drawn as the guide against "
+               "drawn without the denoiser "
+            << startWorst << " (a coloured extinction's " << chromaticWorst
+            << "); guides drawn: at the start " << startGuides
+            << ", by a new start and 16 spp of paths " << traceGuides << "\n";
+  Check(startGuides == 1 && startWorst < 1e-6 && chromaticWorst < 1e-6,
+    "the map-based frame at the paths' start is drawn as the guide, the same picture");
+  Check(traceGuides == 1, "the paths take the guide drawn at their start");
+
+  // Then the camera turned: the paths and the guide start again for the new
+  // view (the twin filters the new mean with the new map-based frame).
   scene.Renderer->GetActiveCamera()->Azimuth(40.0);
   mapper->PathTracingOff();
   const std::vector<float> turnedGuide = frame.Render();
@@ -132,11 +174,7 @@ int TestTransmittanceMapperDenoise(int, char*[])
   std::vector<float> turnedTwin(turnedMean.size());
   vtkTyndallDenoiser::Filter(turnedMean.data(), turnedGuide.data(), size, size,
     vtkTyndallDenoiser::DefaultIterations, vtkTyndallDenoiser::EdgeStopFor(16), turnedTwin.data());
-  double worst = turnedShown.size() == turnedTwin.size() ? 0.0 : 1e30;
-  for (size_t i = 0; i < turnedTwin.size() && worst < 1e30; ++i)
-  {
-    worst = std::max(worst, std::abs(double(turnedShown[i]) - turnedTwin[i]) / peak);
-  }
+  const double worst = Largest(turnedShown, turnedTwin, peak);
   std::cout << "the turned view, denoised from the start: GPU against the twin " << worst
             << " (the two views' guides differ by " << Decibels(RMS(guide, turnedGuide), peak)
             << " dB)\n";
