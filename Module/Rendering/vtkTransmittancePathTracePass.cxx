@@ -338,6 +338,10 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
     // A new mean (asked for, or a new image): a new view, whose guide
     // DrawGuide() may have drawn just before.
     this->GuideReady = this->GuideReady && this->GuideForNextMean;
+    if (this->GuideReady)
+    {
+      this->GuideCast->ReleaseScratch(frame.Window); // the guide is one image
+    }
     this->GuideForNextMean = false;
   }
   if (!drawn)
@@ -377,7 +381,7 @@ bool vtkTransmittancePathTracePass::DrawGuide(const vtkTransmittanceFrame& frame
 {
   this->GuideForNextMean = false;
   this->DenoiserAllocated = true;
-  if (!this->RenderGuide(frame, inputs, reporter))
+  if (!this->RenderGuide(frame, inputs, false, reporter))
   {
     return false;
   }
@@ -387,7 +391,7 @@ bool vtkTransmittancePathTracePass::DrawGuide(const vtkTransmittanceFrame& frame
 
 //------------------------------------------------------------------------------
 bool vtkTransmittancePathTracePass::RenderGuide(const vtkTransmittanceFrame& frame,
-  const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter)
+  const vtkTransmittanceRayCastPass::Inputs& inputs, bool release, vtkObject* reporter)
 {
   this->FilteredSerial = 0;
   vtkTransmittanceRayCastPass::Inputs guide = inputs;
@@ -398,7 +402,7 @@ bool vtkTransmittancePathTracePass::RenderGuide(const vtkTransmittanceFrame& fra
   guide.HistoryFrames = 0;
   ++this->GuideRenders;
   this->GuideReady = this->GuideCast->Render(frame, guide, reporter);
-  if (this->GuideReady)
+  if (this->GuideReady && release)
   {
     this->GuideCast->ReleaseScratch(frame.Window); // the guide is one image
   }
@@ -436,7 +440,7 @@ bool vtkTransmittancePathTracePass::ShowDenoised(const vtkTransmittanceFrame& fr
   this->DenoiserAllocated = true; // (whatever fails below: the images made so far)
   if (!this->GuideFits(frame))
   {
-    if (!this->RenderGuide(frame, inputs, reporter))
+    if (!this->RenderGuide(frame, inputs, true, reporter))
     {
       return false;
     }

@@ -158,6 +158,9 @@ public:
   /// How many times the denoiser's guide was drawn (by DrawGuide() or for a mean without one).
   int GetGuideRenders() const { return this->GuideRenders; }
 
+  /// The ray cast that draws the guide (its GetLast...() figures after DrawGuide()).
+  vtkTransmittanceRayCastPass* GetGuideCast() const { return this->GuideCast; }
+
   /// Frames in the mean after the last Render().
   int GetHistoryFrames() const { return this->Accumulation->GetHistoryFrames(); }
 
@@ -239,9 +242,13 @@ private:
    */
   bool ShowDenoised(const vtkTransmittanceFrame& frame,
     const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
-  /// Draws the guide (the map-based frame, full size, marched) from the camera rays' `inputs`.
+  /**
+   * Draws the guide (the map-based frame, full size, marched) from the
+   * camera rays' `inputs`; with `release`, frees its images but the guide
+   * (DrawGuide() keeps them for the frames drawn while something moves).
+   */
   bool RenderGuide(const vtkTransmittanceFrame& frame,
-    const vtkTransmittanceRayCastPass::Inputs& inputs, vtkObject* reporter);
+    const vtkTransmittanceRayCastPass::Inputs& inputs, bool release, vtkObject* reporter);
   /// Whether the guide is drawn for the mean: its view, its context and size.
   bool GuideFits(const vtkTransmittanceFrame& frame) const;
   /// Frees the guide's and the filter's images (the denoiser is off; `force`: whether or not

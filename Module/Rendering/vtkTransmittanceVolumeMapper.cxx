@@ -327,6 +327,13 @@ public:
   // denoising guide (vtkTransmittancePathTracePass::DrawGuide(): the same picture).
   bool CastRays(const vtkTransmittanceRayCastPass::Inputs& inputs, bool timed, vtkObject* reporter,
     bool guide = false);
+  // The pass whose camera rays CastRays() drew last: the ray cast, or the
+  // path tracer's guide (what the GetLast...() queries read).
+  vtkTransmittanceRayCastPass* DrawnBy = nullptr;
+  const vtkTransmittanceRayCastPass& LastCast() const
+  {
+    return this->DrawnBy ? *this->DrawnBy : *this->RayCast.Get();
+  }
   // The camera rays' cost per full-size pixel of `seconds` for a frame at
   // the last Reduction and StepScale.
   double CostPerPixel(double seconds) const;
@@ -662,6 +669,7 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::CastRays(
 {
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
+  this->DrawnBy = guide ? this->PathTracer->GetGuideCast() : this->RayCast.Get();
   if (guide ? !this->PathTracer->DrawGuide(this->Frame, inputs, reporter)
             : !this->RayCast->Render(this->Frame, inputs, reporter))
   {
@@ -1211,36 +1219,36 @@ bool vtkTransmittanceVolumeMapper::PrepareDistributedMaps(vtkRenderer* renderer,
 int vtkTransmittanceVolumeMapper::GetLastDetailSamplesPerPixel()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete && !in.Projected ? in.RayCast->GetLastDetailSamples() : 0;
+  return in.Complete && !in.Projected ? in.LastCast().GetLastDetailSamples() : 0;
 }
 
 //------------------------------------------------------------------------------
 double vtkTransmittanceVolumeMapper::GetLastCameraStep()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete && !in.Projected ? in.RayCast->GetLastStepLength() : 0.0;
+  return in.Complete && !in.Projected ? in.LastCast().GetLastStepLength() : 0.0;
 }
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceVolumeMapper::GetLastDetailStepMeans()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete && !in.Projected && in.RayCast->GetLastDetailStepMeans();
+  return in.Complete && !in.Projected && in.LastCast().GetLastDetailStepMeans();
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetLastDetailCameraWaves()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete && !in.Projected ? in.RayCast->GetLastDetailCameraWaves() : 0;
+  return in.Complete && !in.Projected ? in.LastCast().GetLastDetailCameraWaves() : 0;
 }
 
 //------------------------------------------------------------------------------
 int vtkTransmittanceVolumeMapper::GetAccumulatedFrames()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete && !in.Projected && in.RayCast->GetLastDetailSamples() > 0
-    ? in.RayCast->GetLastHistoryFrames()
+  return in.Complete && !in.Projected && in.LastCast().GetLastDetailSamples() > 0
+    ? in.LastCast().GetLastHistoryFrames()
     : 0;
 }
 
@@ -1343,7 +1351,7 @@ double vtkTransmittanceVolumeMapper::GetLastStepScale()
 int vtkTransmittanceVolumeMapper::GetLastRayCastPassCount()
 {
   const vtkInternals& in = *this->Internals;
-  return in.Complete ? (in.Projected ? 1 : in.RayCast->GetLastPassCount()) : 0;
+  return in.Complete ? (in.Projected ? 1 : in.LastCast().GetLastPassCount()) : 0;
 }
 
 //------------------------------------------------------------------------------

@@ -550,9 +550,11 @@ public:
   ///@}
 
   /**
-   * How many times the denoiser's guide was drawn (PathTraceDenoise): at
-   * most once per start of the paths, and not where the map-based frame
-   * drawn before them was the guide's (full size, full step, marched).
+   * How many times the denoiser's guide was drawn (PathTraceDenoise): each
+   * map-based frame drawn while something moves that is the guide's (full
+   * size, full step, marched: drawn into the guide's image and composited
+   * from it), and once by a mean of paths that starts without one (the
+   * frame before it was reduced).
    */
   int GetPathTraceGuideRenderCount();
 

@@ -126,39 +126,51 @@ int TestTransmittanceMapperDenoise(int, char*[])
 
   // The denoiser on from the paths' start: the map-based frame drawn when
   // they start (full size, marched) is drawn as the guide, the same
-  // picture as without the denoiser, and the paths draw no guide again.
+  // picture as without the denoiser (there drawn direct: one pass), and the
+  // paths draw no guide again. Grey, then with the display transform over a
+  // grey background, then a coloured extinction (composited per channel:
+  // over black the channels' opacities would not show).
   mapper->PathTracingOn();
-  mapper->PathTraceDenoiseOn();
-  mapper->ResetAccumulation();
   const int guides = mapper->GetPathTraceGuideRenderCount();
-  const std::vector<float> startAsGuide = frame.Render();
-  const int startGuides = mapper->GetPathTraceGuideRenderCount() - guides;
-  mapper->PathTraceDenoiseOff();
-  mapper->ResetAccumulation();
-  const double startWorst = Largest(startAsGuide, frame.Render(), peak);
-  // A coloured extinction's start frame too, composited per channel over a
-  // grey background (over black the channels' opacities would not show).
-  scene.Property->SetExtinctionColor(0.25, 0.6, 1.0);
+  int direct = 0;
+  auto startDifference = [&]()
+  {
+    mapper->PathTraceDenoiseOn();
+    mapper->ResetAccumulation();
+    const std::vector<float> asGuide = frame.Render();
+    mapper->PathTraceDenoiseOff();
+    mapper->ResetAccumulation();
+    const std::vector<float> drawn = frame.Render();
+    direct += mapper->GetLastRayCastPassCount() == 1 ? 1 : 0;
+    return Largest(asGuide, drawn, peak);
+  };
+  const double greyWorst = startDifference();
   scene.Renderer->SetBackground(0.4, 0.4, 0.4); // (102 / 255: a whole 8-bit level)
   scene.Renderer->SetBackgroundAlpha(1.0);
-  mapper->PathTraceDenoiseOn();
-  mapper->ResetAccumulation();
-  const std::vector<float> chromaticAsGuide = frame.Render();
-  mapper->PathTraceDenoiseOff();
-  mapper->ResetAccumulation();
-  const double chromaticWorst = Largest(chromaticAsGuide, frame.Render(), peak);
+  mapper->SetExposure(0.5);
+  mapper->SetToneCurveToACES();
+  mapper->EncodeSRGBOn();
+  const double displayWorst = startDifference();
+  mapper->SetExposure(0.0);
+  mapper->SetToneCurveToLinear();
+  mapper->EncodeSRGBOff();
+  scene.Property->SetExtinctionColor(0.25, 0.6, 1.0);
+  const double chromaticWorst = startDifference();
   scene.Property->SetExtinctionColor(1.0, 1.0, 1.0);
   scene.Renderer->SetBackground(0.0, 0.0, 0.0);
   scene.Renderer->SetBackgroundAlpha(0.0);
+  const int startGuides = mapper->GetPathTraceGuideRenderCount() - guides;
   mapper->PathTraceDenoiseOn();
   Check(scene.Trace(16) == 16, "denoised from the start: 16 samples per pixel");
-  const int traceGuides = mapper->GetPathTraceGuideRenderCount() - guides - startGuides - 1;
+  const int traceGuides = mapper->GetPathTraceGuideRenderCount() - guides - startGuides;
   std::cout << "the paths' start, denoised: the map-based frame drawn as the guide against "
-               "drawn without the denoiser "
-            << startWorst << " (a coloured extinction's " << chromaticWorst
-            << "); guides drawn: at the start " << startGuides
-            << ", by a new start and 16 spp of paths " << traceGuides << "\n";
-  Check(startGuides == 1 && startWorst < 1e-6 && chromaticWorst < 1e-6,
+               "drawn without the denoiser, largest difference "
+            << greyWorst << " (with exposure, ACES and sRGB over grey " << displayWorst
+            << ", a coloured extinction " << chromaticWorst << "; " << direct
+            << " of 3 drawn in one pass, the grey ones direct); guides drawn: at 3 starts "
+            << startGuides << ", by a new start and 16 spp of paths " << traceGuides << "\n";
+  Check(startGuides == 3 && direct == 3 && greyWorst < 1e-6 && displayWorst < 1e-6 &&
+      chromaticWorst < 1e-6,
     "the map-based frame at the paths' start is drawn as the guide, the same picture");
   Check(traceGuides == 1, "the paths take the guide drawn at their start");
 
