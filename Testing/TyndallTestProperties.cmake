@@ -6,7 +6,7 @@
 #   and without one (a fresh build has no CTestCostData.txt) in the order they
 #   were added, which left the slowest ones for the end of a -j2 run, one core
 #   idle. The seconds below were measured in one Release run (2 cores,
-#   ctest -j2, llvmpipe, 2026-11-28); a test not listed costs 0 (a few
+#   ctest -j2, llvmpipe, 2026-12-06); a test not listed costs 0 (a few
 #   seconds at most). A new test of more than 5 s adds its line here.
 # - the sanitizer selection: the tests labelled NoSanitizer are left out of
 #   the sanitizer suite that setup.sh runs (ctest -LE NoSanitizer in
@@ -20,53 +20,50 @@
 # both and the sanitizers' environment (tyndall_sanitize_tests()).
 
 set(tyndall_test_costs
-  TyndallBenchmark-Export 114
-  TyndallViewer-TestViewerScripted 87
-  Tyndall::RenderingCxx-TestTransmittanceParticleMapper 79
-  Tyndall::RenderingCxx-TestTransmittanceMapperReference 70
-  Tyndall::RenderingCxx-TestTransmittanceMapperSceneShadows 48
-  Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 46
-  Tyndall::RenderingCxx-TestTransmittanceMapperDetail 42
-  Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 41
-  Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace 40
-  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 70
-  Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 8
-  Tyndall::RenderingCxx-TestTransmittanceMapperSky 11
-  Tyndall::RenderingCxx-TestTransmittanceMapperOctaves 37
-  Tyndall::RenderingCxx-TestTransmittanceMapperTransmittanceCache 25
-  TyndallParaView-MPI 24
-  Tyndall::RenderingCxx-TestTransmittanceMapperManyLights 24
-  Tyndall::RenderingCxx-TestTransmittanceMapperCaching 22
-  Tyndall::RenderingCxx-TestTransmittanceMapperMaps 22
-  TyndallPython-TestPythonRendering 20
-  Tyndall::RenderingCxx-TestTransmittanceMapperSceneRules 20
-  Tyndall::RenderingCxx-TestTransmittanceMapperClipping 18
-  TyndallParaView-Plugin 18
-  TyndallPython-TestPythonVDBRenderComparison 17
-  TyndallCLI-SeveralVolumes 14
-  TyndallCLI-Particles 13
-  Tyndall::RenderingCxx-TestVolumeShadowReceiver 13
-  TyndallCLI-DetailSampled 12
-  Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 160
-  Tyndall::RenderingCxx-TestTransmittanceMapperScenes 10
-  Tyndall::RenderingCxx-TestTransmittanceMapperDataTypes 12
-  Tyndall::RenderingCxx-TestTransmittanceMapperBricks 8
-  TyndallParaView-GUI 10
-  Tyndall::ReferenceCxx-TestVolumetricPathTracer 15
-  Tyndall::ReferenceCxx-TestVolumetricPathTracerScenes 13
-  TyndallIO-FuzzOpenVDBReader 9
-  Tyndall::MediumCxx-TestTyndallDetailMedium 8
-  TyndallCLI-ExtinctionColor 7
-  Tyndall::RenderingCxx-TestTransmittanceMapperOccluder 7
-  TyndallCLI-Clipped 7
-  Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 7
-  TyndallCLI-DefaultScene 7
-  TyndallCLI-ParticlesMarched 6
-  Tyndall::RenderingCxx-TestTransmittanceMapperMethods 6
-  TyndallCLI-DefaultSceneExr 6
-  Tyndall::RenderingCxx-TestTransmittanceMapperGeometry 5
-  TyndallCLI-CloseUp 5
-  TyndallCLI-Ground 5)
+  Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
+  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 156
+  Tyndall::RenderingCxx-TestTransmittanceMapperReference 117
+  Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 117
+  Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77
+  Tyndall::RenderingCxx-TestTransmittanceParticleMapper 74
+  Tyndall::RenderingCxx-TestTransmittanceMapperDetail 57
+  TyndallParaView-Plugin 56
+  Tyndall::RenderingCxx-TestTransmittanceMapperSceneRules 41
+  Tyndall::RenderingCxx-TestTransmittanceMapperTransmittanceCache 40
+  Tyndall::RenderingCxx-TestTransmittanceMapperOctaves 39
+  Tyndall::RenderingCxx-TestTransmittanceMapperEmptySpace 35
+  Tyndall::RenderingCxx-TestTransmittanceMapperClipping 35
+  TyndallPython-TestPythonRendering 33
+  TyndallPython-TestPythonVDBRenderComparison 33
+  Tyndall::RenderingCxx-TestTransmittanceMapperSceneShadows 32
+  TyndallViewer-TestViewerScripted 30
+  Tyndall::RenderingCxx-TestTransmittanceMapperManyLights 28
+  TyndallBenchmark-CinematicSkyQuick 27
+  TyndallParaView-MPI 26
+  Tyndall::RenderingCxx-TestTransmittanceMapperDepthPeeling 25
+  Tyndall::ReferenceCxx-TestVolumetricPathTracer 25
+  TyndallIO-FuzzOpenVDBReader 22
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky 19
+  Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 18
+  TyndallParaView-Time 18
+  Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 17
+  Tyndall::RenderingCxx-TestTransmittanceMapperScenes 17
+  Tyndall::RenderingCxx-TestTransmittanceMapperOccluder 17
+  Tyndall::RenderingCxx-TestTransmittanceMapperBricks 15
+  TyndallBenchmark-DetailQuick 15
+  TyndallParaView-GUI 14
+  Tyndall::RenderingCxx-TestTransmittanceMapperDataTypes 13
+  Tyndall::RenderingCxx-TestTransmittanceMapperTiling 13
+  Tyndall::MediumCxx-TestTyndallDetailMedium 12
+  Tyndall::ReferenceCxx-TestVolumetricPathTracerScenes 12
+  Tyndall::RenderingCxx-TestTransmittanceMapperMethods 10
+  Tyndall::RenderingCxx-TestTransmittanceMapperFire 9
+  Tyndall::RenderingCxx-TestTransmittanceMapperToneMapping 9
+  Tyndall::RenderingCxx-TestTransmittanceMapperGeometry 8
+  TyndallBenchmark-BlendModesPeelingQuick 8
+  TyndallBenchmark-Export 7
+  TyndallViewer-TestViewerSequence 7
+  TyndallBenchmark-BlendModesQuick 6)
 
 # Left out of the sanitizer suite (seconds under the sanitizers, 2026-11-28;
 # 1112 of the suite's 1476 s of test time). The Tyndall C++ they run is run
@@ -117,6 +114,29 @@ set(tyndall_no_sanitizer_tests
   Tyndall::RenderingCxx-TestTransmittanceMapperClipping
   # 21 s: the OpenVDB reader and the wrapping (TestOpenVDBReader*, TyndallPython-TestPythonRendering)
   TyndallPython-TestPythonVDBRenderComparison)
+
+# The test drivers' own code (its scenes, checks and statistics; the code
+# under test is the modules', compiled with the build type's flags) compiles
+# at -O1 in an optimised build and at -O0 in the sanitizer build
+# (TyndallSanitizers.cmake): compile time is most of a build here, and a
+# driver's own time is small beside the renders it asks for. Measured
+# (Release flags, one source): TestOpenVDBReaderStreaming.cxx 19.0 s of CPU at
+# -O3, 12.1 s at -O1; TestTransmittanceMapperVTKScenes.cxx 4.5 s, 3.7 s. Core's
+# and Medium's drivers are left out: their tests compute exact math themselves
+# (under the sanitizers at -O0 TestTransmittanceMapMath took 39 s instead of
+# 17, TestTyndallDetailMedium 37 s instead of 21, for 5-6 s less compile).
+function (tyndall_compile_test_drivers)
+  if (TYNDALL_SANITIZE)
+    tyndall_sanitizer_compile_unoptimised(${ARGN})
+    return ()
+  endif ()
+  foreach (target IN LISTS ARGN)
+    if (TARGET "${target}")
+      target_compile_options("${target}" PRIVATE
+        "$<$<OR:$<CONFIG:Release>,$<CONFIG:RelWithDebInfo>,$<CONFIG:MinSizeRel>>:-O1>")
+    endif ()
+  endforeach ()
+endfunction ()
 
 function (tyndall_finish_tests)
   tyndall_sanitize_tests()

@@ -68,6 +68,30 @@ else ()
     "UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
 endif ()
 
+# The sanitizer build compiles code whose own run time is small beside what
+# it calls (the programs, the benchmarks, the generated Python wrappers, most
+# test drivers: tyndall_compile_test_drivers() in TyndallTestProperties.cmake)
+# at -O0 instead of the build type's -O1: 45 % less compile time
+# (TestOpenVDBReaderStreaming.cxx: 40 s -> 23 s) and nothing less checked
+# (both sanitizers instrument every optimisation level). The modules' own code
+# stays at -O1: the CPU renderers are most of the sanitizer suite's C++ time.
+# With targets: those; without: every target of the calling directory and
+# below it. Without TYNDALL_SANITIZE it does nothing.
+function (tyndall_sanitizer_compile_unoptimised)
+  if (NOT TYNDALL_SANITIZE)
+    return ()
+  endif ()
+  if (ARGN)
+    foreach (target IN LISTS ARGN)
+      if (TARGET "${target}")
+        target_compile_options("${target}" PRIVATE -O0)
+      endif ()
+    endforeach ()
+  else ()
+    set_property(DIRECTORY APPEND PROPERTY COMPILE_OPTIONS -O0)
+  endif ()
+endfunction ()
+
 # Gives the tests of the calling directory the sanitizers' environment: the
 # options above and LD_PRELOAD of the compiler's libasan (Python is not
 # instrumented: the runtime must come first for the instrumented modules to

@@ -39,6 +39,12 @@ import sys
 # Commands that only move the camera: they must never rebuild a map.
 NAVIGATION = ("orbit", "pan", "zoom")
 
+# The transmittance cache of the modes that compare the viewer with
+# tyndall-render, both given it: 32 texels on the box's longest side instead
+# of the default 256, which llvmpipe takes about 2 s to build for each map
+# build (the CLI tests do the same: Testing/CLI/CMakeLists.txt).
+CACHE = ["--cache-size", "32"]
+
 
 def run(command, env=None, timeout=600):
     print("running:", " ".join(command), flush=True)
@@ -191,7 +197,7 @@ def sequence_mode(args):
         for name in ("render_%d.png" % f, "viewer_%d.png" % f):
             if os.path.exists(out(name)):
                 os.remove(out(name))
-    result = run([args.render, "-q", "-s"] + size + ["--sequence", str(first), str(last),
+    result = run([args.render, "-q", "-s"] + size + CACHE + ["--sequence", str(first), str(last),
                   "-o", out("render_%d.png"), args.input])
     if result.returncode != 0:
         return ["tyndall-render exited with %d" % result.returncode]
@@ -204,7 +210,7 @@ def sequence_mode(args):
     events += ["key right", "screenshot " + out("viewer_wrapped.png"),
                "key left", "screenshot " + out("viewer_back.png"),
                "key space", "frames %d" % (len(frames) + 1), "key space", "quit"]
-    result = run([args.viewer, "-s"] + size + ["--sequence", str(first), str(last),
+    result = run([args.viewer, "-s"] + size + CACHE + ["--sequence", str(first), str(last),
                   args.input, "--events", "; ".join(events)])
     if result.returncode != 0:
         failures.append("the viewer exited with %d" % result.returncode)
@@ -238,7 +244,7 @@ def sequence_mode(args):
 
     # A frame that cannot be read: skipped with a warning, the one before shown.
     missing = last + 1
-    result = run([args.viewer, "-s"] + size + ["--sequence", str(first), str(missing),
+    result = run([args.viewer, "-s"] + size + CACHE + ["--sequence", str(first), str(missing),
                   args.input, "--events", "hud off; key left; quit"])
     log = [line.split() for line in result.stdout.splitlines() if line.startswith("frame ")]
     if result.returncode != 0:
@@ -259,6 +265,7 @@ def key_against_render(args, common, option, values, key, presses, what):
     failures = []
     os.makedirs(args.output_dir, exist_ok=True)
     size = [str(args.size[0]), str(args.size[1])]
+    common = CACHE + common
     out = lambda name: os.path.join(args.output_dir, name)
     for state in values:
         for name in ("render_%s.png" % state, "viewer_%s.png" % state):
