@@ -23,9 +23,9 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 156
   Tyndall::RenderingCxx-TestTransmittanceMapperReference 117
-  Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 117
+  Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 80
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77
-  Tyndall::RenderingCxx-TestTransmittanceParticleMapper 74
+  Tyndall::RenderingCxx-TestTransmittanceParticleMapper 80
   Tyndall::RenderingCxx-TestTransmittanceMapperDetail 57
   TyndallParaView-Plugin 56
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneRules 41
@@ -35,7 +35,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperClipping 35
   TyndallPython-TestPythonRendering 33
   TyndallPython-TestPythonVDBRenderComparison 33
-  Tyndall::RenderingCxx-TestTransmittanceMapperSceneShadows 32
+  Tyndall::RenderingCxx-TestTransmittanceMapperSceneShadows 35
   TyndallViewer-TestViewerScripted 30
   Tyndall::RenderingCxx-TestTransmittanceMapperManyLights 28
   TyndallBenchmark-CinematicSkyQuick 27
@@ -126,6 +126,9 @@ set(tyndall_no_sanitizer_tests
 # (under the sanitizers at -O0 TestTransmittanceMapMath took 39 s instead of
 # 17, TestTyndallDetailMedium 37 s instead of 21, for 5-6 s less compile).
 function (tyndall_compile_test_drivers)
+  if (NOT ARGN)
+    message(FATAL_ERROR "tyndall_compile_test_drivers: name the drivers")
+  endif ()
   if (TYNDALL_SANITIZE)
     tyndall_sanitizer_compile_unoptimised(${ARGN})
     return ()

@@ -71,7 +71,7 @@ endif ()
 # The sanitizer build compiles code whose own run time is small beside what
 # it calls (the programs, the benchmarks, the generated Python wrappers, most
 # test drivers: tyndall_compile_test_drivers() in TyndallTestProperties.cmake)
-# at -O0 instead of the build type's -O1: 45 % less compile time
+# at -O0 instead of the build type's -O1: less compile time
 # (TestOpenVDBReaderStreaming.cxx: 40 s -> 23 s) and nothing less checked
 # (both sanitizers instrument every optimisation level). The modules' own code
 # stays at -O1: the CPU renderers are most of the sanitizer suite's C++ time.
