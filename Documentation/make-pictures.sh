@@ -33,7 +33,8 @@ PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/shaded_ct_picture.py" "$images"
 
-# A shaded CT path traced: the map-based frame | the GPU's paths | the CPU tracer's (rendering-model.md).
+# A shaded CT path traced: the map-based frame | the GPU's paths | the CPU tracer's; and lit
+# by a sky alone: the map-based frame with the sky's mean | its 4 lights | the paths (rendering-model.md).
 PYTHONPATH="$build/lib/python3/dist-packages" run /usr/bin/python3 \
   "$root/Documentation/scripts/shaded_ct_paths_picture.py" "$images"
 

@@ -43,7 +43,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperDepthPeeling 25
   Tyndall::ReferenceCxx-TestVolumetricPathTracer 25
   TyndallIO-FuzzOpenVDBReader 22
-  Tyndall::RenderingCxx-TestTransmittanceMapperSky 19
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky 21
   Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 18
   TyndallParaView-Time 18
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 17

@@ -4,7 +4,10 @@ vtkVolumeProperty with Shade on, one scene light from the upper left (the
 view of shaded_ct_picture.py), side by side: the mapper's map-based frame
 (VTK's shading, shadowed by the maps), its paths on the GPU and
 vtkVolumetricPathTracer's (128 samples per pixel each, 8 bounces, tracked
-shadows). shaded-ct-paths.png.
+shadows). shaded-ct-paths.png. And the same head lit by a gradient sky
+alone (the light off; dim brown straight down to blue straight up): the
+map-based frame with the sky's mean as diffuse light | with the sky's 4
+lights (the default) | the GPU's paths. shaded-ct-sky.png.
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
         Documentation/scripts/shaded_ct_paths_picture.py Documentation/images
@@ -54,29 +57,56 @@ volume.SetMapper(mapper)
 volume.SetProperty(prop)
 window, renderer = ct_head_window(volume, SIZE)
 
+
+
+def paths(samples):
+    """The GPU's paths from a new start until they have `samples` per pixel."""
+    mapper.PathTracingOn()
+    mapper.SetPathTraceSamplesPerPixel(samples)
+    mapper.SetPathTraceSamplesPerFrame(16)
+    mapper.SetPathTraceMaximumBounces(BOUNCES)
+    mapper.SetPathTraceShadowsToTracked()
+    window.Render()  # the map-based frame; the paths start with the next
+    for _ in range(4 * samples):
+        window.Render()
+        if mapper.GetLastPathTraceSamples() >= samples:
+            break
+    picture = grab(window)
+    mapper.PathTracingOff()
+    return picture
+
+
+def write(row, name):
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(row.GetOutputPort())
+    writer.SetFileName(sys.argv[1] + "/" + name)
+    writer.Write()
+
+
 row = vtkImageAppend()
 row.SetAppendAxis(0)
 mapper.PathTracingOff()
 row.AddInputData(grab(window))
-mapper.PathTracingOn()
-mapper.SetPathTraceSamplesPerPixel(SAMPLES)
-mapper.SetPathTraceSamplesPerFrame(16)
-mapper.SetPathTraceMaximumBounces(BOUNCES)
-mapper.SetPathTraceShadowsToTracked()
-window.Render()  # the map-based frame; the paths start with the next
-for _ in range(4 * SAMPLES):
-    window.Render()
-    if mapper.GetLastPathTraceSamples() >= SAMPLES:
-        break
-row.AddInputData(grab(window))
+row.AddInputData(paths(SAMPLES))
 tracer = vtkVolumetricPathTracer()
 tracer.SetSamplesPerPixel(SAMPLES)
 tracer.SetMaximumBounces(BOUNCES)
 tracer.SetDistanceSamplingToDeltaTracking()
 tracer.Render(renderer, volume, SIZE, SIZE)
 row.AddInputData(tracer.Composite())
-writer = vtkPNGWriter()
-writer.SetInputConnection(row.GetOutputPort())
-writer.SetFileName(sys.argv[1] + "/shaded-ct-paths.png")
-writer.Write()
+write(row, "shaded-ct-paths.png")
 print("GPU %d spp, CPU %.1f s" % (mapper.GetLastPathTraceSamples(), tracer.GetLastRenderTime()))
+
+# The sky alone: a gradient from dim brown straight down to blue straight up.
+renderer.GetLights().GetItemAsObject(0).SwitchOff()
+renderer.GradientEnvironmentalBGOn()
+renderer.SetEnvironmentalBG(0.05, 0.04, 0.03)
+renderer.SetEnvironmentalBG2(0.15, 0.22, 0.4)
+sky = vtkImageAppend()
+sky.SetAppendAxis(0)
+mapper.SetSkyLightDirections(0)
+sky.AddInputData(grab(window))
+mapper.SetSkyLightDirections(4)
+sky.AddInputData(grab(window))
+sky.AddInputData(paths(SAMPLES))
+write(sky, "shaded-ct-sky.png")

@@ -213,11 +213,21 @@ void vtkTyndallSceneReader::UpdateSkyLights(int count)
 //------------------------------------------------------------------------------
 void vtkTyndallSceneReader::GetMapAmbient(double ambient[3]) const
 {
-  const double* mean = this->GetEnvironment().GetMeanRadiance();
+  this->GetShadingSkyMean(ambient); // the sky's mean where no sky light carries it
+  for (int c = 0; c < 3; ++c)
+  {
+    ambient[c] += this->Medium->GetParameters().AmbientIntensity;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneReader::GetShadingSkyMean(double mean[3]) const
+{
+  const double* sky = this->GetEnvironment().GetMeanRadiance();
   const bool meanAsAmbient = this->GetSkyLights().empty();
   for (int c = 0; c < 3; ++c)
   {
-    ambient[c] = this->Medium->GetParameters().AmbientIntensity + (meanAsAmbient ? mean[c] : 0.0);
+    mean[c] = meanAsAmbient ? sky[c] : 0.0;
   }
 }
 

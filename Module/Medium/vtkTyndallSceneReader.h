@@ -135,8 +135,8 @@ public:
    * The sky as directional lights for the map-based frame and its CPU
    * twin (vtkTyndallSkyLights): at most the mapper's SkyLightDirections, in
    * the slots GetLights() leaves of MaximumNumberOfLights; empty without a
-   * sky (GetEnvironment() black). They light the medium's scattering only;
-   * the path tracers sample the sky instead.
+   * sky (GetEnvironment() black). They light the medium's scattering and
+   * gradient shading; the path tracers sample the sky instead.
    */
   const std::vector<vtkTyndallLight>& GetSkyLights() const
   {
@@ -151,6 +151,14 @@ public:
    * alone.
    */
   void GetMapAmbient(double ambient[3]) const;
+
+  /**
+   * The sky's mean radiance per channel that the map-based frame's gradient
+   * shading takes as light from every direction
+   * (vtkTyndallShading::AddSkyMean()): where no sky light carries the sky,
+   * as GetMapAmbient() adds it; else 0 (the sky's lights light the shading).
+   */
+  void GetShadingSkyMean(double mean[3]) const;
 
   /// The most guests a medium is lit through (the shaders' guest arrays).
   static constexpr int MaximumNumberOfGuests = 3;

@@ -1,5 +1,6 @@
 #include "vtkTyndallShading.h"
 
+#include "vtkMath.h"
 #include "vtkParticipatingMediumMapper.h"
 #include "vtkParticipatingMediumProperty.h"
 #include "vtkTyndallProjection.h"
@@ -71,6 +72,18 @@ void vtkTyndallShading::AddLight(const double n[3], const double l[3], const dou
   {
     sums.Surface[i] += T[i] * E[i] * (k[1] * nl * color[i] + specular);
     sums.Volume[i] += T[i] * E[i] * k[1] * color[i];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallShading::AddSkyMean(
+  const double color[3], const double m[3], Sums& sums, int c) const
+{
+  const double kd = this->Coefficients[c][1];
+  for (int i = 0; i < 3; ++i)
+  {
+    sums.Surface[i] += 2.0 * vtkMath::Pi() * kd * m[i] * color[i];
+    sums.Volume[i] += 4.0 * vtkMath::Pi() * kd * m[i] * color[i];
   }
 }
 

@@ -143,6 +143,17 @@ public:
     const double E[3], const double T[3], Sums& sums, int c = 0) const;
 
   /**
+   * Adds a sky of mean radiance m as light from every direction, unshadowed
+   * (the map-based frame's sky without its directional lights:
+   * vtkTyndallSceneReader::GetShadingSkyMean()): the two-sided diffuse
+   * lobe's Kd c 2 pi m to S (|n.l| over the sphere is 2 pi; a constant sky's
+   * exact light) and Kd c 4 pi m to V (the sky's light, no cosine), as the
+   * sky's directional lights, whose colours add up to 4 pi m, would add
+   * them. No specular term.
+   */
+  void AddSkyMean(const double color[3], const double m[3], Sums& sums, int c = 0) const;
+
+  /**
    * The blending weight k of a sample of gradient magnitude G (per world
    * unit: |grad s|) and extinction sigma, for scalars over `range` (s_max -
    * s_min) and the smallest world spacing h (the class description); 0

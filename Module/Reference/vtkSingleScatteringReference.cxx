@@ -260,12 +260,14 @@ private:
       }
     }
     const double v[3] = { -w[0], -w[1], -w[2] };
-    for (const Scene::LightSource& light : s.Lights)
+    // The renderer's lights, then the sky's (its directional lights, or its
+    // mean from every direction).
+    auto addLight = [&](const Scene::LightSource& light)
     {
       double l[3], factor, tMax;
       if (!s.LightGeometry(light, x, l, factor, tMax))
       {
-        continue;
+        return;
       }
       double T[3];
       this->SurfaceTransmittance(grid, x, l, tMax, T);
@@ -275,10 +277,13 @@ private:
       {
         shading.AddLight(n[i], light.Headlight ? v : l, v, colors[i], E, T, sums[i], i);
       }
-    }
+    };
+    std::for_each(s.Lights.begin(), s.Lights.end(), addLight);
+    std::for_each(s.SkyLights.begin(), s.SkyLights.end(), addLight);
     J[0] = J[1] = J[2] = 0.0;
     for (int i = 0; i < parts; ++i)
     {
+      shading.AddSkyMean(colors[i], s.ShadingSkyMean, sums[i], i);
       double rgb[3] = { sums[i].Surface[0], sums[i].Surface[1], sums[i].Surface[2] };
       if (!additive)
       {

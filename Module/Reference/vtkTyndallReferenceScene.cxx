@@ -202,6 +202,7 @@ void vtkTyndallReferenceScene::SetUpLights(const vtkTyndallSceneReader& reader)
   }
   // The sky: sampled (the path tracer), or the map-based frame's lights and ambient term.
   this->SkyLights.clear();
+  std::fill(this->ShadingSkyMean, this->ShadingSkyMean + 3, 0.0);
   if (this->SampleSky)
   {
     const double ambient = this->Parameters->AmbientIntensity;
@@ -213,6 +214,7 @@ void vtkTyndallReferenceScene::SetUpLights(const vtkTyndallSceneReader& reader)
     this->SkyLights.push_back(ToSource(light));
   }
   reader.GetMapAmbient(this->Ambient);
+  reader.GetShadingSkyMean(this->ShadingSkyMean);
 }
 
 //------------------------------------------------------------------------------

@@ -113,10 +113,16 @@ public:
   bool SampleSky = false;
   /**
    * The sky's directional lights (vtkTyndallSceneReader::GetSkyLights();
-   * none with SampleSky): AddInScattering() adds them after Lights; gradient
-   * shading does not see them.
+   * none with SampleSky): AddInScattering() adds them after Lights, and
+   * gradient shading lights with them too.
    */
   std::vector<LightSource> SkyLights;
+  /**
+   * The sky's mean radiance per channel that gradient shading takes as light
+   * from every direction (vtkTyndallSceneReader::GetShadingSkyMean(): where
+   * no sky light carries the sky); 0 with SampleSky.
+   */
+  double ShadingSkyMean[3] = { 0.0, 0.0, 0.0 };
   /**
    * The ambient radiance per channel Source() adds: the map-based frame's
    * (vtkTyndallSceneReader::GetMapAmbient()), or with SampleSky the

@@ -155,6 +155,7 @@ void vtkTransmittanceFrame::Prepare(vtkRenderer* renderer, vtkOpenGLRenderWindow
   lights.insert(lights.end(), skyLights.begin(), skyLights.end());
   this->SkyLights = static_cast<int>(skyLights.size());
   scene.GetMapAmbient(this->MapAmbient);
+  scene.GetShadingSkyMean(this->ShadingSkyMean);
   this->Lights.resize(lights.size());
   for (size_t l = 0; l < lights.size(); ++l)
   {
@@ -584,6 +585,15 @@ void vtkTransmittanceFrame::SetSkyUniforms(vtkShaderProgram* program, bool sampl
   }
   program->SetUniform3f("ambient", ambient);
   program->SetUniformi("numberOfSkyLights", sampled ? 0 : this->SkyLights);
+  if (this->Medium->GetShading().Enabled())
+  {
+    float mean[3]; // declared only by the shading variant
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[c] = sampled ? 0.0f : static_cast<float>(this->ShadingSkyMean[c]);
+    }
+    program->SetUniform3f("shadingSkyMean", mean);
+  }
 }
 
 //------------------------------------------------------------------------------

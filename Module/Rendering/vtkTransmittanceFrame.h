@@ -145,9 +145,10 @@ public:
 
   /**
    * Sets the sky's terms of the camera rays' light (vtkTransmittanceRayCastFS.
-   * glsl's ambient and numberOfSkyLights): the map-based frame's, MapAmbient
-   * and the SkyLights lights; or, `sampled` (the path tracer, which samples
-   * the sky), the medium's AmbientIntensity and no sky light.
+   * glsl's ambient and numberOfSkyLights, and gradient shading's
+   * shadingSkyMean): the map-based frame's, MapAmbient, the SkyLights lights
+   * and ShadingSkyMean; or, `sampled` (the path tracer, which samples the
+   * sky), the medium's AmbientIntensity and no sky light.
    */
   void SetSkyUniforms(vtkShaderProgram* program, bool sampled) const;
 
@@ -274,6 +275,8 @@ public:
   const vtkTyndallEnvironment* Environment = nullptr;
   /// The map-based frame's ambient radiance (vtkTyndallSceneReader::GetMapAmbient()).
   double MapAmbient[3] = { 0.0, 0.0, 0.0 };
+  /// The sky's mean the map-based frame's gradient shading sees (GetShadingSkyMean()).
+  double ShadingSkyMean[3] = { 0.0, 0.0, 0.0 };
   Settings Integrator;
   /**
    * Whether the frame buffer holds the renderer's background under the

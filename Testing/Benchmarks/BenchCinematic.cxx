@@ -11,7 +11,7 @@
 //    samples per pixel (default 1024), another seed; and its PSNR against the
 //    CPU tracer's at --cpu-spp (default 256);
 // 2. the map-based frame (AdaptiveETM, single scattering: what the mapper
-//    draws while anything moves): its time and its PSNR against the
+//    draws while anything moves): its time (best of 3) and its PSNR against the
 //    converged picture (under a sky, the sky's two models, each also with
 //    the property's default two octaves); its time with the display transform (ACES, sRGB)
 //    against linear, alternated, the best of five each; and at the paths'
@@ -88,6 +88,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
 
 namespace
@@ -334,14 +335,18 @@ bool Run(Scene& s, const Options& o)
     for (int m = o.Sky ? 0 : 1; m < 2; ++m)
     {
       s.Mapper->SetSkyLightDirections(skyModels[m]);
-      s.Window->Render();
+      s.Window->Render(); // the maps
       s.Finish();
-      const auto mapStart = std::chrono::steady_clock::now();
-      s.Window->Render();
-      s.Finish();
-      const double mapSeconds = Seconds(mapStart);
-      std::printf("  map-based frame (AdaptiveETM, %s%s): %.3f s, %.1f dB against the converged "
-                  "picture\n",
+      double mapSeconds = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto mapStart = std::chrono::steady_clock::now();
+        s.Window->Render();
+        s.Finish();
+        mapSeconds = std::min(mapSeconds, Seconds(mapStart));
+      }
+      std::printf("  map-based frame (AdaptiveETM, %s%s): %.3f s (best of 3), %.1f dB against the "
+                  "converged picture\n",
         octaves == 1 ? "single scattering" : "2 octaves",
         !o.Sky ? ""
                : (skyModels[m] == 0 ? ", the sky's mean as ambient light" : ", the sky's lights"),

@@ -29,11 +29,17 @@
 //    picture is the CPU reference's (40 dB or more; the reference always
 //    shadows), and the maps' (isotropic) darker than the mean's (unshadowed
 //    lights are not); the sky's light in both modes is printed
-//    (how alike); a new sky restarts the paths.
+//    (how alike); a new sky restarts the paths;
+// 4. a shaded CT's map-based frame (VTK's gradient shading) under a sky
+//    alone: its lights shade it as in the CPU reference (40 dB or more),
+//    its mean is diffuse light (a larger Ambient by Kd 2 pi m, on the GPU
+//    and in the reference), and the sky's share of the picture is the
+//    paths' within a factor 2.
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -324,6 +330,100 @@ void MapFrame()
 }
 }
 
+// 4. a shaded CT's map-based frame (a plain property with Shade on: VTK's
+// gradient shading), lit by a sky alone: the sky's lights shade it as
+// they do in the CPU single-scattering reference (brute force: 40 dB or
+// more), and a medium's Shade (its surface term) alike; the sky's mean from every direction (SkyLightDirections 0) is a
+// grey sky m's diffuse light Kd c 2 pi m, the picture of an Ambient larger
+// by Kd 2 pi m on the GPU and in the reference; and the sky's share of
+// the picture (over the one under a black sky) in the map-based frame
+// against the paths' (64 spp), within a factor 2 of it (0.69: one
+// bounce against all of them; 0 before the sky lit the shading).
+void ShadedMapFrame()
+{
+  const int size = 32;
+  Scene scene(tyndall_test::MakeDenseMedium(32), 0.5, size);
+  vtkSmartPointer<vtkVolumeProperty> property = tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9);
+  scene.Volume->SetProperty(property);
+  scene.Mapper->SetTransmittanceCacheSize(kCacheSize);
+  scene.Mapper->PathTracingOff();
+  scene.Renderer->RemoveAllLights();
+  scene.Renderer->AutomaticLightCreationOff();
+  scene.Renderer->SetBackground(0.2, 0.4, 0.6);
+  auto gradientSky = [&](bool on)
+  {
+    scene.Renderer->SetGradientEnvironmentalBG(on);
+    scene.Renderer->SetEnvironmentalBG(0.05 * on, 0.04 * on, 0.03 * on);
+    scene.Renderer->SetEnvironmentalBG2(0.15 * on, 0.22 * on, 0.4 * on);
+  };
+
+  // The sky's lights: the GPU's brute force against the CPU reference.
+  vtkNew<vtkSingleScatteringReference> reference;
+  scene.Mapper->SetTransmittanceMethodToBruteForce();
+  gradientSky(true);
+  scene.Window->Render();
+  reference->Render(scene.Renderer, scene.Volume, size, size);
+  const double psnr = tyndall_test::PSNR(scene.Picture(), reference->Composite());
+  std::cout << "A shaded CT under the sky's lights, brute force against the CPU reference: " << psnr
+            << " dB" << std::endl;
+  Check(psnr >= 40.0, "a shaded CT's map-based frame: the sky's lights as the CPU reference's");
+  // A medium's Shade: its surface term lit by them too.
+  scene.Volume->SetProperty(scene.Property);
+  scene.Property->ShadeOn();
+  scene.Window->Render();
+  reference->Render(scene.Renderer, scene.Volume, size, size);
+  const double additive = tyndall_test::PSNR(scene.Picture(), reference->Composite());
+  std::cout << "A medium's Shade under the sky's lights, brute force against the CPU reference: "
+            << additive << " dB" << std::endl;
+  Check(additive >= 40.0, "a medium's Shade: the sky's lights as the CPU reference's");
+  scene.Property->ShadeOff();
+  scene.Volume->SetProperty(property);
+
+  // The sky's mean: a larger Ambient. Kd 2 pi m of a grey sky m.
+  scene.Mapper->SetSkyLightDirections(0);
+  const double m = 0.05;
+  const double ka = property->GetAmbient();
+  gradientSky(false);
+  scene.Renderer->SetEnvironmentalBG(m, m, m);
+  scene.Window->Render();
+  vtkSmartPointer<vtkImageData> withMean = scene.Picture();
+  vtkNew<vtkImageData> referenceMean;
+  referenceMean->DeepCopy(reference->Render(scene.Renderer, scene.Volume, size, size));
+  scene.Renderer->SetEnvironmentalBG(0.0, 0.0, 0.0);
+  property->SetAmbient(ka + 2.0 * vtkMath::Pi() * property->GetDiffuse() * m);
+  scene.Window->Render();
+  const double meanPsnr = tyndall_test::PSNR(withMean, scene.Picture());
+  double largest, sum;
+  Compare(referenceMean, reference->Render(scene.Renderer, scene.Volume, size, size), largest, sum);
+  property->SetAmbient(ka);
+  std::cout << "A shaded CT under a constant sky's mean against a larger Ambient: " << meanPsnr
+            << " dB on the GPU, the reference's largest difference " << largest << std::endl;
+  Check(meanPsnr >= 60.0, "a shaded CT's map-based frame: the sky's mean is diffuse light");
+  // (The reference's radiance is stored as floats: 1e-6 is their rounding.)
+  Check(largest <= 1e-6 && sum > 0.0,
+    "the single-scattering reference: a shaded CT's sky mean is diffuse light");
+
+  // How alike the two modes light it: the sky's share of each picture.
+  scene.Mapper->SetSkyLightDirections(4);
+  scene.Mapper->SetTransmittanceMethodToAdaptiveETM();
+  double maps[2], paths[2];
+  for (int lit = 0; lit < 2; ++lit)
+  {
+    gradientSky(lit != 0);
+    scene.Mapper->PathTracingOff();
+    scene.Window->Render();
+    maps[lit] = Sum(scene.Picture());
+    scene.Trace(64);
+    paths[lit] = Sum(scene.Picture());
+  }
+  const double share = (maps[1] - maps[0]) / (paths[1] - paths[0]);
+  std::cout << "A shaded CT, the sky's share of the map-based frame over the paths' (64 spp): "
+            << share << std::endl;
+  // (Single scattering against every bounce: the maps' share is the smaller.)
+  Check(paths[1] > paths[0] && share > 0.5 && share < 2.0,
+    "a shaded CT: the map-based frame and the paths light the sky alike");
+}
+
 int TestTransmittanceMapperSky(int, char*[])
 {
   Furnace(false);
@@ -362,5 +462,6 @@ int TestTransmittanceMapperSky(int, char*[])
     },
     true);
   MapFrame();
+  ShadedMapFrame();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

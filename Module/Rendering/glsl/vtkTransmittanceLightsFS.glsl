@@ -5,7 +5,7 @@
 // a plain property's gradient shading (vtkTyndallShading, its CPU twin).
 // vtkTransmittanceFrame::SetLightUniforms() sets them.
 uniform int numberOfLights;    // the renderer's lights, 0 to numberOfLights - 1
-uniform int numberOfSkyLights; // the sky's after them (vtkTyndallSkyLights): scattering only
+uniform int numberOfSkyLights; // the sky's after them (vtkTyndallSkyLights): scattering and shading
 uniform vec3 lightPosition[TYNDALL_MAX_LIGHTS];     // positional lights
 uniform vec3 lightDirection[TYNDALL_MAX_LIGHTS];    // direction the light travels
 uniform vec3 lightAttenuation[TYNDALL_MAX_LIGHTS];
@@ -43,6 +43,18 @@ bool tyndallLightAt(int l, vec3 x, inout vec3 E, out vec3 toLight, out float dis
 uniform vec4 shadingCoefficients[4]; // per component: Ka, Kd, Ks, specular power
 uniform vec3 lightColor[TYNDALL_MAX_LIGHTS];
 uniform int lightHeadlight[TYNDALL_MAX_LIGHTS];
+// The sky's mean radiance m as light from every direction, where no sky
+// light carries the sky (vtkTyndallSceneReader::GetShadingSkyMean()); else 0.
+uniform vec3 shadingSkyMean;
+
+// The sky's mean as light from every direction, unshadowed, for the
+// coefficients k (vtkTyndallShading::AddSkyMean(), its CPU twin): Kd c 2 pi m
+// for the two-sided diffuse lobe (|n.s| over the sphere: 2 pi); the
+// volumetric term's (no cosine) is twice that.
+vec3 tyndallSkyMeanDiffuse(vec4 k, vec3 color)
+{
+  return (2.0 * TYNDALL_PI * k.y) * shadingSkyMean * color;
+}
 
 // Light's term Kd |n.s| c + Ks |n.h|^p with coefficients k; the base of pow
 // kept positive: pow(0, 0) is undefined in GLSL, 1 on the CPU.

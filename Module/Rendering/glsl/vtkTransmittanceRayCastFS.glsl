@@ -315,7 +315,8 @@ vec3 inScattering(vec3 x, vec3 w, vec3 albedo)
 // Ka c + sum_l T_l E_l (Kd |n.l| c + Ks |n.h|^p), clamped to [0, 1]; n the
 // scalar's unit gradient at normalAt (0 where it is 0), E_l the light's
 // colour (intensity x colour, attenuated) at x, a headlight's direction
-// along the ray.
+// along the ray. The lights: the renderer's and the sky's (its lights, or
+// its mean from every direction: tyndallSkyMeanDiffuse()).
 // (shadingCoefficients, lightColor, lightHeadlight: vtkTransmittanceLightsFS.glsl.)
 
 // Light l at the shaded sample x (view direction -v): false where it does
@@ -372,15 +373,18 @@ vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color, float sigm
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  // The surface term and (blending) the volumetric one (isotropic, no normal).
-  vec3 surface = shadingCoefficients[0].x * color;
+  // The surface term and (blending) the volumetric one (isotropic, no normal),
+  // with the sky's mean where it has no lights.
+  vec3 sky = tyndallSkyMeanDiffuse(shadingCoefficients[0], color);
+  vec3 surface = shadingCoefficients[0].x * color + sky;
 #if TYNDALL_SCATTERING_BLEND
-  vec3 volume = surface;
+  vec3 volume = surface + sky;
 #endif
-  // tyndallShadingLight() written out: called here, the common shaded
-  // frame took 7 % longer on llvmpipe (BenchBlendModes: 801-813 ms against
-  // 730 ms written out, the same as before the helper).
-  for (int l = 0; l < numberOfLights; ++l)
+  // The renderer's lights and the sky's. tyndallShadingLight() written out:
+  // called here, the common shaded frame took 7 % longer on llvmpipe
+  // (BenchBlendModes: 801-813 ms against 730 ms written out, the same as
+  // before the helper).
+  for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
     vec3 toLight;
     float distance;
@@ -418,8 +422,8 @@ vec3 tyndallSurfaceTerm(vec3 x, vec3 normalAt, vec3 w, vec3 color)
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  vec3 surface = vec3(0.0);
-  for (int l = 0; l < numberOfLights; ++l)
+  vec3 surface = tyndallSkyMeanDiffuse(shadingCoefficients[0], color);
+  for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
     vec3 TE, s, h;
     if (tyndallShadingLight(l, x, v, TE, s, h))
@@ -445,10 +449,11 @@ vec3 tyndallComponentShading(
   mat4x3 volume;
   for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
   {
-    surface[c] = shadingCoefficients[c].x * colors[c];
-    volume[c] = surface[c];
+    vec3 sky = tyndallSkyMeanDiffuse(shadingCoefficients[c], colors[c]);
+    surface[c] = shadingCoefficients[c].x * colors[c] + sky;
+    volume[c] = surface[c] + sky;
   }
-  for (int l = 0; l < numberOfLights; ++l)
+  for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
     vec3 TE, s, h;
     if (tyndallShadingLight(l, x, v, TE, s, h))
