@@ -12,6 +12,8 @@
 #include "vtkTransmittanceShaderSource.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkTransmittanceAccumulationPass);
 
 //------------------------------------------------------------------------------
@@ -95,7 +97,7 @@ vtkShaderProgram* vtkTransmittanceAccumulationPass::CompositeProgram(
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame& frame,
   vtkTextureObject* image, vtkTextureObject* opacity, int width, int height, int historyFrames,
-  vtkObject* reporter)
+  int samples, vtkObject* reporter)
 {
   vtkTextureObject* old = this->History;
   vtkTextureObject* oldOpacity = this->HistoryOpacity;
@@ -124,12 +126,16 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
   vtkOpenGLState* state = frame.State;
   vtkTransmittanceOffscreenDraw offscreen(state, this->Framebuffer, width, height);
   vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-  // history = image / (n + 1) + history * n / (n + 1): the mean of n + 1
-  // frames; each channel's opacity image beside it alike.
+  // history = image s / (n + s) + history n / (n + s): the mean of the n
+  // samples before it and the image's s; each channel's opacity image beside
+  // it alike.
+  samples = std::max(samples, 1);
+  const int before = historyFrames > 0 ? this->HistorySamples : 0;
   if (historyFrames > 0)
   {
     state->vtkglEnable(GL_BLEND);
-    glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(historyFrames + 1));
+    glBlendColor(0.0f, 0.0f, 0.0f,
+      static_cast<float>(static_cast<double>(samples) / (static_cast<double>(before) + samples)));
     state->vtkglBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_CONSTANT_ALPHA,
       GL_ONE_MINUS_CONSTANT_ALPHA);
   }
@@ -160,13 +166,14 @@ bool vtkTransmittanceAccumulationPass::AddToHistory(const vtkTransmittanceFrame&
   }
   glBlendColor(0.0f, 0.0f, 0.0f, 0.0f); // GL's default; VTK does not track it
   this->HistoryFrames = historyFrames + 1;
+  this->HistorySamples = before + samples;
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame,
   const int viewport[4], int width, int height, int passes, const DrawFunction& draw,
-  vtkObject* reporter, int historyFrames, bool chromatic, bool composite)
+  vtkObject* reporter, int historyFrames, bool chromatic, bool composite, int samples)
 {
   this->Result = nullptr;
   this->ResultOpacity = nullptr;
@@ -227,7 +234,8 @@ bool vtkTransmittanceAccumulationPass::Render(const vtkTransmittanceFrame& frame
     this->HistoryFrames = 0;
     return !composite || this->Composite(frame, result, opacity, upscaled, reporter);
   }
-  return this->AddToHistory(frame, result, opacity, width, height, historyFrames, reporter) &&
+  return this->AddToHistory(
+           frame, result, opacity, width, height, historyFrames, samples, reporter) &&
     (!composite ||
       this->Composite(frame, this->History, this->GetHistoryOpacity(), upscaled, reporter));
 }
@@ -368,4 +376,5 @@ void vtkTransmittanceAccumulationPass::PrintSelf(ostream& os, vtkIndent indent)
                : std::string("none"))
      << "\n";
   os << indent << "HistoryFrames: " << this->HistoryFrames << "\n";
+  os << indent << "HistorySamples: " << this->GetHistorySamples() << "\n";
 }

@@ -70,17 +70,19 @@ public:
   /**
    * Runs `passes` passes into width x height images and composites the
    * result over `viewport` (x, y, width, height in window pixels); with
-   * `historyFrames` >= 0, composites the mean of the result and the
-   * `historyFrames` results before it instead (a history of another size
-   * restarts at this frame). `chromatic`: the passes draw a second image of
-   * per-channel opacity (then `historyFrames` must be negative). With
+   * `historyFrames` >= 0 (0, or the last GetHistoryFrames(): the mean goes
+   * on), composites the mean of the result and the `historyFrames` results
+   * before it instead (a history of another size restarts at this frame),
+   * each result weighed by its `samples` (the mean of every sample when each
+   * result is the mean of its own). `chromatic`: the passes draw a second
+   * image of per-channel opacity, averaged beside the first. With
    * `composite` false nothing is composited: the result is kept in
    * GetResult() (and the mean in GetHistory()). False (with an error through
    * `reporter`) when the images or their framebuffer cannot be made.
    */
   bool Render(const vtkTransmittanceFrame& frame, const int viewport[4], int width, int height,
     int passes, const DrawFunction& draw, vtkObject* reporter, int historyFrames = -1,
-    bool chromatic = false, bool composite = true);
+    bool chromatic = false, bool composite = true, int samples = 1);
 
   /**
    * The last Render()'s image (premultiplied radiance, alpha the opacity);
@@ -99,6 +101,9 @@ public:
 
   /// Frames in the running average after the last Render() (0: no history kept).
   int GetHistoryFrames() const { return this->HistoryFrames; }
+
+  /// Their samples (Render()'s `samples` summed over them; 0: no history kept).
+  int GetHistorySamples() const { return this->HistoryFrames > 0 ? this->HistorySamples : 0; }
 
   /**
    * Composites the running average as it stands over the renderer's
@@ -166,9 +171,10 @@ private:
 
   /// The texture-copy program, bound; nullptr (with an error) when it does not compile.
   vtkShaderProgram* CompositeProgram(const vtkTransmittanceFrame& frame, vtkObject* reporter);
-  /// Adds `image` (and `opacity`, with a coloured extinction) to the running average.
+  /// Adds `image` (and `opacity`, with a coloured extinction) of `samples` to the running average.
   bool AddToHistory(const vtkTransmittanceFrame& frame, vtkTextureObject* image,
-    vtkTextureObject* opacity, int width, int height, int historyFrames, vtkObject* reporter);
+    vtkTextureObject* opacity, int width, int height, int historyFrames, int samples,
+    vtkObject* reporter);
 
   vtkSmartPointer<vtkTextureObject> Images[2];
   vtkSmartPointer<vtkTextureObject> Opacities[2]; // beside Images, with a coloured extinction
@@ -176,6 +182,7 @@ private:
   // Beside History while the mean is of a coloured extinction's frames, else null.
   vtkSmartPointer<vtkTextureObject> HistoryOpacity;
   int HistoryFrames = 0;
+  int HistorySamples = 0;                    // the samples of the HistoryFrames
   vtkTextureObject* Result = nullptr;        // one of Images
   vtkTextureObject* ResultOpacity = nullptr; // beside Result, with a coloured extinction
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;

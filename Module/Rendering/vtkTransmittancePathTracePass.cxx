@@ -242,6 +242,14 @@ int vtkTransmittancePathTracePass::SamplesFor(
 }
 
 //------------------------------------------------------------------------------
+int vtkTransmittancePathTracePass::NextSamples(
+  const vtkTransmittanceFrame& frame, const Settings& settings, int historyFrames, int wanted)
+{
+  const int ramp = 1 << std::min(std::max(historyFrames, 0), 6); // SamplesPerFrame is at most 64
+  return std::max(1, std::min({ SamplesFor(frame, settings), ramp, wanted }));
+}
+
+//------------------------------------------------------------------------------
 bool vtkTransmittancePathTracePass::MayCutPaths(
   const vtkTransmittanceFrame& frame, const Settings& settings)
 {
@@ -251,7 +259,7 @@ bool vtkTransmittancePathTracePass::MayCutPaths(
 //------------------------------------------------------------------------------
 bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   const vtkTransmittanceRayCastPass::Inputs& inputs, const Settings& settings, int historyFrames,
-  vtkObject* reporter)
+  int samples, vtkObject* reporter)
 {
   vtkTransmittanceShaderSource::Variant variant =
     vtkTransmittanceRayCastPass::GetVariant(frame, inputs, false);
@@ -303,8 +311,8 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   int viewport[4];
   frame.Renderer->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   frame.SetCameraUniforms(program, inputs.Depth, false, viewport, viewport[2], viewport[3]);
-  this->LastSamplesPerFrame = SamplesFor(frame, settings);
-  program->SetUniformi("pathFrame", std::max(historyFrames, 0));
+  this->LastSamplesPerFrame = std::max(samples, 1);
+  program->SetUniformi("pathFirstSample", historyFrames > 0 ? this->GetSamples() : 0);
   program->SetUniformi("pathSeed", settings.Seed);
   program->SetUniformi("pathSamples", this->LastSamplesPerFrame);
   program->SetUniformi("pathBounces", std::max(settings.MaximumBounces, 1));
@@ -331,7 +339,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   }
   auto draw = [&](int, vtkTextureObject*, vtkTextureObject*) { this->Quad.Render(); };
   const bool drawn = this->Accumulation->Render(frame, viewport, viewport[2], viewport[3], 1, draw,
-    reporter, std::max(historyFrames, 0), chromatic, !settings.Denoise);
+    reporter, std::max(historyFrames, 0), chromatic, !settings.Denoise, this->LastSamplesPerFrame);
   ++this->MeanSerial;
   if (this->Accumulation->GetHistoryFrames() <= 1)
   {

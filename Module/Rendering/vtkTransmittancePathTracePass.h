@@ -116,16 +116,19 @@ public:
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
 
   /**
-   * Traces a frame of paths and adds it to the running mean, which it
-   * composites over the viewport; `historyFrames` frames are in the mean
-   * before it (0 starts a new mean; they must have been traced with the
-   * same settings and samples per frame). `inputs` are the camera rays'
+   * Traces a frame of `samples` paths per pixel (NextSamples()) and adds it
+   * to the running mean, weighed by them, which it composites over the
+   * viewport; `historyFrames` frames are in the mean before it (0 starts a
+   * new mean; they must have been traced with the same settings). A pixel's
+   * paths draw their random numbers by their index in the mean (from
+   * GetSamples() on), not by frame: the mean of N samples is the same
+   * picture however its frames split them. `inputs` are the camera rays'
    * (their depth, maps or cache, occluders; reduction and step unused).
    * False (with an error) when the shader does not compile or the images
    * cannot be made.
    */
   bool Render(const vtkTransmittanceFrame& frame, const vtkTransmittanceRayCastPass::Inputs& inputs,
-    const Settings& settings, int historyFrames, vtkObject* reporter);
+    const Settings& settings, int historyFrames, int samples, vtkObject* reporter);
 
   /**
    * Composites the mean as it stands (no new paths), denoised with
@@ -167,8 +170,8 @@ public:
   /// Paths per pixel the last Render() traced (0 before the first).
   int GetLastSamplesPerFrame() const { return this->LastSamplesPerFrame; }
 
-  /// The samples per pixel in the mean: GetHistoryFrames() x GetLastSamplesPerFrame().
-  int GetSamples() const { return this->GetHistoryFrames() * this->LastSamplesPerFrame; }
+  /// The samples per pixel in the mean (its frames' samples summed).
+  int GetSamples() const { return this->Accumulation->GetHistorySamples(); }
 
   /**
    * The paths per pixel a frame traces when `requested` are asked for: at
@@ -178,6 +181,17 @@ public:
    * paths would pass half of IterationBudget; at least 1.
    */
   static int SamplesFor(const vtkTransmittanceFrame& frame, const Settings& settings);
+
+  /**
+   * The paths per pixel the frame after `historyFrames` frames of a mean
+   * traces, when it still lacks `wanted`: 1 at its first frame, twice the
+   * frame before's at each next (1, 2, 4, ...: the first picture of paths
+   * after a change comes soonest, and the denoised one with it) up to
+   * SamplesFor()'s; no more than `wanted` (the mean ends at its samples
+   * exactly); at least 1.
+   */
+  static int NextSamples(
+    const vtkTransmittanceFrame& frame, const Settings& settings, int historyFrames, int wanted);
 
   /**
    * Whether one path's bound on loop trips (as SamplesFor() counts it)

@@ -622,7 +622,6 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
   settings.ClosedForm = self->GetPathTraceDistanceSampling() == PATH_DISTANCE_CLOSED_FORM;
   settings.Seed = self->GetPathTraceSeed();
   settings.Denoise = self->GetPathTraceDenoise();
-  const int perFrame = vtkTransmittancePathTracePass::SamplesFor(this->Frame, settings);
   const bool cut = vtkTransmittancePathTracePass::MayCutPaths(this->Frame, settings);
   if (cut && !this->WarnedCutPaths)
   {
@@ -643,19 +642,24 @@ bool vtkTransmittanceVolumeMapper::vtkInternals::TracePaths(vtkTransmittanceVolu
          "scattered paths cross it.");
   }
   this->WarnedPathGeometry = inputs.Occlusion != nullptr;
-  if (this->PathFrames > 0 && this->PathFrames * perFrame >= self->GetPathTraceSamplesPerPixel())
+  const int wanted = self->GetPathTraceSamplesPerPixel() -
+    (this->PathFrames > 0 ? this->PathTracer->GetSamples() : 0);
+  if (this->PathFrames > 0 && wanted <= 0)
   {
     this->Complete = this->PathTracer->Redraw(this->Frame, still, settings, self);
   }
   else
   {
-    this->Complete = this->PathTracer->Render(this->Frame, still, settings, this->PathFrames, self);
+    const int samples =
+      vtkTransmittancePathTracePass::NextSamples(this->Frame, settings, this->PathFrames, wanted);
+    this->Complete =
+      this->PathTracer->Render(this->Frame, still, settings, this->PathFrames, samples, self);
     this->PathFrames = this->Complete ? this->PathTracer->GetHistoryFrames() : 0;
   }
   this->PathKey.clear();
   if (this->Complete)
   {
-    this->PathSamples = this->PathFrames * perFrame;
+    this->PathSamples = this->PathTracer->GetSamples();
     this->Reduction = 1; // the paths' picture is full size
     this->StepScale = 1.0;
     this->PathKey = this->StillFrameKey(self, renderer, volume, still);

@@ -440,7 +440,12 @@ public:
    * Paths per pixel one Render() traces, in [1, 64]; default 4. Fewer
    * where a path's bound on loop iterations (the medium's optical depth
    * across its box) would pass a fragment's budget (the ray-cast pass's
-   * IterationBudget).
+   * IterationBudget); and the paths' first frames after a change ramp up to
+   * it, 1, 2, 4, ... (their first picture, and the denoised one, in the
+   * time of one sample), the last trimmed to end at
+   * PathTraceSamplesPerPixel. Each frame is weighed by its samples, and a
+   * path's random numbers are picked by its index in the mean: N samples
+   * make the same picture whatever this setting.
    */
   vtkSetClampMacro(PathTraceSamplesPerFrame, int, 1, 64);
   vtkGetMacro(PathTraceSamplesPerFrame, int);

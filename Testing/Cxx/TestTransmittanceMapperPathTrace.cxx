@@ -15,11 +15,13 @@
 //    GPU's shadow offset left out z 51, its scattered ray's z 30);
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
-//    samples, a picture that has them all is redrawn unchanged, and a
+//    samples (1, 2, 4, then PathTraceSamplesPerFrame, the last trimmed),
+//    a picture that has them all is redrawn unchanged, the same samples a
+//    frame at a time make the same picture (another seed's does not), and a
 //    frame the tracer refuses (a vtkParticipatingMediumProperty's Shade; a
 //    shaded plain property's volumetric scattering blending, or beside
-//    another volume) says so once and draws the map-based frame; a coloured extinction's mean is redrawn
-//    unchanged, and denoised.
+//    another volume) says so once and draws the map-based frame; a coloured extinction's mean is
+//    redrawn unchanged, and denoised.
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
@@ -288,8 +290,8 @@ void Mode()
 {
   const int size = 32;
   Scene scene(tyndall_test::MakeCloud(32), 0.5, size);
-  scene.Mapper->SetPathTraceSamplesPerFrame(2);
-  scene.Mapper->SetPathTraceSamplesPerPixel(6);
+  scene.Mapper->SetPathTraceSamplesPerFrame(4);
+  scene.Mapper->SetPathTraceSamplesPerPixel(12);
   scene.Mapper->PathTracingOff();
   scene.Window->Render();
   vtkSmartPointer<vtkImageData> maps = scene.Picture();
@@ -298,29 +300,49 @@ void Mode()
   Check(scene.Mapper->GetLastPathTraceSamples() == 0, "the first frame is the map-based one");
   Check(tyndall_test::PSNR(scene.Picture(), maps) == std::numeric_limits<double>::infinity(),
     "the first frame is the picture without path tracing");
-  int samples[4];
-  vtkSmartPointer<vtkImageData> pictures[4];
-  for (int k = 0; k < 4; ++k)
+  // The frames ramp up, 1, 2, 4, then 4 (PathTraceSamplesPerFrame), the
+  // last trimmed to end at 12.
+  const int expected[6] = { 1, 3, 7, 11, 12, 12 };
+  int samples[6];
+  vtkSmartPointer<vtkImageData> pictures[6];
+  bool ramp = true;
+  std::cout << "Still frames' samples:";
+  for (int k = 0; k < 6; ++k)
   {
     scene.Window->Render();
     samples[k] = scene.Mapper->GetLastPathTraceSamples();
     pictures[k] = scene.Picture();
+    std::cout << " " << samples[k];
+    ramp = ramp && samples[k] == expected[k];
   }
-  std::cout << "Still frames' samples: " << samples[0] << " " << samples[1] << " " << samples[2]
-            << " " << samples[3] << "; the first against the map frame "
-            << tyndall_test::PSNR(pictures[0], maps) << " dB, the third against the fourth "
-            << tyndall_test::PSNR(pictures[2], pictures[3]) << " dB" << std::endl;
-  Check(samples[0] == 2 && samples[1] == 4 && samples[2] == 6 && samples[3] == 6,
-    "still frames add their samples up to PathTraceSamplesPerPixel");
+  std::cout << "; the first against the map frame " << tyndall_test::PSNR(pictures[0], maps)
+            << " dB, the fifth against the sixth " << tyndall_test::PSNR(pictures[4], pictures[5])
+            << " dB" << std::endl;
+  Check(ramp, "still frames add 1, 2, 4, then 4 samples, up to PathTraceSamplesPerPixel");
   Check(tyndall_test::PSNR(pictures[0], maps) < 40.0, "the paths are not the map-based frame");
   Check(tyndall_test::PSNR(pictures[1], pictures[0]) < 60.0, "a still frame adds new paths");
-  Check(tyndall_test::PSNR(pictures[2], pictures[3]) == std::numeric_limits<double>::infinity(),
+  Check(tyndall_test::PSNR(pictures[4], pictures[5]) == std::numeric_limits<double>::infinity(),
     "a picture that has its samples is redrawn unchanged");
+  // The same 12 samples a frame at a time: the same picture (each frame
+  // weighed by its samples, a path's numbers by its index in the mean);
+  // another seed's 12 samples are another picture.
+  scene.Mapper->SetPathTraceSamplesPerFrame(1);
+  scene.Trace(12);
+  const double split = tyndall_test::PSNR(scene.Picture(), pictures[4]);
+  scene.Mapper->SetPathTraceSeed(1);
+  scene.Trace(12);
+  const double seeded = tyndall_test::PSNR(scene.Picture(), pictures[4]);
+  scene.Mapper->SetPathTraceSeed(0);
+  std::cout << "12 samples a frame at a time against 1, 2, 4, 4, 1: " << split
+            << " dB; with another seed " << seeded << " dB" << std::endl;
+  Check(split >= 60.0 && seeded < 50.0,
+    "the mean of 12 samples is the same picture however the frames split them");
+  scene.Mapper->SetPathTraceSamplesPerFrame(4);
   scene.Renderer->GetActiveCamera()->Azimuth(5.0);
   scene.Window->Render();
   Check(scene.Mapper->GetLastPathTraceSamples() == 0, "a moved camera draws the map-based frame");
   scene.Window->Render();
-  Check(scene.Mapper->GetLastPathTraceSamples() == 2, "and the paths start anew when it stops");
+  Check(scene.Mapper->GetLastPathTraceSamples() == 1, "and the paths start anew when it stops");
 
   // A vtkParticipatingMediumProperty's Shade (its surface term): refused
   // (the CPU tracer traces the medium without it, with a warning).

@@ -354,14 +354,15 @@ def paths_mode(args):
 
 def denoise_mode(args):
     """The key "x" (--path-denoise) on a finished path-traced picture (8
-    samples per pixel): the picture shown denoised (it differs), then the
-    mean again (the same picture), its samples kept throughout."""
+    samples per pixel, after frames of 1, 2, 4 and 1: the mapper's ramp, the
+    last trimmed): the picture shown denoised (it differs), then the mean
+    again (the same picture), its samples kept throughout."""
     os.makedirs(args.output_dir, exist_ok=True)
     shots = [os.path.join(args.output_dir, "denoise_%s.png" % k) for k in ("off", "on", "again")]
     for shot in shots:
         if os.path.exists(shot):
             os.remove(shot)
-    events = ["hud off", "frames 4", "screenshot " + shots[0], "key x", "screenshot " + shots[1],
+    events = ["hud off", "frames 5", "screenshot " + shots[0], "key x", "screenshot " + shots[1],
               "key x", "screenshot " + shots[2], "quit"]
     result = run([args.viewer, "-s", "64", "64", "-r", "32", "--no-detail", "--path-trace", "8",
                   "--events", "; ".join(events)])
@@ -371,7 +372,7 @@ def denoise_mode(args):
     samples = [f["paths"] for f in frames]
     print("samples per pixel per frame: %s" % samples)
     failures = []
-    if len(samples) < 6 or samples[:3] != [0, 4, 8] or any(n != 8 for n in samples[2:]):
+    if len(samples) < 8 or samples[:5] != [0, 1, 3, 7, 8] or any(n != 8 for n in samples[4:]):
         failures.append("the picture did not finish at 8 samples and keep them: %s" % samples)
     pictures = [read_png(shot) for shot in shots]
     if any(p is None for p in pictures):

@@ -30,8 +30,8 @@
 // running when the budget is spent is kept as far as it got (its later
 // bounces lost; a first flight cut short counts as an escape) and the pixel
 // traces no more paths this frame.
-uniform int pathFrame;          // the still frame's index in the mean: picks its random numbers
-uniform int pathSeed;           // and the mapper's seed
+uniform int pathFirstSample;    // the mean's samples before this frame: with the pixel and the
+uniform int pathSeed;           // mapper's seed, a path's index in the mean picks its numbers
 uniform int pathSamples;        // paths per pixel in this frame
 uniform int pathBounces;        // the most scattering events of a path
 uniform float pathMajorant;     // an upper bound of the extinction (per world unit)
@@ -861,8 +861,11 @@ void main()
   int traced = 0;
   for (int k = 0; k < pathSamples; ++k)
   {
+    // The path's index in the mean, as sample i % 16 of block i / 16 (the
+    // mixing of the frames of 16 samples before frames could differ).
+    uint i = uint(pathFirstSample + k);
     tyndallPathState = tyndallPcg(pixel.x +
-      tyndallPcg(pixel.y + tyndallPcg(uint(k) + tyndallPcg(uint(pathFrame) + tyndallPcg(uint(pathSeed))))));
+      tyndallPcg(pixel.y + tyndallPcg((i & 15u) + tyndallPcg((i >> 4u) + tyndallPcg(uint(pathSeed))))));
     ++traced;
     if (!tyndallTracePath(p0, w, tNear, tFar, radiance, escaped))
     {
