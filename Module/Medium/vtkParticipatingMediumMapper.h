@@ -137,9 +137,10 @@ public:
    * renderer's lights leave of the 8 a scene has
    * (vtkTransmittanceVolumeMapper::GetMaximumNumberOfLights()): with 6
    * renderer lights the sky gets at most 2. They light the medium's
-   * scattering only (not gradient shading, not surfaces). 0 adds the sky's
-   * mean radiance to the ambient term instead: unshadowed, evenly bright
-   * inside dense media, but no map's cost. The path tracers sample the sky
+   * scattering and gradient shading (not surfaces). 0 adds the sky's
+   * mean radiance to the ambient term instead (and to gradient shading as
+   * diffuse light): unshadowed, evenly bright inside dense media, but no
+   * map's cost. The path tracers sample the sky
    * itself and ignore this.
    */
   vtkSetClampMacro(SkyLightDirections, int, 0, 8);

@@ -77,12 +77,13 @@ void vtkTyndallShading::AddLight(const double n[3], const double l[3], const dou
 
 //------------------------------------------------------------------------------
 void vtkTyndallShading::AddSkyMean(
-  const double color[3], const double m[3], Sums& sums, int c) const
+  const double n[3], const double color[3], const double m[3], Sums& sums, int c) const
 {
   const double kd = this->Coefficients[c][1];
+  const bool normal = n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
   for (int i = 0; i < 3; ++i)
   {
-    sums.Surface[i] += 2.0 * vtkMath::Pi() * kd * m[i] * color[i];
+    sums.Surface[i] += normal ? 2.0 * vtkMath::Pi() * kd * m[i] * color[i] : 0.0;
     sums.Volume[i] += 4.0 * vtkMath::Pi() * kd * m[i] * color[i];
   }
 }

@@ -147,11 +147,13 @@ public:
    * (the map-based frame's sky without its directional lights:
    * vtkTyndallSceneReader::GetShadingSkyMean()): the two-sided diffuse
    * lobe's Kd c 2 pi m to S (|n.l| over the sphere is 2 pi; a constant sky's
-   * exact light) and Kd c 4 pi m to V (the sky's light, no cosine), as the
-   * sky's directional lights, whose colours add up to 4 pi m, would add
+   * exact light) where the unit normal n is not 0 (as AddLight() adds
+   * nothing there), and Kd c 4 pi m to V (the sky's light, no cosine), as
+   * the sky's directional lights, whose colours add up to 4 pi m, would add
    * them. No specular term.
    */
-  void AddSkyMean(const double color[3], const double m[3], Sums& sums, int c = 0) const;
+  void AddSkyMean(
+    const double n[3], const double color[3], const double m[3], Sums& sums, int c = 0) const;
 
   /**
    * The blending weight k of a sample of gradient magnitude G (per world

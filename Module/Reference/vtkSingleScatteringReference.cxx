@@ -283,7 +283,7 @@ private:
     J[0] = J[1] = J[2] = 0.0;
     for (int i = 0; i < parts; ++i)
     {
-      shading.AddSkyMean(colors[i], s.ShadingSkyMean, sums[i], i);
+      shading.AddSkyMean(n[i], colors[i], s.ShadingSkyMean, sums[i], i);
       double rgb[3] = { sums[i].Surface[0], sums[i].Surface[1], sums[i].Surface[2] };
       if (!additive)
       {

@@ -299,7 +299,7 @@ public:
   /**
    * The lights with their maps: the renderer's (vtkTyndallSceneReader::
    * GetLights()), then the sky's SkyLights (GetSkyLights()), which light
-   * the medium's scattering only.
+   * the medium's scattering and gradient shading.
    */
   std::vector<Light> Lights;
   int SkyLights = 0;

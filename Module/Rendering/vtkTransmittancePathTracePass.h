@@ -28,7 +28,8 @@
  * llvmpipe ends a fragment's loops after 65535, and other drivers reset a
  * GPU that runs too long): a frame traces fewer paths per pixel than asked
  * where the medium's optical depth across its box makes a path's bound
- * long (GetLastSamplesPerFrame()), and a path still running when the
+ * long, and at a new mean's first frames (NextSamples():
+ * GetLastSamplesPerFrame()), and a path still running when the
  * budget is spent is kept as far as it got.
  *
  * What it draws is what the CPU tracer draws: a medium (a grid, with its

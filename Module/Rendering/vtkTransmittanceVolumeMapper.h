@@ -526,10 +526,10 @@ public:
 
   ///@{
   /**
-   * The seed of the paths' random numbers (default 0): with the still
-   * frame's index and the pixel it picks every number, so a picture
-   * depends only on it and the settings; another seed gives an
-   * independent picture.
+   * The seed of the paths' random numbers (default 0): with a path's index
+   * in the mean and the pixel it picks every number, so a picture depends
+   * only on it, the settings and its samples (not on how frames split
+   * them); another seed gives an independent picture.
    */
   vtkSetMacro(PathTraceSeed, int);
   vtkGetMacro(PathTraceSeed, int);

@@ -32,9 +32,10 @@
 //    (how alike); a new sky restarts the paths;
 // 4. a shaded CT's map-based frame (VTK's gradient shading) under a sky
 //    alone: its lights shade it as in the CPU reference (40 dB or more),
-//    its mean is diffuse light (a larger Ambient by Kd 2 pi m, on the GPU
-//    and in the reference), and the sky's share of the picture is the
-//    paths' within a factor 2.
+//    a medium's Shade too; its mean is diffuse light (a larger Ambient by
+//    Kd 2 pi m, on the GPU and in the reference; a medium's Shade as the
+//    CPU's; none where there is no gradient), and the sky's share of the
+//    picture is the paths' within a factor 2.
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -333,16 +334,20 @@ void MapFrame()
 // 4. a shaded CT's map-based frame (a plain property with Shade on: VTK's
 // gradient shading), lit by a sky alone: the sky's lights shade it as
 // they do in the CPU single-scattering reference (brute force: 40 dB or
-// more), and a medium's Shade (its surface term) alike; the sky's mean from every direction (SkyLightDirections 0) is a
-// grey sky m's diffuse light Kd c 2 pi m, the picture of an Ambient larger
-// by Kd 2 pi m on the GPU and in the reference; and the sky's share of
-// the picture (over the one under a black sky) in the map-based frame
-// against the paths' (64 spp), within a factor 2 of it (0.69: one
-// bounce against all of them; 0 before the sky lit the shading).
+// more), and a medium's Shade (its surface term) alike; the sky's mean
+// from every direction (SkyLightDirections 0) is a grey sky m's diffuse
+// light Kd c 2 pi m, the picture of an Ambient larger by Kd 2 pi m on the
+// GPU and in the reference, a medium's Shade under it the CPU's too, and a
+// sample without a gradient gets none of it (a block of one value: the
+// picture under a black sky); and the sky's share of the picture (over the
+// one under a black sky) in the map-based frame against the paths' (64
+// spp), within a factor 2 of it (0.69: one bounce against all of them; 0
+// before the sky lit the shading).
 void ShadedMapFrame()
 {
   const int size = 32;
-  Scene scene(tyndall_test::MakeDenseMedium(32), 0.5, size);
+  vtkSmartPointer<vtkImageData> data = tyndall_test::MakeDenseMedium(32);
+  Scene scene(data, 0.5, size);
   vtkSmartPointer<vtkVolumeProperty> property = tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9);
   scene.Volume->SetProperty(property);
   scene.Mapper->SetTransmittanceCacheSize(kCacheSize);
@@ -402,6 +407,41 @@ void ShadedMapFrame()
   // (The reference's radiance is stored as floats: 1e-6 is their rounding.)
   Check(largest <= 1e-6 && sum > 0.0,
     "the single-scattering reference: a shaded CT's sky mean is diffuse light");
+  // A medium's Shade under the mean: the GPU's surface term as the CPU's.
+  scene.Renderer->SetEnvironmentalBG(m, m, m);
+  scene.Volume->SetProperty(scene.Property);
+  scene.Property->ShadeOn();
+  scene.Window->Render();
+  reference->Render(scene.Renderer, scene.Volume, size, size);
+  const double additiveMean = tyndall_test::PSNR(scene.Picture(), reference->Composite());
+  scene.Property->ShadeOff();
+  // Without a gradient (a block of one value) a sample gets none of the
+  // mean, as none of the lights: the picture under the sky is the one under
+  // a black sky.
+  vtkNew<vtkImageData> block;
+  block->SetDimensions(16, 16, 16);
+  block->SetOrigin(-0.5, -0.5, -0.5);
+  block->SetSpacing(1.0 / 15, 1.0 / 15, 1.0 / 15);
+  block->AllocateScalars(VTK_FLOAT, 1);
+  block->GetPointData()->GetScalars()->Fill(8.0);
+  scene.Mapper->SetInputData(block);
+  scene.Volume->SetProperty(property);
+  scene.Window->Render();
+  vtkSmartPointer<vtkImageData> flatUnderSky = scene.Picture();
+  vtkNew<vtkImageData> flatReference;
+  flatReference->DeepCopy(reference->Render(scene.Renderer, scene.Volume, size, size));
+  scene.Renderer->SetEnvironmentalBG(0.0, 0.0, 0.0);
+  scene.Window->Render();
+  const double flatPsnr = tyndall_test::PSNR(flatUnderSky, scene.Picture());
+  Compare(flatReference, reference->Render(scene.Renderer, scene.Volume, size, size), largest, sum);
+  scene.Mapper->SetInputData(data);
+  std::cout << "The sky's mean, a medium's Shade, brute force against the CPU reference: "
+            << additiveMean
+            << " dB; a block of one value under it against a black sky: " << flatPsnr
+            << " dB on the GPU, the reference's largest difference " << largest << std::endl;
+  Check(additiveMean >= 40.0, "a medium's Shade: the sky's mean as the CPU reference's");
+  Check(flatPsnr == std::numeric_limits<double>::infinity() && largest == 0.0 && sum > 0.0,
+    "no gradient, none of the sky's mean");
 
   // How alike the two modes light it: the sky's share of each picture.
   scene.Mapper->SetSkyLightDirections(4);

@@ -138,10 +138,12 @@ display.TyndallPathTraceSamples = 8
 display.TyndallPathTraceBounces = 4
 display.TyndallPathTracing = 1
 samples = []
-for _ in range(6):
+for _ in range(12):  # the map-based frame, then frames of 1, 2, 4... samples (as the budget allows)
     simple.Render(view)
     display.UpdatePropertyInformation()
     samples.append(display.GetProperty("TyndallPathTraceSamplesDone").GetData())
+    if samples[-1] >= 8:
+        break
 traced, _ = screenshot(view, "plugin-smoke-paths.png")
 check(samples[0] == 0 and samples[-1] == 8 and samples == sorted(samples),
       "still renders refine the path-traced picture to 8 samples: %s" % samples)

@@ -49,8 +49,9 @@ uniform vec3 shadingSkyMean;
 
 // The sky's mean as light from every direction, unshadowed, for the
 // coefficients k (vtkTyndallShading::AddSkyMean(), its CPU twin): Kd c 2 pi m
-// for the two-sided diffuse lobe (|n.s| over the sphere: 2 pi); the
-// volumetric term's (no cosine) is twice that.
+// for the two-sided diffuse lobe (|n.s| over the sphere: 2 pi), where the
+// normal is not 0 (a sample without a gradient gets none, as from the
+// lights); the volumetric term's (no cosine) is twice that.
 vec3 tyndallSkyMeanDiffuse(vec4 k, vec3 color)
 {
   return (2.0 * TYNDALL_PI * k.y) * shadingSkyMean * color;

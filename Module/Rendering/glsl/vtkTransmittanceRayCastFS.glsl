@@ -376,9 +376,9 @@ vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color, float sigm
   // The surface term and (blending) the volumetric one (isotropic, no normal),
   // with the sky's mean where it has no lights.
   vec3 sky = tyndallSkyMeanDiffuse(shadingCoefficients[0], color);
-  vec3 surface = shadingCoefficients[0].x * color + sky;
+  vec3 surface = shadingCoefficients[0].x * color + (magnitude > 0.0 ? sky : vec3(0.0));
 #if TYNDALL_SCATTERING_BLEND
-  vec3 volume = surface + sky;
+  vec3 volume = shadingCoefficients[0].x * color + 2.0 * sky;
 #endif
   // The renderer's lights and the sky's. tyndallShadingLight() written out:
   // called here, the common shaded frame took 7 % longer on llvmpipe
@@ -422,7 +422,7 @@ vec3 tyndallSurfaceTerm(vec3 x, vec3 normalAt, vec3 w, vec3 color)
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  vec3 surface = tyndallSkyMeanDiffuse(shadingCoefficients[0], color);
+  vec3 surface = magnitude > 0.0 ? tyndallSkyMeanDiffuse(shadingCoefficients[0], color) : vec3(0.0);
   for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
     vec3 TE, s, h;
@@ -450,8 +450,8 @@ vec3 tyndallComponentShading(
   for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
   {
     vec3 sky = tyndallSkyMeanDiffuse(shadingCoefficients[c], colors[c]);
-    surface[c] = shadingCoefficients[c].x * colors[c] + sky;
-    volume[c] = surface[c] + sky;
+    surface[c] = shadingCoefficients[c].x * colors[c] + (magnitudes[c] > 0.0 ? sky : vec3(0.0));
+    volume[c] = shadingCoefficients[c].x * colors[c] + 2.0 * sky;
   }
   for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
