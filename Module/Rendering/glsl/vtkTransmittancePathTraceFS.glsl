@@ -861,8 +861,8 @@ void main()
   int traced = 0;
   for (int k = 0; k < pathSamples; ++k)
   {
-    // The path's index in the mean, as sample i % 16 of block i / 16 (the
-    // mixing of the frames of 16 samples before frames could differ).
+    // The path's index in the mean, mixed as sample i % 16 of block i / 16
+    // (as the frame and the sample in it were when every frame had 16).
     uint i = uint(pathFirstSample + k);
     tyndallPathState = tyndallPcg(pixel.x +
       tyndallPcg(pixel.y + tyndallPcg((i & 15u) + tyndallPcg((i >> 4u) + tyndallPcg(uint(pathSeed))))));

@@ -422,7 +422,8 @@ vec3 tyndallSurfaceTerm(vec3 x, vec3 normalAt, vec3 w, vec3 color)
   float magnitude = length(g);
   vec3 n = magnitude > 0.0 ? g / magnitude : vec3(0.0);
   vec3 v = -w;
-  vec3 surface = magnitude > 0.0 ? tyndallSkyMeanDiffuse(shadingCoefficients[0], color) : vec3(0.0);
+  vec3 surface =
+    magnitude > 0.0 ? tyndallSkyMeanDiffuse(shadingCoefficients[0], color) : vec3(0.0);
   for (int l = 0; l < numberOfLights + numberOfSkyLights; ++l)
   {
     vec3 TE, s, h;
