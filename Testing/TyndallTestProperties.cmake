@@ -117,8 +117,8 @@ set(tyndall_no_sanitizer_tests
 
 # The test drivers' own code (its scenes, checks and statistics; the code
 # under test is the modules', compiled with the build type's flags) compiles
-# at -O1 in an optimised build and at -O0 in the sanitizer build
-# (TyndallSanitizers.cmake): compile time is most of a build here, and a
+# at -O1 in an optimised build and as harness in the sanitizer build (-O0,
+# without UBSan's pointer checks: TyndallSanitizers.cmake): compile time is most of a build here, and a
 # driver's own time is small beside the renders it asks for. Measured
 # (Release flags, one source): TestOpenVDBReaderStreaming.cxx 19.0 s of CPU at
 # -O3, 12.1 s at -O1; TestTransmittanceMapperVTKScenes.cxx 4.5 s, 3.7 s. Core's
@@ -130,7 +130,7 @@ function (tyndall_compile_test_drivers)
     message(FATAL_ERROR "tyndall_compile_test_drivers: name the drivers")
   endif ()
   if (TYNDALL_SANITIZE)
-    tyndall_sanitizer_compile_unoptimised(${ARGN})
+    tyndall_sanitizer_compile_harness(${ARGN})
     return ()
   endif ()
   foreach (target IN LISTS ARGN)
