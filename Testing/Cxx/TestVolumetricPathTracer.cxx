@@ -32,11 +32,14 @@
 //
 // TYNDALL_PATH_TRACER_QUICK (the sanitizer suite, set in
 // Testing/Cxx/CMakeLists.txt): every render with a sixteenth of its samples
-// (at least 4) and the statistics of parts 2-4 and 6 (the pictures' z
-// tests, the transmittance's and the bounces') reported, not checked: the
-// same code runs under the sanitizers, with too few samples for the
-// statistics' power; the Release suite checks them all. Under the
-// sanitizers 70 s -> about 15 s.
+// (at least 4); the pictures' z statistics (parts 2, 3 and 6: global z,
+// mean z^2, max |z|) and the view transmittance's largest |z| reported, not
+// checked (with so few samples per pixel the per-pixel standard errors are
+// too rough for their bounds: false alarms), but their pictures' finite
+// radiance and enough non-empty pixels checked, and "more bounces give
+// more light" checked (z about 20-30 at a sixteenth). The same code runs
+// under the sanitizers; the Release suite checks every statistic. Under the
+// sanitizers 70 s -> 16 s.
 //
 // Measured (Release, 2 cores, 26 s): grid vs reference global z -1.3, mean
 // z^2 0.99; detail vs reference z 0.69, mean z^2 1.10; closed form vs delta
@@ -111,15 +114,19 @@ void CheckStatistic(bool ok, const std::string& what)
   Check(ok, what);
 }
 
-// CheckUnbiased(), reported only in the quick mode.
+// CheckUnbiased(); in the quick mode its z bounds reported, not checked, and
+// what is not a statistic checked: enough non-empty pixels, finite sums and z.
 void CheckPictureUnbiased(const Stats& s, const std::string& what)
 {
-  if (Quick())
+  if (!Quick())
   {
-    Report(s, what + " (quick: not checked)");
+    CheckUnbiased(s, what);
     return;
   }
-  CheckUnbiased(s, what);
+  Report(s, what + " (quick: z bounds not checked)");
+  Check(s.Count > 500, what + ": enough non-empty pixels");
+  Check(std::isfinite(s.Sum[0]) && std::isfinite(s.Sum[1]) && std::isfinite(s.Global),
+    what + ": finite radiance");
 }
 
 // A Gaussian blob of scalars (peak 8) at 16^3 over [-1, 1]^3, a coloured
@@ -228,8 +235,9 @@ vtkImageData* Trace(vtkVolumetricPathTracer* tracer, Scene& scene, int mode, int
   tracer->SetSeed(seed);
   vtkImageData* image = tracer->Render(scene.Renderer, scene.Volume, kSize, kSize);
   std::cout << "  " << (mode == vtkVolumetricPathTracer::CLOSED_FORM ? "closed form" : "delta")
-            << " bounces " << bounces << " spp " << samples << ": " << tracer->GetLastRenderTime()
-            << " s, tracking " << tracer->GetLastTrackingTimePerSample() * 1e3 << " ms/spp, total "
+            << " bounces " << bounces << " spp " << tracer->GetSamplesPerPixel() << ": "
+            << tracer->GetLastRenderTime() << " s, tracking "
+            << tracer->GetLastTrackingTimePerSample() * 1e3 << " ms/spp, total "
             << tracer->GetLastTotalTimePerSample() * 1e3 << " ms/spp" << std::endl;
   return image;
 }
@@ -445,7 +453,7 @@ void TestShadedSurface(Scene& scene)
   {
     const Stats s = Compare(more, one, true);
     Report(s, "shaded, 6 bounces vs 1");
-    CheckStatistic(s.Global > 5.0, "shaded: more bounces give more radiance");
+    Check(s.Global > 5.0, "shaded: more bounces give more radiance");
   }
   else
   {
@@ -522,7 +530,7 @@ void TestMoreBounces(Scene& scene)
   {
     const Stats s = Compare(a, b, true);
     Report(s, "6 bounces vs 1");
-    CheckStatistic(s.Global > 5.0, "more bounces give more radiance");
+    Check(s.Global > 5.0, "more bounces give more radiance");
   }
 }
 

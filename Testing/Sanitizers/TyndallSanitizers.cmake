@@ -80,15 +80,17 @@ endif ()
 # - with AddressSanitizer and UBSan's value checks (signed overflow, shifts,
 #   division by zero, bool and enum loads, bounds, unreachable, missing
 #   returns) but without UBSan's pointer checks (null, alignment, vptr,
-#   object-size, pointer-overflow, nonnull-attribute), which doubled the
-#   compile of a driver that builds OpenVDB grids (TestOpenVDBReaderGrids.cxx:
-#   62 s with them, 35 s without, 32 s with AddressSanitizer alone): their
-#   time went to OpenVDB's templates, instantiated there to write the test
-#   files. AddressSanitizer still checks every access of that code.
-# The modules' own code, and Core's and Medium's drivers (they run the
-# modules' inline math themselves), keep -O1 and every check: the modules
-# are what the sanitizers are for, and the CPU renderers are most of the
-# sanitizer suite's C++ time.
+#   object-size, pointer-overflow, nonnull-attribute,
+#   returns-nonnull-attribute), which doubled the compile of a driver that
+#   builds OpenVDB grids (TestOpenVDBReaderGrids.cxx: 62 s with them, 35 s
+#   without, 32 s with AddressSanitizer alone): their time went to
+#   OpenVDB's templates, instantiated there to write the test files.
+#   AddressSanitizer still checks every access of that code.
+# The modules' libraries, and Core's and Medium's drivers (they run the
+# modules' inline math themselves), keep -O1 and every check (the modules'
+# inline code that a harness source compiles into itself goes as that
+# source does): the modules are what the sanitizers are for, and the CPU
+# renderers are most of the sanitizer suite's C++ time.
 set(TYNDALL_SANITIZER_HARNESS_OPTIONS
   -O0
   -fno-sanitize=null,alignment,vptr,object-size,pointer-overflow,nonnull-attribute,returns-nonnull-attribute)
