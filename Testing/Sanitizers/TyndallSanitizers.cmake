@@ -7,8 +7,8 @@
 # linked with -fsanitize=address,undefined (the harness without UBSan's
 # pointer checks: tyndall_sanitizer_compile_harness() below); any undefined
 # behaviour aborts the process (-fno-sanitize-recover), so a finding fails
-# its test. VTK,
-# OpenVDB, Mesa and Python are used as Debian ships them (not instrumented).
+# its test. VTK, OpenVDB, Mesa and Python are used as Debian ships them (not
+# instrumented).
 #
 # tyndall_sanitize_tests() gives every test the sanitizers'
 # options: leak checking on, with the suppressions in
