@@ -206,7 +206,7 @@ void vtkOpenVDBImageWriter::WriteData()
   try
   {
     tyndall_io::InitializeOpenVDB();
-    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr grid = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     grid->setName(this->GridName);
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
     grid->setTransform(MakeTransform(origin, spacing, direction));

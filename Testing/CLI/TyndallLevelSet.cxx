@@ -3,6 +3,8 @@
 // (a Gaussian blob) for time series.
 #include "TyndallTestData.h"
 
+#include "vtkOpenVDBInternals.h" // tyndall_io::NewGrid
+
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
@@ -41,7 +43,7 @@ bool WriteLevelSetSphere(const std::string& path)
 bool WriteDensityBlob(const std::string& path, double shift)
 {
   openvdb::initialize();
-  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+  openvdb::FloatGrid::Ptr grid = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
   grid->setName("density");
   grid->setGridClass(openvdb::GRID_FOG_VOLUME);
   openvdb::FloatGrid::Accessor voxels = grid->getAccessor();

@@ -46,7 +46,7 @@ void ExpectFailure(const std::string& path, const std::string& text, const std::
 // A valid dense-ish float grid: 40^3 voxels of varying values.
 openvdb::FloatGrid::Ptr MakeGrid(const std::string& name)
 {
-  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+  openvdb::FloatGrid::Ptr grid = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
   grid->setName(name);
   grid->setGridClass(openvdb::GRID_FOG_VOLUME);
   auto acc = grid->getAccessor();
@@ -199,7 +199,7 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
   // Incompressible leaf values make OpenVDB store the leaf raw, with the
   // size -2048 (512 floats).
   {
-    openvdb::FloatGrid::Ptr noisy = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr noisy = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     noisy->setName("density");
     // Random bit patterns (finite ones) do not compress.
     std::mt19937 values(7u);
@@ -247,7 +247,7 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
   // (2) A Blosc chunk whose header claims more compressed bytes than the
   // chunk has: Blosc trusts the header and reads past the chunk.
   {
-    openvdb::FloatGrid::Ptr smooth = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr smooth = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     smooth->setName("density");
     for (int k = 0; k < 8; ++k)
     {
@@ -339,13 +339,13 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
 
   // Unsupported grid types, and a missing grid name.
   {
-    openvdb::Int32Grid::Ptr ints = openvdb::Int32Grid::create(0);
+    openvdb::Int32Grid::Ptr ints = tyndall_io::NewGrid<openvdb::Int32Grid>(0);
     ints->setName("ints");
     ints->tree().setValue(openvdb::Coord(1, 2, 3), 7);
-    openvdb::BoolGrid::Ptr mask = openvdb::BoolGrid::create(false);
+    openvdb::BoolGrid::Ptr mask = tyndall_io::NewGrid<openvdb::BoolGrid>(false);
     mask->setName("mask");
     mask->tree().setValue(openvdb::Coord(0, 0, 0), true);
-    openvdb::Vec3IGrid::Ptr vec3i = openvdb::Vec3IGrid::create();
+    openvdb::Vec3IGrid::Ptr vec3i = tyndall_io::NewGrid<openvdb::Vec3IGrid>();
     vec3i->setName("vec3i");
     vec3i->tree().setValue(openvdb::Coord(0, 0, 0), openvdb::Vec3i(1, 2, 3));
     WriteGrids(dir + "/unsupported.vdb", { ints, mask, vec3i });
@@ -426,7 +426,7 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
   // Two root children at one origin: OpenVDB would overwrite the first
   // child's table entry and leak it (with its subtree).
   {
-    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr grid = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     grid->setName("density");
     grid->tree().setValue(openvdb::Coord(1, 1, 1), 1.0f);
     grid->tree().setValue(openvdb::Coord(4100, 1, 1), 1.0f);
@@ -454,14 +454,14 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
   // Absurd dimensions, and dimensions too large for the memory limit (an
   // active root tile of 4096^3 voxels): refused before any allocation.
   {
-    openvdb::FloatGrid::Ptr absurd = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr absurd = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     absurd->setName("density");
     absurd->tree().setValue(openvdb::Coord(-2000000000, 0, 0), 1.0f);
     absurd->tree().setValue(openvdb::Coord(2000000000, 0, 0), 1.0f);
     WriteGrids(dir + "/absurd.vdb", { absurd });
     ExpectFailure(dir + "/absurd.vdb", "absurd dimensions", "4e9 voxels along x");
 
-    openvdb::FloatGrid::Ptr tile = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr tile = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     tile->setName("density");
     tile->tree().addTile(3, openvdb::Coord(0, 0, 0), 1.0f, true);
     WriteGrids(dir + "/tile.vdb", { tile });
@@ -476,7 +476,7 @@ int TestOpenVDBReaderBadFiles(int argc, char* argv[])
     WriteGrids(dir + "/levelset.vdb", { sphere });
     ExpectFailure(dir + "/levelset.vdb", "is a level set", "a level set without conversion");
 
-    openvdb::FloatGrid::Ptr empty = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr empty = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     empty->setName("density");
     WriteGrids(dir + "/emptygrid.vdb", { empty });
     ExpectFailure(dir + "/emptygrid.vdb", "no active voxels", "a grid without active voxels");

@@ -126,27 +126,28 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
   // and a fifth with another transform.
   openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(0.5);
   transform->postTranslate(openvdb::Vec3d(1.0, 2.0, 3.0));
-  openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
+  openvdb::FloatGrid::Ptr density = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
   density->setName("density");
   density->setTransform(transform);
   density->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
   density->tree().setValue(openvdb::Coord(4, 5, 6), 2.0f);
   density->tree().addTile(1, openvdb::Coord(8, 8, 8), 0.25f, true); // voxels 8..15
   density->tree().setValueOff(openvdb::Coord(2, 2, 2), 7.0f);       // inactive: read as 0
-  openvdb::DoubleGrid::Ptr temperature = openvdb::DoubleGrid::create(300.0);
+  openvdb::DoubleGrid::Ptr temperature = tyndall_io::NewGrid<openvdb::DoubleGrid>(300.0);
   temperature->setName("temperature");
   temperature->setTransform(transform);
   temperature->tree().setValue(openvdb::Coord(-3, -2, -1), 400.0);
   temperature->tree().setValue(openvdb::Coord(2, 2, 2), 500.0);
-  openvdb::Vec3SGrid::Ptr velocity = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f, 0.0f, 0.5f));
+  openvdb::Vec3SGrid::Ptr velocity =
+    tyndall_io::NewGrid<openvdb::Vec3SGrid>(openvdb::Vec3s(0.0f, 0.0f, 0.5f));
   velocity->setName("velocity");
   velocity->setTransform(transform);
   velocity->tree().setValue(openvdb::Coord(1, 1, 1), openvdb::Vec3s(1.0f, 2.0f, 3.0f));
-  openvdb::Vec3DGrid::Ptr flow = openvdb::Vec3DGrid::create();
+  openvdb::Vec3DGrid::Ptr flow = tyndall_io::NewGrid<openvdb::Vec3DGrid>();
   flow->setName("flow");
   flow->setTransform(transform);
   flow->tree().setValue(openvdb::Coord(3, 3, 3), openvdb::Vec3d(-1.0, 0.5, 0.25));
-  openvdb::FloatGrid::Ptr other = openvdb::FloatGrid::create(0.0f);
+  openvdb::FloatGrid::Ptr other = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
   other->setName("other");
   other->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
   const std::string multi = dir + "/multi.vdb";
@@ -235,7 +236,8 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
   // Without a "density" grid: the first float grid; without float grids, the
   // first supported one.
   {
-    openvdb::FloatGrid::Ptr a = openvdb::FloatGrid::create(0.0f), b = a->deepCopy();
+    openvdb::FloatGrid::Ptr a = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f),
+                            b = openvdb::deepCopyTypedGrid<openvdb::FloatGrid>(*a);
     a->setName("smoke");
     a->tree().setValue(openvdb::Coord(1, 1, 1), 1.0f);
     b->setName("heat");
@@ -257,7 +259,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
 
   // A rotated, scaled and translated grid: the direction matrix.
   {
-    openvdb::FloatGrid::Ptr rotated = density->deepCopy();
+    openvdb::FloatGrid::Ptr rotated = openvdb::deepCopyTypedGrid<openvdb::FloatGrid>(*density);
     const double a = 30.0 * M_PI / 180.0, b = 20.0 * M_PI / 180.0;
     openvdb::Mat4d m = openvdb::Mat4d::identity();
     m.setToRotation(openvdb::math::Z_AXIS, a);
@@ -281,7 +283,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
 
   // Anisotropic axis-aligned scale.
   {
-    openvdb::FloatGrid::Ptr scaled = density->deepCopy();
+    openvdb::FloatGrid::Ptr scaled = openvdb::deepCopyTypedGrid<openvdb::FloatGrid>(*density);
     openvdb::math::MapBase::Ptr map(new openvdb::math::ScaleTranslateMap(
       openvdb::Vec3d(0.25, 1.0, 3.0), openvdb::Vec3d(5.0, -2.0, 1.0)));
     scaled->setTransform(openvdb::math::Transform::Ptr(new openvdb::math::Transform(map)));
@@ -333,7 +335,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
   {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    openvdb::FloatGrid::Ptr bad = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr bad = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     bad->setName("density");
     auto acc = bad->getAccessor();
     for (int i = 0; i < 10; ++i)
@@ -367,7 +369,7 @@ int TestOpenVDBReaderGrids(int argc, char* argv[])
     Check(ok, "NaN: non-finite values read as 0, the others unchanged");
 
     // A NaN background: every inactive voxel of the box counts.
-    openvdb::FloatGrid::Ptr nanBackground = openvdb::FloatGrid::create(nan);
+    openvdb::FloatGrid::Ptr nanBackground = tyndall_io::NewGrid<openvdb::FloatGrid>(nan);
     nanBackground->setName("density");
     nanBackground->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
     nanBackground->tree().setValue(openvdb::Coord(3, 3, 3), 2.0f);

@@ -136,7 +136,7 @@ int TestOpenVDBReaderStreaming(int argc, char* argv[])
 
   // A grid with a non-zero background, varying values, an active tile and
   // an index box that is neither aligned nor a multiple of 2 or 3.
-  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(kBackground);
+  openvdb::FloatGrid::Ptr grid = tyndall_io::NewGrid<openvdb::FloatGrid>(kBackground);
   grid->setName("density");
   openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(0.3);
   transform->postTranslate(openvdb::Vec3d(-2.0, 0.5, 7.0));
@@ -282,7 +282,7 @@ int TestOpenVDBReaderStreaming(int argc, char* argv[])
   // The memory limit: a 200^3 box (two voxels at its corners) is 30.5 MiB
   // of floats.
   {
-    openvdb::FloatGrid::Ptr big = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr big = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     big->setName("density");
     big->tree().setValue(openvdb::Coord(0, 0, 0), 1.0f);
     big->tree().setValue(openvdb::Coord(199, 199, 199), 2.0f);
@@ -322,7 +322,7 @@ int TestOpenVDBReaderStreaming(int argc, char* argv[])
   // inactive voxels, one holding 9, read as 0); a piece of fewer voxels and
   // a downsampled read go voxel by voxel, as before.
   {
-    openvdb::FloatGrid::Ptr fog = openvdb::FloatGrid::create(0.0f);
+    openvdb::FloatGrid::Ptr fog = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
     fog->setName("density");
     fog->setTransform(transform);
     for (auto it = grid->cbeginValueOn(); it; ++it)

@@ -5,6 +5,7 @@
 #define TyndallTestOpenVDB_h
 
 #include "vtkImageData.h"
+#include "vtkOpenVDBInternals.h" // tyndall_io::NewGrid: the tests make their grids with it
 #include "vtkPointData.h"
 #include "vtkTestErrorObserver.h"
 

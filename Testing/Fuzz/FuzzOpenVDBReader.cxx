@@ -19,6 +19,7 @@
 #include "vtkImageData.h"
 #include "vtkObject.h"
 #include "vtkOpenVDBImageReader.h"
+#include "vtkOpenVDBInternals.h" // tyndall_io::NewGrid
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 
@@ -188,7 +189,7 @@ void FixUuid(const std::string& path)
 
 void WriteSeeds(const std::string& dir)
 {
-  openvdb::FloatGrid::Ptr fog = openvdb::FloatGrid::create(0.0f);
+  openvdb::FloatGrid::Ptr fog = tyndall_io::NewGrid<openvdb::FloatGrid>(0.0f);
   fog->setName("density");
   fog->setGridClass(openvdb::GRID_FOG_VOLUME);
   auto acc = fog->getAccessor();
@@ -216,13 +217,13 @@ void WriteSeeds(const std::string& dir)
     file.write(openvdb::GridPtrVec{ fog });
   }
   {
-    openvdb::DoubleGrid::Ptr temperature = openvdb::DoubleGrid::create(300.0);
+    openvdb::DoubleGrid::Ptr temperature = tyndall_io::NewGrid<openvdb::DoubleGrid>(300.0);
     temperature->setName("temperature");
     temperature->tree().setValue(openvdb::Coord(1, 2, 3), 400.0);
-    openvdb::Vec3SGrid::Ptr velocity = openvdb::Vec3SGrid::create();
+    openvdb::Vec3SGrid::Ptr velocity = tyndall_io::NewGrid<openvdb::Vec3SGrid>();
     velocity->setName("velocity");
     velocity->tree().setValue(openvdb::Coord(0, 0, 0), openvdb::Vec3s(1, 2, 3));
-    openvdb::Int32Grid::Ptr ints = openvdb::Int32Grid::create(0);
+    openvdb::Int32Grid::Ptr ints = tyndall_io::NewGrid<openvdb::Int32Grid>(0);
     ints->setName("ints");
     ints->tree().setValue(openvdb::Coord(0, 0, 0), 5);
     openvdb::io::File file(dir + "/seed-multi.vdb");
@@ -236,7 +237,7 @@ void WriteSeeds(const std::string& dir)
     file.write(openvdb::GridPtrVec{ sphere });
   }
   {
-    openvdb::FloatGrid::Ptr half = fog->deepCopy();
+    openvdb::FloatGrid::Ptr half = openvdb::deepCopyTypedGrid<openvdb::FloatGrid>(*fog);
     half->setSaveFloatAsHalf(true);
     openvdb::io::File file(dir + "/seed-half.vdb");
     file.write(openvdb::GridPtrVec{ half });
