@@ -22,7 +22,7 @@
 set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 156
-  Tyndall::RenderingCxx-TestTransmittanceMapperReference 117
+  Tyndall::RenderingCxx-TestTransmittanceMapperReference 80
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 80
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77
   Tyndall::RenderingCxx-TestTransmittanceParticleMapper 80

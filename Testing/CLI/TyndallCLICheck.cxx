@@ -159,6 +159,13 @@ int Run(const std::vector<std::string>& args)
   }
   command.push_back(nullptr);
 
+  // Under the sanitizers the child (tyndall-render) gets Mesa's driver
+  // preloaded, this process libasan alone (TyndallSanitizers.cmake,
+  // TYNDALL_SANITIZER_GL_IN_CHILD).
+  if (const char* preload = std::getenv("TYNDALL_SANITIZER_CHILD_PRELOAD"))
+  {
+    vtksys::SystemTools::PutEnv(std::string("LD_PRELOAD=") + preload);
+  }
   vtksysProcess* process = vtksysProcess_New();
   vtksysProcess_SetCommand(process, command.data());
   vtksysProcess_Execute(process);
