@@ -162,9 +162,11 @@ int Run(const std::vector<std::string>& args)
   // Under the sanitizers the child (tyndall-render) gets Mesa's driver
   // preloaded, this process libasan alone (TyndallSanitizers.cmake,
   // TYNDALL_SANITIZER_GL_IN_CHILD).
-  if (const char* preload = std::getenv("TYNDALL_SANITIZER_CHILD_PRELOAD"))
+  const char* preload = std::getenv("TYNDALL_SANITIZER_CHILD_PRELOAD");
+  if (preload && !vtksys::SystemTools::PutEnv(std::string("LD_PRELOAD=") + preload))
   {
-    vtksys::SystemTools::PutEnv(std::string("LD_PRELOAD=") + preload);
+    std::cout << "FAIL: LD_PRELOAD could not be set for the child\n";
+    return Fail;
   }
   vtksysProcess* process = vtksysProcess_New();
   vtksysProcess_SetCommand(process, command.data());

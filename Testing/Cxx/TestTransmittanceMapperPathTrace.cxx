@@ -167,14 +167,16 @@ void AgainstCpu(const char* name, vtkImageData* data, double peakOpacity, int si
     scene.Mapper->SetPathTraceShadows(shadows);
     const bool tracked = shadows == vtkTransmittanceVolumeMapper::PATH_SHADOWS_TRACKED;
     const char* how = tracked ? "tracked shadows" : "shadows from the maps";
+    // Measured, not checked (the maps' bias on the dense medium): one seed.
+    const int runs = tracked || mapsAlike ? seeds : 1;
     double error = 0.0;
     std::cout << "  GPU 1024 spp, " << how << ":";
-    for (int seed = 0; seed < seeds; ++seed)
+    for (int seed = 0; seed < runs; ++seed)
     {
       scene.Mapper->SetPathTraceSeed(seed);
       const double e = MeanSquaredError(Trace(scene, 1024), truth);
       std::cout << " " << psnrOf(e) << " dB (" << scene.Frames << " frames)";
-      error += e / seeds;
+      error += e / runs;
     }
     std::cout << "; mean " << psnrOf(error) << " dB" << std::endl;
     if (tracked || mapsAlike)
