@@ -48,12 +48,9 @@ void vtkParticleKernel::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 double vtkParticleKernel::Extinction(double r, double radius, double density)
 {
-  if (!Valid(radius, density) || !(std::abs(r) < radius))
-  {
-    return 0.0;
-  }
-  const double q = 1.0 - (r * r) / (radius * radius);
-  return density * q * q;
+  return Valid(radius, density)
+    ? ExtinctionOfSquaredDistance(r * r, 1.0 / (radius * radius), density)
+    : 0.0;
 }
 
 //------------------------------------------------------------------------------

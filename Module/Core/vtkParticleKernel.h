@@ -64,6 +64,20 @@ public:
   /// The extinction at the distance r from the centre.
   static double Extinction(double r, double radius, double density);
 
+  /**
+   * Extinction() from the squared distance `r2` and the kernel's
+   * `inverseSquaredRadius` (1 / R^2), for a kernel its caller has checked
+   * (R finite and > 0, density finite and >= 0): rho (1 - r2 / R^2)^2 inside
+   * the sphere, 0 outside and for a NaN r2. Inline, with no square root: the
+   * CPU's sums over every particle near a sample (vtkTyndallParticles).
+   * Extinction() is this after its checks.
+   */
+  static double ExtinctionOfSquaredDistance(double r2, double inverseSquaredRadius, double density)
+  {
+    const double q = 1.0 - r2 * inverseSquaredRadius;
+    return q > 0.0 ? density * q * q : 0.0;
+  }
+
   /// The extinction integrated over space: 32 pi rho R^3 / 105.
   static double Mass(double radius, double density);
 

@@ -98,12 +98,11 @@ bool vtkTyndallParticles::Update(vtkPolyData* particles, std::string& error)
     *this = vtkTyndallParticles();
     return false;
   }
-  this->Centers.resize(3 * n);
+  this->Kernels.resize(KernelSize * n);
   this->Radius.resize(n);
-  this->DensityValues.resize(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    double* c = this->Centers.data() + 3 * i;
+    double* c = this->Kernels.data() + KernelSize * i;
     particles->GetPoint(i, c);
     const double r = radius->GetTuple1(i);
     const double rho = density->GetTuple1(i);
@@ -120,7 +119,8 @@ bool vtkTyndallParticles::Update(vtkPolyData* particles, std::string& error)
       return false;
     }
     this->Radius[i] = r;
-    this->DensityValues[i] = rho;
+    c[3] = 1.0 / (r * r);
+    c[4] = rho;
     for (int a = 0; a < 3; ++a)
     {
       this->Bounds[2 * a] = i == 0 ? c[a] - r : std::min(this->Bounds[2 * a], c[a] - r);
@@ -132,12 +132,13 @@ bool vtkTyndallParticles::Update(vtkPolyData* particles, std::string& error)
   for (vtkIdType i = 0; i < n; ++i)
   {
     float* v = this->SplatVertices.data() + 5 * i;
+    const double* k = this->Kernels.data() + KernelSize * i;
     for (int a = 0; a < 3; ++a)
     {
-      v[a] = static_cast<float>(this->Centers[3 * i + a]);
+      v[a] = static_cast<float>(k[a]);
     }
     v[3] = static_cast<float>(this->Radius[i]);
-    v[4] = static_cast<float>(this->DensityValues[i]);
+    v[4] = static_cast<float>(k[4]);
   }
   this->BuildCells();
   this->ReadTime.Modified();
@@ -179,8 +180,9 @@ void vtkTyndallParticles::BuildCells()
     int lo[3], hi[3];
     for (int a = 0; a < 3; ++a)
     {
-      lo[a] = this->CellIndex(a, this->Centers[3 * i + a] - this->Radius[i]);
-      hi[a] = this->CellIndex(a, this->Centers[3 * i + a] + this->Radius[i]);
+      const double c = this->Kernels[KernelSize * i + a];
+      lo[a] = this->CellIndex(a, c - this->Radius[i]);
+      hi[a] = this->CellIndex(a, c + this->Radius[i]);
     }
     for (int z = lo[2]; z <= hi[2]; ++z)
     {
@@ -212,7 +214,7 @@ void vtkTyndallParticles::BuildCells()
     double sum = 0.0;
     for (vtkIdType k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
     {
-      sum += this->DensityValues[this->CellParticles[k]];
+      sum += this->Kernels[KernelSize * this->CellParticles[k] + 4];
     }
     this->DensityBound = std::max(this->DensityBound, sum);
   }
@@ -269,12 +271,13 @@ double vtkTyndallParticles::Sum(const double x[3], double* color) const
   for (vtkIdType k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
   {
     const vtkIdType i = this->CellParticles[k];
-    const double* c = this->Centers.data() + 3 * i;
+    const double* c = this->Kernels.data() + KernelSize * i;
     const double dx = x[0] - c[0], dy = x[1] - c[1], dz = x[2] - c[2];
-    const double e = vtkParticleKernel::Extinction(
-      std::sqrt(dx * dx + dy * dy + dz * dz), this->Radius[i], this->DensityValues[i]);
+    // (Update() checked every radius and density.)
+    const double e =
+      vtkParticleKernel::ExtinctionOfSquaredDistance(dx * dx + dy * dy + dz * dz, c[3], c[4]);
     sum += e;
-    if (color)
+    if (color && e > 0.0)
     {
       for (int a = 0; a < 3; ++a)
       {

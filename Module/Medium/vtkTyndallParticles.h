@@ -114,9 +114,11 @@ private:
   // The cell of a data coordinate along axis a, clamped to the grid.
   int CellIndex(int a, double x) const;
 
-  std::vector<double> Centers; // 3 per particle
+  // Per particle: centre x, y, z, 1 / R^2 and density (Sum()'s reads, side
+  // by side), and the radius.
+  static constexpr int KernelSize = 5;
+  std::vector<double> Kernels;
   std::vector<double> Radius;
-  std::vector<double> DensityValues;
   std::vector<double> Colors; // 3 per particle, or none
   std::vector<float> SplatVertices;
   double Bounds[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
