@@ -96,38 +96,8 @@ using tyndall_test::Report;
 using tyndall_test::Stats;
 constexpr int kSize = 24;
 
-// TYNDALL_PATH_TRACER_QUICK set and not "0" (the header says why).
-bool Quick()
-{
-  const char* quick = std::getenv("TYNDALL_PATH_TRACER_QUICK");
-  return quick && std::string(quick) != "0";
-}
-
-// A statistical check: Check(), or in the quick mode a line that says so.
-void CheckStatistic(bool ok, const std::string& what)
-{
-  if (Quick())
-  {
-    std::cout << "  (quick: not checked) " << what << (ok ? "" : " would fail") << std::endl;
-    return;
-  }
-  Check(ok, what);
-}
-
-// CheckUnbiased(); in the quick mode its z bounds reported, not checked, and
-// what is not a statistic checked: enough non-empty pixels, finite sums and z.
-void CheckPictureUnbiased(const Stats& s, const std::string& what)
-{
-  if (!Quick())
-  {
-    CheckUnbiased(s, what);
-    return;
-  }
-  Report(s, what + " (quick: z bounds not checked)");
-  Check(s.Count > 500, what + ": enough non-empty pixels");
-  Check(std::isfinite(s.Sum[0]) && std::isfinite(s.Sum[1]) && std::isfinite(s.Global),
-    what + ": finite radiance");
-}
+using tyndall_test::CheckPictureUnbiased;
+using tyndall_test::CheckStatistic;
 
 // A Gaussian blob of scalars (peak 8) at 16^3 over [-1, 1]^3, a coloured
 // albedo, HG g = 0.4, a little ambient light and emission, lit by a
@@ -231,7 +201,7 @@ vtkImageData* Trace(vtkVolumetricPathTracer* tracer, Scene& scene, int mode, int
 {
   tracer->SetDistanceSampling(mode);
   tracer->SetMaximumBounces(bounces);
-  tracer->SetSamplesPerPixel(Quick() ? std::max(4, samples / 16) : samples);
+  tracer->SetSamplesPerPixel(tyndall_test::PathTracerSamples(samples));
   tracer->SetSeed(seed);
   vtkImageData* image = tracer->Render(scene.Renderer, scene.Volume, kSize, kSize);
   std::cout << "  " << (mode == vtkVolumetricPathTracer::CLOSED_FORM ? "closed form" : "delta")
