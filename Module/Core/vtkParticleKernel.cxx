@@ -48,9 +48,12 @@ void vtkParticleKernel::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 double vtkParticleKernel::Extinction(double r, double radius, double density)
 {
-  return Valid(radius, density)
-    ? ExtinctionOfSquaredDistance(r * r, 1.0 / (radius * radius), density)
-    : 0.0;
+  if (!Valid(radius, density) || !(std::abs(r) < radius))
+  {
+    return 0.0;
+  }
+  const double t = r / radius; // |t| < 1 for any radius: no overflow
+  return ExtinctionOfSquaredRatio(t * t, density);
 }
 
 //------------------------------------------------------------------------------

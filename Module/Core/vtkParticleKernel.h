@@ -53,6 +53,7 @@
 
 #include "TyndallCoreModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkWrappingHints.h" // For VTK_WRAPEXCLUDE
 
 class TYNDALLCORE_EXPORT vtkParticleKernel : public vtkObject
 {
@@ -65,17 +66,18 @@ public:
   static double Extinction(double r, double radius, double density);
 
   /**
-   * Extinction() from the squared distance `r2` and the kernel's
-   * `inverseSquaredRadius` (1 / R^2), for a kernel its caller has checked
-   * (R finite and > 0, density finite and >= 0): rho (1 - r2 / R^2)^2 inside
-   * the sphere, 0 outside and for a NaN r2. Inline, with no square root: the
-   * CPU's sums over every particle near a sample (vtkTyndallParticles).
-   * Extinction() is this after its checks.
+   * The kernel at the squared ratio `s2` = |x - c|^2 / R^2 of the distance to
+   * the radius: rho (1 - s2)^2 below 1, 0 from 1 on and for a NaN s2.
+   * Extinction() checks its arguments and calls it; this checks nothing (a
+   * NaN or negative density passes through): for a caller that has checked
+   * the density and computes s2 itself. Inline, with no square root: the
+   * CPU's sums over every particle near a sample (vtkTyndallParticles). Not
+   * wrapped.
    */
-  static double ExtinctionOfSquaredDistance(double r2, double inverseSquaredRadius, double density)
+  VTK_WRAPEXCLUDE static double ExtinctionOfSquaredRatio(double s2, double density)
   {
-    const double q = 1.0 - r2 * inverseSquaredRadius;
-    return q > 0.0 ? density * q * q : 0.0;
+    const double q = 1.0 - s2;
+    return s2 < 1.0 ? density * q * q : 0.0;
   }
 
   /// The extinction integrated over space: 32 pi rho R^3 / 105.

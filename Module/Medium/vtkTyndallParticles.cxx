@@ -119,8 +119,9 @@ bool vtkTyndallParticles::Update(vtkPolyData* particles, std::string& error)
       return false;
     }
     this->Radius[i] = r;
-    c[3] = 1.0 / (r * r);
-    c[4] = rho;
+    c[3] = r * r;
+    c[4] = 1.0 / c[3];
+    c[5] = rho;
     for (int a = 0; a < 3; ++a)
     {
       this->Bounds[2 * a] = i == 0 ? c[a] - r : std::min(this->Bounds[2 * a], c[a] - r);
@@ -138,7 +139,7 @@ bool vtkTyndallParticles::Update(vtkPolyData* particles, std::string& error)
       v[a] = static_cast<float>(k[a]);
     }
     v[3] = static_cast<float>(this->Radius[i]);
-    v[4] = static_cast<float>(k[4]);
+    v[4] = static_cast<float>(k[5]);
   }
   this->BuildCells();
   this->ReadTime.Modified();
@@ -214,7 +215,7 @@ void vtkTyndallParticles::BuildCells()
     double sum = 0.0;
     for (vtkIdType k = this->CellStart[c]; k < this->CellStart[c + 1]; ++k)
     {
-      sum += this->Kernels[KernelSize * this->CellParticles[k] + 4];
+      sum += this->Kernels[KernelSize * this->CellParticles[k] + 5];
     }
     this->DensityBound = std::max(this->DensityBound, sum);
   }
@@ -273,9 +274,10 @@ double vtkTyndallParticles::Sum(const double x[3], double* color) const
     const vtkIdType i = this->CellParticles[k];
     const double* c = this->Kernels.data() + KernelSize * i;
     const double dx = x[0] - c[0], dy = x[1] - c[1], dz = x[2] - c[2];
-    // (Update() checked every radius and density.)
-    const double e =
-      vtkParticleKernel::ExtinctionOfSquaredDistance(dx * dx + dy * dy + dz * dz, c[3], c[4]);
+    // Inside the sphere: r^2 below R^2, the same product (0 on the sphere,
+    // exactly). Update() checked every radius and density.
+    const double r2 = dx * dx + dy * dy + dz * dz;
+    const double e = r2 < c[3] ? vtkParticleKernel::ExtinctionOfSquaredRatio(r2 * c[4], c[5]) : 0.0;
     sum += e;
     if (color && e > 0.0)
     {

@@ -114,9 +114,11 @@ private:
   // The cell of a data coordinate along axis a, clamped to the grid.
   int CellIndex(int a, double x) const;
 
-  // Per particle: centre x, y, z, 1 / R^2 and density (Sum()'s reads, side
-  // by side), and the radius.
-  static constexpr int KernelSize = 5;
+  // Per particle: centre x, y, z, R^2, 1 / R^2 and density (Sum()'s reads,
+  // side by side), and the radius. A radius whose square underflows has no
+  // extent (nothing lies inside: its mass is 0), one whose square overflows
+  // fills space (1 / R^2 is 0).
+  static constexpr int KernelSize = 6;
   std::vector<double> Kernels;
   std::vector<double> Radius;
   std::vector<double> Colors; // 3 per particle, or none

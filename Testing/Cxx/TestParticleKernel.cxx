@@ -230,6 +230,16 @@ void BadInput()
       K::SegmentDepth(o, d, 3.0, 1.0, c, 1, 1) == 0.0 &&
       K::SegmentDepth(o, d, 0.0, nan, c, 1, 1) == 0.0 && K::ProfileCosineIntegral(nan) == 0.0,
     "invalid particles and rays give 0");
+  // Radii whose square under- or overflows a double: the kernel still of
+  // the distance's ratio to the radius (never 0 inside, never NaN).
+  const double inf = std::numeric_limits<double>::infinity();
+  auto near = [](double v, double expected) { return std::abs(v - expected) < 1e-15; };
+  Check(K::Extinction(0.0, 1e-170, 2.0) == 2.0 &&
+      near(K::Extinction(0.5e-160, 1e-160, 1.0), 0.5625) &&
+      near(K::Extinction(0.5e200, 1e200, 1.0), 0.5625) && K::Extinction(1e200, 1e200, 1.0) == 0.0 &&
+      K::Extinction(inf, 1e200, 1.0) == 0.0 && K::Extinction(-0.5, 1.0, 1.0) == 0.5625 &&
+      K::Extinction(1.0, 1.0, 1.0) == 0.0,
+    "tiny and huge radii, on and off the sphere");
   Check(!K::AddExtinctionCoefficients(0, 1, 2, 0.5, 1, 0, coefficients) &&
       !K::AddExtinctionCoefficients(0, 1, 2, 0.5, 1, 17, coefficients) &&
       !K::AddExtinctionCoefficients(0, 1, 2, 0.5, 1, 4, nullptr) &&

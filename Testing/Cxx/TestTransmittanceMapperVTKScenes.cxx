@@ -1299,7 +1299,7 @@ void Write(vtkImageData* image, const std::string& file)
 // A medium's classification is VTK's: its 2-D function or gradient opacity
 // must make another picture than the 1-D functions alone. `picture` is the
 // window's (the medium without shadows, the method None: the classification
-// alone, at a fiftieth of the shadowed picture's cost); the 1-D functions'
+// alone, cheaper than a brute-force shadowed picture); the 1-D functions'
 // picture is measured against it (into `said`), the property restored.
 // False when the two are alike (40 dB or more); true when the property has
 // neither.
@@ -1318,7 +1318,7 @@ bool ClassifiedAsVTK(
   window->Render();
   const double read = tyndall_test::PSNR(tyndall_test::Grab(window), picture);
   std::ostringstream text;
-  text << std::fixed << std::setprecision(1) << ", " << std::setw(6) << read
+  text << std::left << std::fixed << std::setprecision(1) << ", " << std::setw(6) << read
        << " dB with the 1-D functions alone";
   said = text.str();
   property->SetTransferFunctionMode(twoD ? vtkVolumeProperty::TF_2D : vtkVolumeProperty::TF_1D);

@@ -90,14 +90,12 @@
 namespace
 {
 using tyndall_test::Check;
-using tyndall_test::CheckUnbiased;
+using tyndall_test::CheckPictureUnbiased;
+using tyndall_test::CheckStatistic;
 using tyndall_test::Compare;
 using tyndall_test::Report;
 using tyndall_test::Stats;
 constexpr int kSize = 24;
-
-using tyndall_test::CheckPictureUnbiased;
-using tyndall_test::CheckStatistic;
 
 // A Gaussian blob of scalars (peak 8) at 16^3 over [-1, 1]^3, a coloured
 // albedo, HG g = 0.4, a little ambient light and emission, lit by a

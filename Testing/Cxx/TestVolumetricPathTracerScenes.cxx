@@ -23,7 +23,7 @@
 // The statistics are TyndallTestStatistics.h's (as TestVolumetricPathTracer;
 // the pixels clearer than 0.9, or with values below 0.001 in both images,
 // get no per-pixel z: see kClear). A CPU test: no window is opened (the
-// mappers only describe the volumes). 13 s (Release, 2 cores).
+// mappers only describe the volumes). 9 s (Release, 2 cores, 2026-12-07).
 //
 // TYNDALL_PATH_TRACER_QUICK (the sanitizer suite, as TestVolumetricPathTracer;
 // TyndallTestStatistics.h): every path-traced render with a sixteenth of its
