@@ -21,7 +21,7 @@
 
 set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
-  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 156
+  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 165
   Tyndall::RenderingCxx-TestTransmittanceMapperReference 80
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 80
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77
@@ -41,7 +41,7 @@ set(tyndall_test_costs
   TyndallBenchmark-CinematicSkyQuick 27
   TyndallParaView-MPI 26
   Tyndall::RenderingCxx-TestTransmittanceMapperDepthPeeling 25
-  Tyndall::ReferenceCxx-TestVolumetricPathTracer 25
+  Tyndall::ReferenceCxx-TestVolumetricPathTracer 33
   TyndallIO-FuzzOpenVDBReader 22
   Tyndall::RenderingCxx-TestTransmittanceMapperSky 21
   Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 18

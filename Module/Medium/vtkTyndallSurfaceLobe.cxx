@@ -48,15 +48,16 @@ bool HalfVector(const double l[3], const double v[3], double h[3])
 }
 
 //------------------------------------------------------------------------------
-void vtkTyndallSurfaceLobe::Set(
-  const vtkTyndallShading& shading, const double n[3], const double v[3], const double color[3])
+void vtkTyndallSurfaceLobe::Set(const vtkTyndallShading& shading, const double n[3],
+  const double v[3], const double color[3], int component, double blend, double scale)
 {
-  this->Set(shading.GetDiffuse(), shading.GetSpecular(), shading.GetSpecularPower(), n, v, color);
+  this->Set(shading.GetDiffuse(component), shading.GetSpecular(component),
+    shading.GetSpecularPower(component), n, v, color, blend, scale);
 }
 
 //------------------------------------------------------------------------------
 void vtkTyndallSurfaceLobe::Set(double diffuse, double specular, double power, const double n[3],
-  const double v[3], const double color[3])
+  const double v[3], const double color[3], double blend, double scale)
 {
   const bool normal = n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
   double mean = 0.0;
@@ -69,10 +70,17 @@ void vtkTyndallSurfaceLobe::Set(double diffuse, double specular, double power, c
   }
   this->Specular = std::max(0.0, specular);
   this->Power = std::max(0.0, power);
-  const double d = normal ? mean : 0.0;
-  const double s = normal ? this->Specular * std::min(1.0, 4.0 / (this->Power + 1.0)) : 0.0;
-  this->DiffuseShare = d + s > 0.0 ? d / (d + s) : 0.0;
-  this->SpecularShare = d + s > 0.0 ? s / (d + s) : 0.0;
+  this->Blend = blend > 0.0 ? std::min(blend, 1.0) : 0.0; // (NaN: 0)
+  this->Scale = scale > 0.0 ? scale : 0.0;
+  const double surface = 1.0 - this->Blend;
+  const double d = normal ? surface * mean : 0.0;
+  const double s =
+    normal ? surface * this->Specular * std::min(1.0, 4.0 / (this->Power + 1.0)) : 0.0;
+  const double u = this->Blend * 2.0 * mean;
+  const double sum = d + s + u;
+  this->DiffuseShare = sum > 0.0 ? d / sum : 0.0;
+  this->SpecularShare = sum > 0.0 ? s / sum : 0.0;
+  this->VolumeShare = sum > 0.0 ? u / sum : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -83,15 +91,18 @@ void vtkTyndallSurfaceLobe::Evaluate(const double l[3], double f[3]) const
   {
     return;
   }
-  const double inverse = 1.0 / vtkTyndallSurfaceLobe::LightUnit;
+  const double inverse = this->Scale / vtkTyndallSurfaceLobe::LightUnit;
+  const bool normal = this->N[0] != 0.0 || this->N[1] != 0.0 || this->N[2] != 0.0;
   const double nl = std::abs(vtkMath::Dot(this->N, l));
   double h[3];
-  const double specular = HalfVector(l, this->V, h)
+  const double specular = normal && HalfVector(l, this->V, h)
     ? this->Specular * std::pow(std::abs(vtkMath::Dot(this->N, h)), this->Power)
     : 0.0;
+  const double surface = 1.0 - this->Blend;
   for (int c = 0; c < 3; ++c)
   {
-    f[c] = (this->Diffuse[c] * nl + specular) * inverse;
+    f[c] =
+      (surface * (this->Diffuse[c] * nl + specular) + this->Blend * this->Diffuse[c]) * inverse;
   }
 }
 
@@ -103,7 +114,8 @@ double vtkTyndallSurfaceLobe::Pdf(const double l[3]) const
     return 0.0;
   }
   const double twoPi = 2.0 * vtkMath::Pi();
-  double pdf = this->DiffuseShare * std::abs(vtkMath::Dot(this->N, l)) / twoPi;
+  double pdf = this->DiffuseShare * std::abs(vtkMath::Dot(this->N, l)) / twoPi +
+    this->VolumeShare / (2.0 * twoPi);
   double h[3];
   if (this->SpecularShare > 0.0 && HalfVector(l, this->V, h))
   {
@@ -138,6 +150,12 @@ double vtkTyndallSurfaceLobe::Sample(
     const double axis[3] = { front ? this->N[0] : -this->N[0], front ? this->N[1] : -this->N[1],
       front ? this->N[2] : -this->N[2] };
     AboutAxis(axis, std::sqrt(u1), phi, l);
+  }
+  else if (this->VolumeShare > 0.0 && u0 >= this->DiffuseShare + this->SpecularShare)
+  {
+    // The blending's part: uniformly over the sphere.
+    const double axis[3] = { 0.0, 0.0, 1.0 };
+    AboutAxis(axis, 1.0 - 2.0 * u1, phi, l);
   }
   else
   {

@@ -14,7 +14,8 @@
  *     f(v, l) = Kd c |n.l| / (2 pi) + Ks |n.h|^p / (2 pi)      (per steradian)
  *
  * c the colour function's colour, Kd, Ks and p the property's Diffuse,
- * Specular and SpecularPower of component 0. The diffuse lobe scatters the
+ * Specular and SpecularPower (of component 0, or of the independent
+ * component the collision is shaded as). The diffuse lobe scatters the
  * share Kd c of the light (it integrates to Kd c over the sphere), the
  * specular one at most 4 Ks / (p + 1) of it: with Kd + 4 Ks / (p + 1) <= 1
  * (VTK's defaults 0.7, 0.2 and 10: 0.77) no collision adds energy.
@@ -25,19 +26,35 @@
  * its sky by LightUnit in a scene whose volume is shaded, so that the first
  * bounce of a light is VTK's own term, Kd c |n.l| E + Ks |n.h|^p E
  * (vtkTyndallShading::AddLight()), and the bounces after it are this
- * lobe's, which does not add energy. VTK's ambient term Ka c stays what it
+ * lobe's, which does not add energy (without the blending below). VTK's
+ * ambient term Ka c stays what it
  * is in VTK, an emission per unit extinction (not scaled); VTK's clamp of
  * the shaded colour to 1 does not apply (light is not clamped in a path).
  *
- * Where the gradient is 0 (n = 0) the lobe is 0: the collision absorbs, as
- * VTK's shading gives such a sample its ambient term alone.
+ * Where the gradient is 0 (n = 0) the lobe is 0 (but the blending's part
+ * below): the collision absorbs, as VTK's shading gives such a sample its
+ * ambient term alone.
+ *
+ * **Volumetric scattering blending.** VTK 9.2's blending (vtkTyndallShading:
+ * the weight k of a collision, from its gradient magnitude and opacity)
+ * mixes a volumetric term into the lobe, isotropic and without a normal,
+ * whose first bounce of a light is VTK's Kd c E as the surface's is:
+ *
+ *     f_k(v, l) = (1 - k) f(v, l) + k Kd c / (2 pi)
+ *
+ * (at n = 0 the surface part is 0 and the volumetric one remains, as VTK
+ * gives such a sample k V). The volumetric part scatters 2 Kd c of the light
+ * (the sphere's 4 pi against the lobe's light unit 2 pi): above Kd c = 1/2
+ * its collisions add energy, which the paths' bounce limit bounds, as VTK's
+ * term does for its one bounce.
  *
  * Sample() draws l from the mixture of a two-sided cosine lobe about n and
  * Blinn-Phong's half-vector lobe (h about n turned towards v, cos theta_h =
  * u^(1 / (p + 1)), l the mirror of v about h), each chosen in proportion
- * to its share (Kd times the colour's mean, Ks min(1, 4 / (p + 1))); Pdf()
- * is that mixture's density, which Sample() returns with f / Pdf() per
- * channel. Internal to Tyndall::Medium; not wrapped.
+ * to its share (Kd times the colour's mean, Ks min(1, 4 / (p + 1)), both
+ * times 1 - k) or, with the share k 2 Kd times the colour's mean, uniformly
+ * over the sphere; Pdf() is that mixture's density, which Sample() returns
+ * with f / Pdf() per channel. Internal to Tyndall::Medium; not wrapped.
  */
 
 #ifndef vtkTyndallSurfaceLobe_h
@@ -54,22 +71,31 @@ public:
   static const double LightUnit;
 
   /**
-   * Sets the lobe of a collision: `shading`'s coefficients of component 0,
-   * the unit normal n (or 0), the unit direction v towards where the path
-   * came from and the colour c.
+   * Sets the lobe of a collision: `shading`'s coefficients of `component`
+   * (0 .. 3), the unit normal n (or 0), the unit direction v towards where
+   * the path came from, the colour c and the blending weight k in [0, 1]
+   * (vtkTyndallShading::BlendWeight(); 0: the surface lobe alone). f is
+   * `scale` (at least 0) times the lobe above: independent components'
+   * parts in the mixture may add up to other than 1 (VTK's mixture,
+   * vtkTyndallComponents::Parts()), and a collision shaded as one part
+   * drawn with its share of them carries their sum.
    */
-  void Set(
-    const vtkTyndallShading& shading, const double n[3], const double v[3], const double color[3]);
+  void Set(const vtkTyndallShading& shading, const double n[3], const double v[3],
+    const double color[3], int component = 0, double blend = 0.0, double scale = 1.0);
 
   /**
    * Sets the lobe from the coefficients Kd, Ks and p themselves (what Set()
-   * reads from a vtkTyndallShading).
+   * reads from a vtkTyndallShading), the blending weight k (clamped to
+   * [0, 1]) and the scale.
    */
   void Set(double diffuse, double specular, double power, const double n[3], const double v[3],
-    const double color[3]);
+    const double color[3], double blend = 0.0, double scale = 1.0);
 
-  /// Whether the collision scatters at all (a normal and a lobe of any weight).
-  bool Scatters() const { return this->DiffuseShare + this->SpecularShare > 0.0; }
+  /// Whether the collision scatters at all (a lobe of any weight).
+  bool Scatters() const
+  {
+    return this->DiffuseShare + this->SpecularShare + this->VolumeShare > 0.0;
+  }
 
   /// f(v, l) per channel (per steradian) for the unit direction l.
   void Evaluate(const double l[3], double f[3]) const;
@@ -90,8 +116,11 @@ private:
   double Diffuse[3] = { 0.0, 0.0, 0.0 }; // Kd c
   double Specular = 0.0;                 // Ks
   double Power = 0.0;                    // p
+  double Blend = 0.0;                    // k
+  double Scale = 1.0;                    // f's factor
   double DiffuseShare = 0.0;             // the probability of drawing from the cosine lobe
-  double SpecularShare = 0.0;            // ... and from the half-vector lobe
+  double SpecularShare = 0.0;            // ... from the half-vector lobe
+  double VolumeShare = 0.0;              // ... and from the sphere (the blending's part)
 };
 
 #endif

@@ -461,21 +461,78 @@ private:
 
   // The surface lobe of a collision in the shaded volume at its own point p
   // (vtkTyndallSurfaceLobe): the gradient's normal, towards where the path
-  // came from (-w).
-  vtkTyndallSurfaceLobe SurfaceLobe(const double p[3], const double w[3], const Point& point) const
+  // came from (-w), with the blending's weight k (vtkTyndallShading::
+  // BlendWeight()); `ambient`: VTK's ambient term Ka c. Independent
+  // components: one drawn with its share of their parts in the mixture
+  // (vtkTyndallGridMedium::ComponentParts(), which add up to P, not always
+  // 1), whose gradient, colour, coefficients and weight k are taken, the
+  // lobe and Ka c times P: an unbiased estimate of the map-based frame's
+  // mixture of their shadings.
+  vtkTyndallSurfaceLobe SurfaceLobe(
+    const double p[3], const double w[3], const Point& point, Random& rng, double ambient[3]) const
   {
     const vtkTyndallGridMedium& grid = *this->S->Surface;
+    const vtkTyndallShading& shading = grid.GetShading();
+    constexpr int most = vtkTyndallComponents::MaximumCount;
+    double weights[most] = { 1.0 }, colors[most][3] = {}, sigma[most] = {};
+    std::copy(point.Albedo, point.Albedo + 3, colors[0]);
+    int part = 0;
+    double parts = 1.0; // P
+    vtkTyndallSurfaceLobe lobe;
+    ambient[0] = ambient[1] = ambient[2] = 0.0;
+    if (grid.GetComponents().GetMode() == vtkTyndallComponents::Independent)
+    {
+      if (!grid.ComponentParts(p, weights, colors, sigma))
+      {
+        return lobe; // missing data: no colour, no lobe
+      }
+      part = DrawPart(weights, grid.GetComponents().GetCount(), rng.Uniform(), parts);
+    }
+    else if (shading.GetBlending() > 0.0)
+    {
+      sigma[0] = grid.Extinction(p);
+    }
     double n[3];
-    grid.FieldGradient(p, n);
+    grid.FieldGradient(p, n, part);
     const double length = vtkMath::Norm(n);
     for (int c = 0; c < 3; ++c)
     {
       n[c] = length > 0.0 ? n[c] / length : 0.0;
+      ambient[c] = parts * shading.GetAmbient(part) * colors[part][c];
     }
+    const double* range = grid.GetComponentRange(part);
+    const double blend =
+      shading.BlendWeight(length, sigma[part], range[1] - range[0], grid.GetMinimumWorldSpacing());
     const double v[3] = { -w[0], -w[1], -w[2] };
-    vtkTyndallSurfaceLobe lobe;
-    lobe.Set(grid.GetShading(), n, v, point.Albedo);
+    lobe.Set(shading, n, v, colors[part], part, blend, parts);
     return lobe;
+  }
+
+  // The part drawn by u in [0, 1) with the probabilities `weights` / P (of
+  // `count`; P, their sum, in `sum`; the last one of positive weight takes
+  // what rounding leaves).
+  static int DrawPart(const double* weights, int count, double u, double& sum)
+  {
+    sum = 0.0;
+    for (int i = 0; i < count; ++i)
+    {
+      sum += std::max(weights[i], 0.0);
+    }
+    double below = 0.0;
+    int last = 0;
+    for (int i = 0; i < count; ++i)
+    {
+      if (weights[i] > 0.0)
+      {
+        below += weights[i];
+        last = i;
+        if (u * sum < below)
+        {
+          return i;
+        }
+      }
+    }
+    return last;
   }
 
   // T_l per channel of a shaded collision at the world point x towards l
@@ -489,19 +546,15 @@ private:
     this->MediaTransmittance(y, nullptr, l, std::max(tMax - offset, 0.0), rng, timing, path, T);
   }
 
-  // The source term of a shaded collision (colour c) at the world point x:
-  // VTK's ambient Ka c, plus each light's E f(v, l) T_l and, with a sky,
+  // The source term of a shaded collision at the world point x: VTK's
+  // ambient term Ka c (`ambient`), plus each light's E f(v, l) T_l and, with a sky,
   // its next-event estimate weighted by the power heuristic against the
   // lobe's sampling (1 at the path's last collision).
-  void SurfaceSource(const double x[3], const Point& point, const vtkTyndallSurfaceLobe& lobe,
+  void SurfaceSource(const double x[3], const double ambient[3], const vtkTyndallSurfaceLobe& lobe,
     bool last, Random& rng, Timing& timing, const PathState& path, double J[3]) const
   {
     const Scene& s = *this->S;
-    const double ambient = s.Surface->GetShading().GetAmbient();
-    for (int c = 0; c < 3; ++c)
-    {
-      J[c] = ambient * point.Albedo[c];
-    }
+    std::copy(ambient, ambient + 3, J);
     if (!lobe.Scatters())
     {
       return;
@@ -719,9 +772,10 @@ private:
     bool last, Random& rng, Timing& timing, PathState& path, double beta[3], double& phasePdf,
     double L[3]) const
   {
-    const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, ray.W, point);
+    double ambient[3];
+    const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, ray.W, point, rng, ambient);
     double J[3];
-    this->SurfaceSource(x, point, lobe, last, rng, timing, path, J);
+    this->SurfaceSource(x, ambient, lobe, last, rng, timing, path, J);
     for (int c = 0; c < 3; ++c)
     {
       L[c] += beta[c] * J[c];
@@ -925,30 +979,13 @@ bool SetUpSampling(int mode, Scene& scene, vtkObject* reporter)
 }
 
 // A plain property's Shade: its collisions scatter as VTK's shaded surfaces
-// (vtkTyndallSurfaceLobe). False (with an error through `reporter`) for
-// what the lobe does not cover: independent components' own gradients,
-// VTK 9.2's volumetric scattering blending.
-bool SetUpSurface(Scene& scene, vtkObject* reporter)
+// (vtkTyndallSurfaceLobe; independent components each with its own
+// gradient, VTK 9.2's volumetric scattering blending in the lobe).
+void SetUpSurface(Scene& scene)
 {
   const vtkTyndallGridMedium& grid = *scene.Shaded;
-  if (grid.GetComponents().GetMode() == vtkTyndallComponents::Independent)
-  {
-    vtkErrorWithObjectMacro(reporter, << "Render: a plain vtkVolumeProperty with Shade on and "
-                                         "independent components (each shaded with its own "
-                                         "gradient) is not path traced.");
-    return false;
-  }
-  if (grid.GetShading().GetBlending() > 0.0)
-  {
-    vtkErrorWithObjectMacro(reporter, << "Render: the volumetric scattering blending "
-                                      << grid.GetShading().GetBlending()
-                                      << " of a shaded plain vtkVolumeProperty is not path "
-                                         "traced; set it to 0.");
-    return false;
-  }
   scene.Surface = &grid;
   scene.SurfaceOffset = vtkTyndallShading::ShadowOffset * grid.GetMinimumWorldSpacing();
-  return true;
 }
 
 // Every light, the sky and the ambient light `unit` times brighter.
@@ -986,9 +1023,9 @@ bool vtkVolumetricPathTracer::RenderImage(
     vtkWarningMacro(<< "The volume's vtkParticipatingMediumProperty has Shade on: its gradient "
                        "surface term (vtkTyndallShading) is not path traced; the medium is.");
   }
-  else if (scene.Shaded && !SetUpSurface(scene, this))
+  else if (scene.Shaded)
   {
-    return false;
+    SetUpSurface(scene);
   }
   if (scene.Isosurfaced)
   {

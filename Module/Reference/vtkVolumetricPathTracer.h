@@ -120,9 +120,7 @@
  * inverted, a majorant so large that delta tracking would take more than
  * 10^7 steps across a medium's box; a volume whose mapper draws it in a
  * projection or isosurface blend mode, vtkTyndallProjection, which is not a
- * medium; a shaded plain property over independent components or with a
- * volumetric scattering blending, below) is
- * reported with vtkErrorMacro and
+ * medium) is reported with vtkErrorMacro and
  * Render() returns nullptr. A volume drawn by another (a camera group's
  * later member) draws nothing of its own: radiance 0, transmittance 1.
  *
@@ -150,19 +148,25 @@
  * collision in the volume, J = Ka c + sum_l E_l f(v, l) T_l (+ the sky's
  * next-event estimate, weighed against the lobe's draws), then a direction
  * drawn from the lobe, the throughput times f / pdf. The lobe is about the
- * scalar's unit gradient (0 where it is 0: the collision only glows with
- * Ka c); the lights, the sky and the ambient light are
- * vtkTyndallSurfaceLobe::LightUnit (2 pi) brighter, so that one bounce is
- * VTK's shading exactly (without its clamp to 1:
- * vtkSingleScatteringReference's picture of it), and the bounces after it
- * do not add energy. As the map-based frame's shading takes T_l, a shaded
+ * scalar's unit gradient (0 where it is 0, but the blending's isotropic
+ * part: without it the collision only glows with Ka c); the lights, the
+ * sky and the ambient light are vtkTyndallSurfaceLobe::LightUnit (2 pi)
+ * brighter, so that one bounce is VTK's shading exactly (without its clamp
+ * to 1: vtkSingleScatteringReference's picture of it), and the bounces
+ * after it do not add energy (the blending's isotropic part may: it
+ * scatters 2 k Kd c). As the map-based frame's shading takes T_l, a shaded
  * collision exchanges its light from vtkTyndallShading::ShadowOffset voxels
  * along its direction: its shadow rays and its scattered ray (a surface does
  * not shadow itself; without the offset one bounce is 26 % darker on the
  * test's blob). A headlight lights from where it is (VTK's shading takes
- * its direction along the camera ray). Refused: independent components
- * (each shaded with its own gradient) and VTK 9.2's volumetric scattering
- * blending. A vtkParticipatingMediumProperty's Shade (its surface term,
+ * its direction along the camera ray). VTK 9.2's volumetric scattering
+ * blending mixes an isotropic part into the lobe (its weight k at the
+ * collision, vtkTyndallShading::BlendWeight(); one bounce is VTK's blended
+ * term). Independent components: a collision is shaded as one of them
+ * (its gradient, colour, coefficients and k), drawn with its share of
+ * their parts in the mixture, the lobe and Ka c times the parts' sum (an
+ * unbiased estimate of VTK's mixture of their shadings). A
+ * vtkParticipatingMediumProperty's Shade (its surface term,
  * added to the medium's scattering) is not traced: a warning, the medium
  * alone.
  *

@@ -10,7 +10,6 @@
 #include "vtkTransmittanceMediumTextures.h"
 #include "vtkTransmittanceScopedTextures.h"
 #include "vtkTransmittanceShaderSource.h"
-#include "vtkTyndallComponents.h"
 #include "vtkTyndallDenoiser.h"
 #include "vtkTyndallDetailMedium.h"
 #include "vtkTyndallEnvironment.h"
@@ -59,15 +58,6 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "a vtkParticipatingMediumProperty's Shade (its gradient surface term) is not path "
            "traced";
-  }
-  if (shading.Enabled() && medium.GetComponents().GetMode() == vtkTyndallComponents::Independent)
-  {
-    return "Shade on independent components (each shaded with its own gradient) is not path "
-           "traced";
-  }
-  if (shading.Enabled() && shading.GetBlending() > 0.0)
-  {
-    return "the volumetric scattering blending of a shaded volume is not path traced";
   }
   if (shading.Enabled() && !frame.Guests.empty())
   {

@@ -108,8 +108,7 @@ public:
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode (neither is a medium: the CPU tracer refuses them
    * too), a vtkParticipatingMediumProperty's Shade (its surface term), a
-   * plain property's Shade over independent components, with a volumetric
-   * scattering blending or beside other volumes (a plain property's Shade
+   * plain property's Shade beside other volumes (a plain property's Shade
    * is otherwise traced: vtkTyndallSurfaceLobe), another volume's emission
    * array, another volume's emission while this one has no table emission,
    * depth peeling (`peeling`), several processes (`distributed`).

@@ -411,13 +411,14 @@ public:
    * A plain vtkVolumeProperty with Shade on (a shaded CT) is traced as the
    * CPU tracer traces it: each collision scatters as VTK's shaded surface
    * (vtkTyndallSurfaceLobe: a lobe about the gradient, the lights' first
-   * bounce VTK's shading term, VTK's ambient term an emission).
+   * bounce VTK's shading term, VTK's ambient term an emission), with VTK
+   * 9.2's volumetric scattering blending (an isotropic part of the lobe)
+   * and over independent components (a collision shaded as one of them).
    *
    * Not path traced yet, each said once in a warning, the map-based frame
    * drawn instead: VTK's depth peeling for volumes, several processes, a
    * vtkParticipatingMediumProperty's Shade (its surface term), a shaded
-   * plain property over independent components, with VTK 9.2's volumetric
-   * scattering blending or beside other volumes; and never (they are not
+   * plain property beside other volumes; and never (they are not
    * media; the CPU tracer refuses them too): the projection and isosurface
    * blend modes.
    */

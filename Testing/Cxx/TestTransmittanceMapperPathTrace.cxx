@@ -12,15 +12,20 @@
 //    drawn as one; two side by side, the other's shadow on this one), fire
 //    from an emission array and a shaded CT (a plain property with Shade on:
 //    vtkTyndallSurfaceLobe, lit by a sun and a spot light; z below 2.4; the
-//    GPU's shadow offset left out z 51, its scattered ray's z 30);
+//    GPU's shadow offset left out z 51, its scattered ray's z 30), with VTK
+//    9.2's volumetric scattering blending 1 (z below 2.1; the lobe's
+//    volumetric part left out, z 21) and over two independent components
+//    with the blending 0.5 (z below 1.3; each part's lobe not scaled by the
+//    parts' sum and without the blending, z 55);
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples (1, 2, 4, then PathTraceSamplesPerFrame, the last trimmed),
 //    a picture that has them all is redrawn unchanged, the same samples a
 //    frame at a time make the same picture (another seed's does not), and a
 //    frame the tracer refuses (a vtkParticipatingMediumProperty's Shade; a
-//    shaded plain property's volumetric scattering blending, or beside
-//    another volume) says so once and draws the map-based frame; a coloured extinction's mean is
+//    shaded plain property beside another volume) says so once and draws
+//    the map-based frame (a shaded one with a blending is traced); a
+//    coloured extinction's mean is
 //    redrawn unchanged, and denoised.
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -91,6 +96,24 @@ void CheckRefusedOnce(Scene& scene, const char* reason, const std::string& what)
       warnings->Last.find(reason) != std::string::npos,
     what);
   scene.Mapper->RemoveObserver(warnings);
+}
+
+// The dense medium (n^3) and its mirror image along x as two components.
+vtkSmartPointer<vtkImageData> TwoComponents(int n)
+{
+  vtkSmartPointer<vtkImageData> dense = tyndall_test::MakeDenseMedium(n);
+  auto two = vtkSmartPointer<vtkImageData>::New();
+  two->CopyStructure(dense);
+  two->AllocateScalars(VTK_FLOAT, 2);
+  vtkDataArray* values = dense->GetPointData()->GetScalars();
+  float* v = static_cast<float*>(two->GetScalarPointer());
+  for (vtkIdType p = 0; p < dense->GetNumberOfPoints(); ++p)
+  {
+    const vtkIdType i = p % n, mirror = p - i + (n - 1 - i);
+    v[2 * p] = static_cast<float>(values->GetComponent(p, 0));
+    v[2 * p + 1] = static_cast<float>(values->GetComponent(mirror, 0));
+  }
+  return two;
 }
 
 // The image's point scalars as the cell scalars of an image one sample
@@ -352,12 +375,14 @@ void Mode()
   CheckRefusedOnce(scene, "gradient surface term",
     "a medium's Shade is refused, said once, and drawn from the maps");
   scene.Property->ShadeOff();
-  // A shaded plain property is traced, but not with VTK 9.2's volumetric
-  // scattering blending, nor beside another volume (on the GPU).
+  // A shaded plain property is traced, with VTK 9.2's volumetric scattering
+  // blending too (its mean against the CPU's: "Shaded CT, blending 1"), but
+  // not beside another volume (on the GPU).
   scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(1.0, 8.0, 0.5));
   scene.Mapper->SetVolumetricScatteringBlending(1.0f);
-  CheckRefusedOnce(
-    scene, "volumetric scattering blending", "a shaded volume's blending is refused, said once");
+  scene.Window->Render();
+  scene.Window->Render();
+  Check(scene.Mapper->GetLastPathTraceSamples() > 0, "a shaded volume's blending is path traced");
   scene.Mapper->SetVolumetricScatteringBlending(0.0f);
   vtkNew<vtkTransmittanceVolumeMapper> otherMapper;
   otherMapper->SetInputData(tyndall_test::MakeCloud(16));
@@ -483,21 +508,54 @@ int TestTransmittanceMapperPathTrace(int, char*[])
   TwoVolumesAgainstCpu();
   // A shaded CT: a plain property with Shade on over the dense medium's
   // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
-  MeanAgainstCpu("Shaded CT", tyndall_test::MakeDenseMedium(32), 0.9, 24, true,
-    [](Scene& scene)
+  const auto shadedCT = [](Scene& scene)
+  {
+    scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9));
+    // A spot light too: a positional light's attenuation and distance.
+    vtkNew<vtkLight> spot;
+    spot->SetLightTypeToSceneLight();
+    spot->SetPositional(true);
+    spot->SetPosition(-1.5, 1.0, 2.5);
+    spot->SetFocalPoint(0.0, 0.0, 0.0);
+    spot->SetConeAngle(30.0);
+    spot->SetAttenuationValues(1.0, 0.2, 0.05);
+    spot->SetColor(0.6, 0.8, 1.0);
+    spot->SetIntensity(1.0);
+    scene.Renderer->AddLight(spot);
+  };
+  MeanAgainstCpu("Shaded CT", tyndall_test::MakeDenseMedium(32), 0.9, 24, true, shadedCT);
+  // With VTK 9.2's volumetric scattering blending (the lobe's isotropic part).
+  MeanAgainstCpu("Shaded CT, blending 1", tyndall_test::MakeDenseMedium(32), 0.9, 24, true,
+    [&shadedCT](Scene& scene)
     {
-      scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9));
-      // A spot light too: a positional light's attenuation and distance.
-      vtkNew<vtkLight> spot;
-      spot->SetLightTypeToSceneLight();
-      spot->SetPositional(true);
-      spot->SetPosition(-1.5, 1.0, 2.5);
-      spot->SetFocalPoint(0.0, 0.0, 0.0);
-      spot->SetConeAngle(30.0);
-      spot->SetAttenuationValues(1.0, 0.2, 0.05);
-      spot->SetColor(0.6, 0.8, 1.0);
-      spot->SetIntensity(1.0);
-      scene.Renderer->AddLight(spot);
+      shadedCT(scene);
+      scene.Mapper->SetVolumetricScatteringBlending(1.0f);
+    });
+  // Two independent components (the ball and its mirror image), each shaded
+  // with its own gradient, colour and coefficients, blended by 0.5: a
+  // collision scatters as one, drawn with the probability of its part.
+  MeanAgainstCpu("Shaded, two independent components", TwoComponents(32), 0.9, 24, true,
+    [&shadedCT](Scene& scene)
+    {
+      shadedCT(scene);
+      auto* property = scene.Volume->GetProperty();
+      vtkNew<vtkPiecewiseFunction> opacity;
+      opacity->AddPoint(6.0, 0.0);
+      opacity->AddPoint(14.0, 0.7);
+      vtkNew<vtkColorTransferFunction> color;
+      color->AddRGBPoint(6.0, 0.4, 0.6, 0.9);
+      color->AddRGBPoint(14.0, 0.6, 0.8, 1.0);
+      property->IndependentComponentsOn();
+      property->SetScalarOpacity(1, opacity);
+      property->SetColor(1, color);
+      property->SetScalarOpacityUnitDistance(1, 0.05);
+      property->SetComponentWeight(1, 0.8);
+      property->ShadeOn(1);
+      property->SetAmbient(1, 0.2);
+      property->SetDiffuse(1, 0.4);
+      property->SetSpecular(1, 0.5);
+      property->SetSpecularPower(1, 30.0);
+      scene.Mapper->SetVolumetricScatteringBlending(0.5f);
     });
   // Fire: black-body emission per unit length from the "temperature" array,
   // its only light (no sun, no ambient, a black background: the emission

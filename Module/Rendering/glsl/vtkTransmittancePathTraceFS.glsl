@@ -517,13 +517,17 @@ vec3 tyndallSampleHG(vec3 w, float g)
 // How a collision scatters: with TYNDALL_SHADING (a plain property's
 // Shade, vtkTyndallSurfaceLobe: its CPU twin) a lobe about the scalar's
 // unit gradient n, towards where the path came from V (h = normalize(l +
-// V)):
-//   f(l) = (Kd c |n.l| + Ks |n.h|^p) / (2 pi),
-// drawn from the mixture of a two-sided cosine lobe and Blinn-Phong's
-// half-vector lobe (shares Diffuse and Specular); else the phase function.
-// The renderer's lights and sky are pathLightUnit (vtkTyndallSurfaceLobe::
-// LightUnit, 2 pi) brighter against the lobe, so that a light's first bounce
-// is VTK's shading term, and a shaded collision exchanges its light from
+// V)), with VTK 9.2's volumetric scattering blending's weight k:
+//   f(l) = ((1 - k) (Kd c |n.l| + Ks |n.h|^p) + k Kd c) / (2 pi),
+// drawn from the mixture of a two-sided cosine lobe, Blinn-Phong's
+// half-vector lobe and the sphere (shares Diffuse, Specular and Volume);
+// else the phase function. Independent components (TYNDALL_COMPONENT_
+// SHADING): one drawn with its share of their parts in the mixture (which
+// add up to P, not always 1), whose gradient, colour, coefficients and k
+// make the lobe, f and Ka c times P (Scale). The renderer's
+// lights and sky are pathLightUnit (vtkTyndallSurfaceLobe::LightUnit, 2 pi)
+// brighter against the lobe, so that a light's first bounce is VTK's
+// shading term, and a shaded collision exchanges its light from
 // shadowOffset along its direction, as the map-based frame's shading takes
 // T_l (a surface does not shadow itself).
 struct TyndallScatterer
@@ -531,9 +535,13 @@ struct TyndallScatterer
 #if TYNDALL_SHADING
   vec3 N;
   vec3 V;
-  vec3 Color;    // c
-  float Diffuse; // the probability of the cosine lobe
-  float Specular; // ... and of the half-vector lobe
+  vec3 Color;     // c
+  vec4 K;         // Ka, Kd, Ks, p (shadingCoefficients[] of the component drawn)
+  float Blend;    // k
+  float Scale;    // f's factor (P)
+  float Diffuse;  // the probability of the cosine lobe
+  float Specular; // ... of the half-vector lobe
+  float Volume;   // ... and of the sphere
 #else
   float Unused;
 #endif
@@ -542,27 +550,64 @@ struct TyndallScatterer
 #if TYNDALL_SHADING
 uniform float pathLightUnit; // vtkTyndallSurfaceLobe::LightUnit
 
-// The lobe at x for the path's direction w and the colour c (the CPU's
-// vtkTyndallSurfaceLobe::Set(), shadingCoefficients[0]: Ka, Kd, Ks, p).
-TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, vec3 color)
+// The lobe of a collision at x (its camera sample s) for the path's
+// direction w (the CPU tracer's SurfaceLobe(), vtkTyndallSurfaceLobe::Set()).
+TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
 {
   TyndallScatterer lobe;
+  int part = 0;
+  float sigma = s.Sigma;
+  lobe.Color = s.Color;
+  lobe.Scale = 1.0;
+#if TYNDALL_COMPONENT_SHADING
+  // The part drawn (the last of positive weight takes what rounding leaves).
+  vec4 parts = max(s.Parts, vec4(0.0));
+  lobe.Scale = parts.x + parts.y + parts.z + parts.w;
+  float u = tyndallRandom() * lobe.Scale;
+  float below = 0.0;
+  bool drawn = false;
+  for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
+  {
+    if (parts[c] > 0.0 && !drawn)
+    {
+      below += parts[c];
+      part = c;
+      drawn = u < below;
+    }
+  }
+  vec4 magnitudes;
+  mat4x3 normals = tyndallComponentNormals(x, magnitudes);
+  float magnitude = magnitudes[part];
+  lobe.N = normals[part];
+  lobe.Color = s.Colors[part];
+  sigma = s.Sigmas[part];
+#else
   vec3 g = tyndallScalarGradient(x);
   float magnitude = length(g);
   lobe.N = magnitude > 0.0 ? g / magnitude : vec3(0.0);
+#endif
   lobe.V = -w;
-  lobe.Color = color;
-  vec4 k = shadingCoefficients[0];
-  float d = magnitude > 0.0 ? max(k.y, 0.0) * (color.r + color.g + color.b) / 3.0 : 0.0;
-  float s = magnitude > 0.0 ? max(k.z, 0.0) * min(1.0, 4.0 / (max(k.w, 0.0) + 1.0)) : 0.0;
-  lobe.Diffuse = d + s > 0.0 ? d / (d + s) : 0.0;
-  lobe.Specular = d + s > 0.0 ? s / (d + s) : 0.0;
+  lobe.K = shadingCoefficients[part];
+#if TYNDALL_SCATTERING_BLEND
+  lobe.Blend = clamp(tyndallBlendWeight(magnitude, blendGradientScale[part], sigma), 0.0, 1.0);
+#else
+  lobe.Blend = 0.0;
+#endif
+  float mean = max(lobe.K.y, 0.0) * (lobe.Color.r + lobe.Color.g + lobe.Color.b) / 3.0;
+  float surface = magnitude > 0.0 ? 1.0 - lobe.Blend : 0.0;
+  float d = surface * mean;
+  float sp = surface * max(lobe.K.z, 0.0) * min(1.0, 4.0 / (max(lobe.K.w, 0.0) + 1.0));
+  float v = lobe.Blend * 2.0 * mean;
+  float total = d + sp + v;
+  lobe.Diffuse = total > 0.0 ? d / total : 0.0;
+  lobe.Specular = total > 0.0 ? sp / total : 0.0;
+  lobe.Volume = total > 0.0 ? v / total : 0.0;
   return lobe;
 }
 
 bool tyndallLobeScatters(TyndallScatterer lobe)
 {
-  return lobe.Diffuse + lobe.Specular > 0.0;
+  return lobe.Diffuse + lobe.Specular + lobe.Volume > 0.0;
 }
 
 // f(l) per channel (vtkTyndallSurfaceLobe::Evaluate()).
@@ -572,27 +617,31 @@ vec3 tyndallLobeValue(TyndallScatterer lobe, vec3 l)
   {
     return vec3(0.0);
   }
-  vec4 k = shadingCoefficients[0];
+  vec4 k = lobe.K;
   vec3 lv = l + lobe.V;
   float specular = 0.0;
-  if (length(lv) > 1e-6)
+  if (length(lv) > 1e-6 && dot(lobe.N, lobe.N) > 0.0)
   {
     // (pow(0, 0) is undefined in GLSL: 1 as the CPU's std::pow, tyndallShadingTerm()'s guard.)
     specular = max(k.z, 0.0) * pow(max(abs(dot(lobe.N, normalize(lv))), 1e-30), max(k.w, 0.0));
   }
-  return (max(k.y, 0.0) * lobe.Color * abs(dot(lobe.N, l)) + specular) / (2.0 * TYNDALL_PI);
+  vec3 diffuse = max(k.y, 0.0) * lobe.Color;
+  return lobe.Scale *
+    ((1.0 - lobe.Blend) * (diffuse * abs(dot(lobe.N, l)) + specular) + lobe.Blend * diffuse) /
+    (2.0 * TYNDALL_PI);
 }
 
 // The density the lobe draws l with (vtkTyndallSurfaceLobe::Pdf()).
 float tyndallLobePdf(TyndallScatterer lobe, vec3 l)
 {
-  float pdf = lobe.Diffuse * abs(dot(lobe.N, l)) / (2.0 * TYNDALL_PI);
+  float pdf =
+    lobe.Diffuse * abs(dot(lobe.N, l)) / (2.0 * TYNDALL_PI) + lobe.Volume / (4.0 * TYNDALL_PI);
   vec3 lv = l + lobe.V;
   if (lobe.Specular > 0.0 && length(lv) > 1e-6)
   {
     vec3 h = normalize(lv);
     float vh = abs(dot(lobe.V, h));
-    float p = max(shadingCoefficients[0].w, 0.0);
+    float p = max(lobe.K.w, 0.0);
     if (vh > 0.0)
     {
       pdf += lobe.Specular * (p + 1.0) / (2.0 * TYNDALL_PI) *
@@ -631,10 +680,14 @@ vec3 tyndallSampleLobe(TyndallScatterer lobe, out vec3 weight, out float pdf)
     vec3 axis = u0 < 0.5 * lobe.Diffuse ? lobe.N : -lobe.N;
     l = tyndallAboutAxis(axis, sqrt(u1), phi);
   }
+  else if (lobe.Volume > 0.0 && u0 >= lobe.Diffuse + lobe.Specular)
+  {
+    l = tyndallAboutAxis(vec3(0.0, 0.0, 1.0), 1.0 - 2.0 * u1, phi); // the blending's part
+  }
   else
   {
     vec3 axis = dot(lobe.N, lobe.V) < 0.0 ? -lobe.N : lobe.N;
-    vec3 h = tyndallAboutAxis(axis, pow(u1, 1.0 / (max(shadingCoefficients[0].w, 0.0) + 1.0)), phi);
+    vec3 h = tyndallAboutAxis(axis, pow(u1, 1.0 / (max(lobe.K.w, 0.0) + 1.0)), phi);
     l = normalize(2.0 * dot(lobe.V, h) * h - lobe.V);
   }
   pdf = tyndallLobePdf(lobe, l);
@@ -691,7 +744,7 @@ vec3 tyndallLobeSkyEvent(vec3 x, TyndallScatterer lobe, bool last)
 vec3 tyndallPathCollisionLight(
   vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool last)
 {
-  vec3 sum = shadingCoefficients[0].x * s.Color;
+  vec3 sum = lobe.Scale * lobe.K.x * lobe.Color;
   if (!tyndallLobeScatters(lobe))
   {
     return sum;
@@ -740,7 +793,7 @@ float tyndallPathSkyUnit()
   return pathLightUnit;
 }
 #else
-TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, vec3 color)
+TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
 {
   return TyndallScatterer(0.0);
 }
@@ -819,7 +872,7 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
       break;
     }
     bool last = bounce + 1 >= pathBounces;
-    TyndallScatterer scatterer = tyndallPathScatterer(x, w, s.Color);
+    TyndallScatterer scatterer = tyndallPathScatterer(x, w, s);
     radiance += beta * tyndallPathCollisionLight(x, w, s, scatterer, last);
     if (last || tyndallPathSpent() || !tyndallPathScatter(scatterer, s, x, beta, w, o, phasePdf))
     {
