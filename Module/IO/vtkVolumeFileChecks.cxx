@@ -35,13 +35,6 @@ std::string Trim(const std::string& text)
   return text.substr(begin, end - begin);
 }
 
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 // A path named in a header: relative to the header's directory.
 std::string Beside(const std::string& header, const std::string& name)
 {
@@ -179,6 +172,14 @@ std::string Triple(const double v[3])
 namespace tyndall_io
 {
 std::string CheckCompressed(const RawData& raw, double bytes);
+
+//------------------------------------------------------------------------------
+std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
 
 //------------------------------------------------------------------------------
 std::string FormatBytes(double bytes)

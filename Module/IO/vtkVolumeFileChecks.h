@@ -80,6 +80,9 @@ std::string CheckXmlImageHeader(const std::string& path);
 
 /// A byte count as text: "262144 bytes (256 KiB)".
 std::string FormatBytes(double bytes);
+
+/// `text` in lower case (ASCII letters).
+std::string Lower(std::string text);
 }
 
 #endif

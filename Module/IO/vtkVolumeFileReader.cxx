@@ -48,13 +48,6 @@ vtkStandardNewMacro(vtkVolumeFileReader);
 
 namespace
 {
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 bool EndsWith(const std::string& text, const std::string& suffix)
 {
   return text.size() >= suffix.size() &&
@@ -169,7 +162,7 @@ vtkVolumeFileReader::~vtkVolumeFileReader()
 bool vtkVolumeFileReader::CanReadFile(const char* path)
 {
   return path && *path &&
-    (vtksys::SystemTools::FileIsDirectory(path) || FormatOf(Lower(path)) != nullptr);
+    (vtksys::SystemTools::FileIsDirectory(path) || FormatOf(tyndall_io::Lower(path)) != nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -255,7 +248,8 @@ bool vtkVolumeFileReader::Read()
     return false;
   }
   const bool directory = vtksys::SystemTools::FileIsDirectory(path);
-  if (this->GridName && *this->GridName && (directory || !EndsWith(Lower(path), ".vdb")))
+  if (this->GridName && *this->GridName &&
+    (directory || !EndsWith(tyndall_io::Lower(path), ".vdb")))
   {
     this->Error = path + ": a grid name is only meaningful for .vdb files";
     return false;
@@ -335,7 +329,7 @@ bool vtkVolumeFileReader::ReadFile(const std::string& path)
     return false;
   }
   fclose(file);
-  const char* format = FormatOf(Lower(path));
+  const char* format = FormatOf(tyndall_io::Lower(path));
   if (!format)
   {
     this->Error = path + ": unknown volume format (extension '" +
@@ -500,7 +494,7 @@ bool vtkVolumeFileReader::ReadNifti(const std::string& path)
   }
   reader->SetFileName(path.c_str());
   reader->TimeAsVectorOn(); // every frame, then Frame picks one
-  const bool gzip = EndsWith(Lower(path), ".gz");
+  const bool gzip = EndsWith(tyndall_io::Lower(path), ".gz");
   const bool ok = this->RunReader(reader, path, "NIfTI",
     [&](double bytes)
     {

@@ -16,7 +16,6 @@
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 // The mean of a texel's three channels: its weight in the sampling.
 double Luminance(const float* L)
@@ -316,9 +315,9 @@ bool vtkTyndallEnvironment::ReadImage(vtkImageData* image, bool srgb, std::strin
 //------------------------------------------------------------------------------
 double vtkTyndallEnvironment::SolidAngle(int j) const
 {
-  const double e0 = kPi * (static_cast<double>(j) / this->Height - 0.5);
-  const double e1 = kPi * (static_cast<double>(j + 1) / this->Height - 0.5);
-  return 2.0 * kPi / this->Width * (std::sin(e1) - std::sin(e0));
+  const double e0 = vtkMath::Pi() * (static_cast<double>(j) / this->Height - 0.5);
+  const double e1 = vtkMath::Pi() * (static_cast<double>(j + 1) / this->Height - 0.5);
+  return 2.0 * vtkMath::Pi() / this->Width * (std::sin(e1) - std::sin(e0));
 }
 
 //------------------------------------------------------------------------------
@@ -347,7 +346,7 @@ void vtkTyndallEnvironment::Tabulate()
   this->Total = Accumulate(rows, this->RowTable.data());
   for (int c = 0; c < 3; ++c)
   {
-    this->Mean[c] = mean[c] / (4.0 * kPi);
+    this->Mean[c] = mean[c] / (4.0 * vtkMath::Pi());
   }
 }
 
@@ -357,8 +356,8 @@ void vtkTyndallEnvironment::Texel(const double w[3], int& i, int& j) const
   const double x = vtkMath::Dot(w, this->Right);
   const double y = vtkMath::Dot(w, this->Up);
   const double z = vtkMath::Dot(w, this->Front);
-  const double u = 0.5 + std::atan2(x, z) / (2.0 * kPi);
-  const double v = 0.5 + std::atan2(y, std::sqrt(x * x + z * z)) / kPi;
+  const double u = 0.5 + std::atan2(x, z) / (2.0 * vtkMath::Pi());
+  const double v = 0.5 + std::atan2(y, std::sqrt(x * x + z * z)) / vtkMath::Pi();
   i = std::min(std::max(static_cast<int>(std::floor(u * this->Width)), 0), this->Width - 1);
   j = std::min(std::max(static_cast<int>(std::floor(v * this->Height)), 0), this->Height - 1);
 }
@@ -366,8 +365,8 @@ void vtkTyndallEnvironment::Texel(const double w[3], int& i, int& j) const
 //------------------------------------------------------------------------------
 void vtkTyndallEnvironment::Direction(double u, double v, double w[3]) const
 {
-  const double phi = 2.0 * kPi * (u / this->Width - 0.5);
-  const double elevation = kPi * (v / this->Height - 0.5);
+  const double phi = 2.0 * vtkMath::Pi() * (u / this->Width - 0.5);
+  const double elevation = vtkMath::Pi() * (v / this->Height - 0.5);
   const double x = std::cos(elevation) * std::sin(phi);
   const double y = std::sin(elevation);
   const double z = std::cos(elevation) * std::cos(phi);
@@ -416,9 +415,9 @@ double vtkTyndallEnvironment::Sample(const double u[4], double w[3], double L[3]
   const int H = this->Height;
   const int j = Search(this->RowTable.data(), H, u[0]);
   const int i = Search(&this->ColumnTable[static_cast<size_t>(j) * W], W, u[1]);
-  const double phi = 2.0 * kPi * ((i + u[2]) / W - 0.5);
-  const double s0 = std::sin(kPi * (static_cast<double>(j) / H - 0.5));
-  const double s1 = std::sin(kPi * (static_cast<double>(j + 1) / H - 0.5));
+  const double phi = 2.0 * vtkMath::Pi() * ((i + u[2]) / W - 0.5);
+  const double s0 = std::sin(vtkMath::Pi() * (static_cast<double>(j) / H - 0.5));
+  const double s1 = std::sin(vtkMath::Pi() * (static_cast<double>(j + 1) / H - 0.5));
   const double s = std::min(1.0, std::max(-1.0, s0 + u[3] * (s1 - s0)));
   const double rho = std::sqrt(std::max(0.0, 1.0 - s * s));
   const double x = rho * std::sin(phi);

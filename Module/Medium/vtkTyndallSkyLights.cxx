@@ -8,7 +8,6 @@
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 // The sky's table, each texel cut into Sx x Sy equal parts so that the cut
 // has at least MinimumColumns x MinimumRows cells to choose from (a
@@ -33,10 +32,10 @@ public:
     this->RowSin.resize(this->H);
     for (int j = 0; j < this->H; ++j)
     {
-      const double e0 = kPi * (static_cast<double>(j) / this->H - 0.5);
-      const double e1 = kPi * (static_cast<double>(j + 1) / this->H - 0.5);
-      const double e = kPi * ((j + 0.5) / this->H - 0.5);
-      this->Omega[j] = 2.0 * kPi / this->W * (std::sin(e1) - std::sin(e0));
+      const double e0 = vtkMath::Pi() * (static_cast<double>(j) / this->H - 0.5);
+      const double e1 = vtkMath::Pi() * (static_cast<double>(j + 1) / this->H - 0.5);
+      const double e = vtkMath::Pi() * ((j + 0.5) / this->H - 0.5);
+      this->Omega[j] = 2.0 * vtkMath::Pi() / this->W * (std::sin(e1) - std::sin(e0));
       this->RowCos[j] = std::cos(e);
       this->RowSin[j] = std::sin(e);
     }
@@ -44,7 +43,7 @@ public:
     this->ColumnSin.resize(this->W);
     for (int i = 0; i < this->W; ++i)
     {
-      const double phi = 2.0 * kPi * ((i + 0.5) / this->W - 0.5);
+      const double phi = 2.0 * vtkMath::Pi() * ((i + 0.5) / this->W - 0.5);
       this->ColumnCos[i] = std::cos(phi);
       this->ColumnSin[i] = std::sin(phi);
     }
@@ -129,9 +128,9 @@ bool Cut(const Grid& grid, Region r, Region& a, Region& b)
   r.I1 = i0 + c1;
   r.J0 = j0 + r0;
   r.J1 = j0 + r1;
-  const double middle = kPi * (0.5 * (r.J0 + r.J1) / grid.H - 0.5);
-  const double width = 2.0 * kPi * n[0] / grid.W * std::cos(middle);
-  const double height = kPi * n[1] / grid.H;
+  const double middle = vtkMath::Pi() * (0.5 * (r.J0 + r.J1) / grid.H - 0.5);
+  const double width = 2.0 * vtkMath::Pi() * n[0] / grid.W * std::cos(middle);
+  const double height = vtkMath::Pi() * n[1] / grid.H;
   const bool acrossRows = n[0] < 2 || (n[1] >= 2 && height >= width);
   const double* profile = acrossRows ? &rows[r0] : &columns[c0];
   const int bins = acrossRows ? n[1] : n[0];

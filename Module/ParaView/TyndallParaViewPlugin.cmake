@@ -77,6 +77,7 @@ ExternalProject_Add(TyndallParaViewPlugin
     "-DCMAKE_INSTALL_LIBDIR=${CMAKE_INSTALL_LIBDIR}"
     "-DCMAKE_C_COMPILER=${CMAKE_C_COMPILER}"
     "-DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}"
+    "-DCMAKE_UNITY_BUILD=${TYNDALL_UNITY_BUILD}"
   INSTALL_COMMAND ""
   # The sub-build tracks its own sources (Module/Core, IO, Rendering too).
   BUILD_ALWAYS    ON)

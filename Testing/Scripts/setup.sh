@@ -117,10 +117,12 @@ paraview_dir() {
   fi
 }
 
+# Both builds compile the libraries in batches (TYNDALL_UNITY_BUILD: a
+# fresh build's libraries in about half the time; CMakeLists.txt).
 build_tyndall() {
   local paraview
   paraview="$(paraview_dir)"
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DTYNDALL_UNITY_BUILD=ON \
     -DPython3_EXECUTABLE=/usr/bin/python3 "-DParaView_DIR=$paraview" >&2
   cmake --build "$build" -j "$jobs" >&2
 }
@@ -132,7 +134,7 @@ build_sanitized() {
   if [ ! -f "$sanitizer_build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$sanitizer_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1" \
-      -DTYNDALL_SANITIZE=ON -DTYNDALL_ENABLE_FUZZING=OFF \
+      -DTYNDALL_SANITIZE=ON -DTYNDALL_ENABLE_FUZZING=OFF -DTYNDALL_UNITY_BUILD=ON \
       -DPython3_EXECUTABLE=/usr/bin/python3 >&2
   fi
   cmake --build "$sanitizer_build" -j "$jobs" >&2
