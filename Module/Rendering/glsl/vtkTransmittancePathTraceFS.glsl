@@ -588,11 +588,7 @@ TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
 #endif
   lobe.V = -w;
   lobe.K = shadingCoefficients[part];
-#if TYNDALL_SCATTERING_BLEND
-  lobe.Blend = clamp(tyndallBlendWeight(magnitude, blendGradientScale[part], sigma), 0.0, 1.0);
-#else
-  lobe.Blend = 0.0;
-#endif
+  lobe.Blend = clamp(tyndallBlendWeight(magnitude, part, sigma), 0.0, 1.0);
   float mean = max(lobe.K.y, 0.0) * (lobe.Color.r + lobe.Color.g + lobe.Color.b) / 3.0;
   float surface = magnitude > 0.0 ? 1.0 - lobe.Blend : 0.0;
   float d = surface * mean;

@@ -354,7 +354,7 @@ uniform float scatteringBlending; // b in (0, 2]
 uniform vec4 blendGradientScale;
 uniform float blendStep;
 
-float tyndallBlendWeight(float gradient, float scale, float sigma)
+float tyndallBlendWeight(float gradient, int component, float sigma)
 {
   float b = scatteringBlending;
   if (!(b > 0.0))
@@ -362,8 +362,14 @@ float tyndallBlendWeight(float gradient, float scale, float sigma)
     return 0.0;
   }
   // (VTK 9.2 passes b / 2 to its shader and picks the branch by b.)
-  float e = exp(-b * gradient * scale * (1.0 - exp(-sigma * blendStep)));
+  float e = exp(-b * gradient * blendGradientScale[component] * (1.0 - exp(-sigma * blendStep)));
   return b < 1.0 ? b * e : (2.0 - b) * e + b - 1.0;
+}
+#else
+// No blending: the surface term alone (the path tracer's lobe reads it).
+float tyndallBlendWeight(float gradient, int component, float sigma)
+{
+  return 0.0;
 }
 #endif
 
@@ -405,7 +411,7 @@ vec3 tyndallSurfaceShading(vec3 x, vec3 normalAt, vec3 w, vec3 color, float sigm
 #endif
   }
 #if TYNDALL_SCATTERING_BLEND
-  float k = tyndallBlendWeight(magnitude, blendGradientScale.x, sigma);
+  float k = tyndallBlendWeight(magnitude, 0, sigma);
   return clamp((1.0 - k) * surface + k * volume, 0.0, 1.0);
 #else
   return clamp(surface, 0.0, 1.0);
@@ -472,7 +478,7 @@ vec3 tyndallComponentShading(
   for (int c = 0; c < TYNDALL_COMPONENTS; ++c)
   {
 #if TYNDALL_SCATTERING_BLEND
-    float k = tyndallBlendWeight(magnitudes[c], blendGradientScale[c], sigma[c]);
+    float k = tyndallBlendWeight(magnitudes[c], c, sigma[c]);
     mixed += parts[c] * clamp((1.0 - k) * surface[c] + k * volume[c], 0.0, 1.0);
 #else
     mixed += parts[c] * clamp(surface[c], 0.0, 1.0);
