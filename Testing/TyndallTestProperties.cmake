@@ -41,9 +41,9 @@ set(tyndall_test_costs
   TyndallBenchmark-CinematicSkyQuick 27
   TyndallParaView-MPI 26
   Tyndall::RenderingCxx-TestTransmittanceMapperDepthPeeling 25
-  Tyndall::ReferenceCxx-TestVolumetricPathTracer 33
+  Tyndall::ReferenceCxx-TestVolumetricPathTracer 34
   TyndallIO-FuzzOpenVDBReader 22
-  Tyndall::RenderingCxx-TestTransmittanceMapperSky 21
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky 24
   Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 18
   TyndallParaView-Time 18
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 17

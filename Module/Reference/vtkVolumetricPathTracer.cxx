@@ -125,8 +125,13 @@ struct Scene : public vtkTyndallReferenceScene
   std::uint64_t Seed = 1;
   double* StandardError = nullptr;
   /// The volume's grid when its collisions scatter as VTK's shaded surfaces
-  /// (vtkTyndallSurfaceLobe; a plain property with Shade on), else null.
+  /// (vtkTyndallSurfaceLobe; a plain property with Shade on) or add their
+  /// surface term (SurfaceAdded), else null.
   const vtkTyndallGridMedium* Surface = nullptr;
+  /// A vtkParticipatingMediumProperty's Shade: the collisions scatter by
+  /// the phase function and add the lobe's light, LightUnit times (the
+  /// lights not scaled; the lobe never sampled).
+  bool SurfaceAdded = false;
   /// How far a shaded collision's light is exchanged from (world, along its direction).
   double SurfaceOffset = 0.0;
   /// The sky's radiance factor (vtkTyndallSurfaceLobe::LightUnit in a shaded scene).
@@ -480,7 +485,9 @@ private:
     double parts = 1.0; // P
     vtkTyndallSurfaceLobe lobe;
     ambient[0] = ambient[1] = ambient[2] = 0.0;
-    if (grid.GetComponents().GetMode() == vtkTyndallComponents::Independent)
+    // (An added surface term: component 0's, the mixture's colour.)
+    if (!this->S->SurfaceAdded &&
+      grid.GetComponents().GetMode() == vtkTyndallComponents::Independent)
     {
       if (!grid.ComponentParts(p, weights, colors, sigma))
       {
@@ -728,7 +735,7 @@ private:
       point = Point(); // missing data: no colour, no emission
     }
     const bool single = s.Parameters->GetSingleScattering();
-    if (single && k == 0 && s.Surface)
+    if (single && k == 0 && s.Surface && !s.SurfaceAdded)
     {
       return this->ScatterAtSurface(ray, x, p, point, last, rng, timing, path, beta, phasePdf, L);
     }
@@ -743,6 +750,10 @@ private:
       if (s.Environment && s.Environment->Enabled())
       {
         this->AddSkyEvent(ray, t, x, point.Albedo, last, rng, timing, path, J);
+      }
+      if (k == 0 && s.SurfaceAdded)
+      {
+        this->AddSurfaceTerm(ray.W, x, p, point, rng, timing, path, J);
       }
     }
     for (int c = 0; c < 3; ++c)
@@ -763,6 +774,25 @@ private:
     ray.T0 = 0.0;
     ray.T1 = kInfinity;
     return true;
+  }
+
+  // A vtkParticipatingMediumProperty's Shade at a collision in the volume
+  // (world point x, own point p, reached along w): adds its surface term to
+  // J, LightUnit times the lobe's light (the lights and sky not scaled), the
+  // sky's by its next-event estimate alone (weight 1: the lobe is not
+  // sampled).
+  void AddSurfaceTerm(const double w[3], const double x[3], const double p[3], const Point& point,
+    Random& rng, Timing& timing, const PathState& path, double J[3]) const
+  {
+    double ambient[3];
+    const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, w, point, rng, ambient);
+    const double none[3] = { 0.0, 0.0, 0.0 }; // no ambient term
+    double surface[3];
+    this->SurfaceSource(x, none, lobe, true, rng, timing, path, surface);
+    for (int c = 0; c < 3; ++c)
+    {
+      J[c] += vtkTyndallSurfaceLobe::LightUnit * surface[c];
+    }
   }
 
   // Scatter() at a collision in the shaded volume (world point x, own point
@@ -980,11 +1010,13 @@ bool SetUpSampling(int mode, Scene& scene, vtkObject* reporter)
 
 // A plain property's Shade: its collisions scatter as VTK's shaded surfaces
 // (vtkTyndallSurfaceLobe; independent components each with its own
-// gradient, VTK 9.2's volumetric scattering blending in the lobe).
+// gradient, VTK 9.2's volumetric scattering blending in the lobe); a
+// vtkParticipatingMediumProperty's: they add the lobe's light.
 void SetUpSurface(Scene& scene)
 {
   const vtkTyndallGridMedium& grid = *scene.Shaded;
   scene.Surface = &grid;
+  scene.SurfaceAdded = grid.GetShading().GetAdditive();
   scene.SurfaceOffset = vtkTyndallShading::ShadowOffset * grid.GetMinimumWorldSpacing();
 }
 
@@ -1018,12 +1050,7 @@ bool vtkVolumetricPathTracer::RenderImage(
   {
     return false;
   }
-  if (scene.Shaded && scene.Shaded->GetShading().GetAdditive())
-  {
-    vtkWarningMacro(<< "The volume's vtkParticipatingMediumProperty has Shade on: its gradient "
-                       "surface term (vtkTyndallShading) is not path traced; the medium is.");
-  }
-  else if (scene.Shaded)
+  if (scene.Shaded)
   {
     SetUpSurface(scene);
   }
@@ -1053,7 +1080,7 @@ bool vtkVolumetricPathTracer::RenderImage(
   {
     return false;
   }
-  if (scene.Surface)
+  if (scene.Surface && !scene.SurfaceAdded)
   {
     ScaleLights(scene, vtkTyndallSurfaceLobe::LightUnit);
   }

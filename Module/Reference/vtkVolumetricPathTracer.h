@@ -165,10 +165,21 @@
  * term). Independent components: a collision is shaded as one of them
  * (its gradient, colour, coefficients and k), drawn with its share of
  * their parts in the mixture, the lobe and Ka c times the parts' sum (an
- * unbiased estimate of VTK's mixture of their shadings). A
- * vtkParticipatingMediumProperty's Shade (its surface term,
- * added to the medium's scattering) is not traced: a warning, the medium
- * alone.
+ * unbiased estimate of VTK's mixture of their shadings).
+ *
+ * A vtkParticipatingMediumProperty's Shade (vtkTyndallShading's surface
+ * term added to the medium's single scattering: Tyndall's meaning) is a
+ * local term here too: a collision in the volume scatters by its phase
+ * function as before (the lights not scaled), and adds to J the lights'
+ * and the sky's light reflected by the surface lobe, LightUnit sum_l E_l
+ * f(v, l) T_l (component 0's gradient and coefficients, the collision's
+ * colour, no ambient term, no blending; T_l from the shadow offset above),
+ * the sky's by its next-event estimate alone. The lobe is never sampled:
+ * the surface term does not scatter further (the medium's scattering
+ * does), so one bounce is vtkSingleScatteringReference's picture, single
+ * scattering plus the surface term, and the bounces after it add the
+ * medium's multiple scattering (a lobe of weight 2 pi Kd c sampled would
+ * add 4 times the light at every bounce).
  *
  * @sa vtkSingleScatteringReference vtkCosineNoise vtkParticipatingMediumProperty
  */

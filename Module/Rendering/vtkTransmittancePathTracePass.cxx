@@ -52,13 +52,9 @@ std::string vtkTransmittancePathTracePass::Refusal(
     return "the isosurface blend mode draws surfaces, not a medium";
   }
   // A plain property's Shade: collisions scatter as its surfaces
-  // (vtkTyndallSurfaceLobe), as the CPU tracer's, alone in the scene.
+  // (vtkTyndallSurfaceLobe), as the CPU tracer's, alone in the scene; a
+  // vtkParticipatingMediumProperty's: they add the lobe's light.
   const vtkTyndallShading& shading = medium.GetShading();
-  if (shading.Enabled() && shading.GetAdditive())
-  {
-    return "a vtkParticipatingMediumProperty's Shade (its gradient surface term) is not path "
-           "traced";
-  }
   if (shading.Enabled() && !frame.Guests.empty())
   {
     return "a shaded volume beside other volumes is not path traced on the GPU yet";
@@ -184,9 +180,12 @@ double vtkTransmittancePathTracePass::PathBound(
     flight += counts[0] + counts[1] + counts[2] + 3.0;
   }
   const double lights = static_cast<double>(frame.GetSceneLights()); // the sky is sampled
+  // A medium's Shade: the lights and the sky a second time (its surface term).
+  const vtkTyndallShading& shading = frame.Medium->GetShading();
+  const double loops = shading.Enabled() && shading.GetAdditive() ? 2.0 : 1.0;
   const double collision =
-    1.0 + (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
-  const double sky = SamplesSky(frame) ? SkySearchCost(frame) + 1.0 + flight : 0.0;
+    1.0 + loops * (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
+  const double sky = SamplesSky(frame) ? loops * (SkySearchCost(frame) + 1.0 + flight) : 0.0;
   // An emission array: each segment's stratified points, each ratio tracked.
   const double emission = frame.GetShaderVariant().EmissionArray
     ? vtkTyndallMedium::PathEmissionSamples * (1.0 + flight)

@@ -414,11 +414,15 @@ public:
    * bounce VTK's shading term, VTK's ambient term an emission), with VTK
    * 9.2's volumetric scattering blending (an isotropic part of the lobe)
    * and over independent components (a collision shaded as one of them).
+   * A vtkParticipatingMediumProperty with Shade on keeps Tyndall's meaning:
+   * its collisions scatter by the phase function and add the surface term,
+   * the lights' and the sky's light reflected by the same lobe (the lobe
+   * not sampled: one bounce is the map-based frame's single scattering plus
+   * its surface term).
    *
    * Not path traced yet, each said once in a warning, the map-based frame
    * drawn instead: VTK's depth peeling for volumes, several processes, a
-   * vtkParticipatingMediumProperty's Shade (its surface term), a shaded
-   * plain property beside other volumes; and never (they are not
+   * shaded volume (either property) beside other volumes; and never (they are not
    * media; the CPU tracer refuses them too): the projection and isosurface
    * blend modes.
    */

@@ -19,7 +19,10 @@
 //    mirrored on the GPU 7.4, which the sums miss); and a shaded CT (a
 //    plain property with Shade on, vtkTyndallSurfaceLobe) under the gradient
 //    sky alone (z below 0.3, tiles 0.44; the GPU's specular density 4/3 too
-//    large: z 8.7);
+//    large: z 8.7); and the ball as a medium with Shade on (its surface
+//    term added to its scattering) under the sun and the gradient sky (z
+//    below 0.43, tiles 0.20; the sky's next-event estimate weighed against
+//    the lobe's draws, which a medium's Shade never makes: z -9);
 // 3. the map-based frame's approximations: with SkyLightDirections 0 a
 //    constant sky adds its radiance to the ambient term, the picture
 //    identical to one with that AmbientIntensity, on the GPU and in the CPU
@@ -170,16 +173,34 @@ vtkSmartPointer<vtkTexture> MakeSkyImage()
   return texture;
 }
 
+// What AgainstCpu() draws: the cloud, a shaded CT (a plain property with
+// Shade on over the dense medium's ball: vtkTyndallSurfaceLobe), or the
+// ball as a medium with Shade on (its surface term added to its scattering).
+enum class Drawn
+{
+  Cloud,
+  ShadedCT,
+  MediumShade
+};
+
 // 2. the GPU against the CPU under a sky (tracked shadows: unbiased).
-// `shaded`: a shaded CT (a plain property with Shade on over the dense
-// medium's ball: vtkTyndallSurfaceLobe) instead of the cloud.
-void AgainstCpu(const char* name, const std::function<void(vtkRenderer*)>& sky, bool shaded = false)
+void AgainstCpu(
+  const char* name, const std::function<void(vtkRenderer*)>& sky, Drawn drawn = Drawn::Cloud)
 {
   const int size = 32;
-  Scene scene(shaded ? tyndall_test::MakeDenseMedium(32) : tyndall_test::MakeCloud(32), 0.5, size);
-  if (shaded)
+  Scene scene(
+    drawn == Drawn::Cloud ? tyndall_test::MakeCloud(32) : tyndall_test::MakeDenseMedium(32), 0.5,
+    size);
+  if (drawn == Drawn::ShadedCT)
   {
     scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9));
+  }
+  else if (drawn == Drawn::MediumShade)
+  {
+    scene.Property->ShadeOn();
+    scene.Property->SetDiffuse(0.5);
+    scene.Property->SetSpecular(0.4);
+    scene.Property->SetSpecularPower(15.0);
   }
   scene.Mapper->SetTransmittanceCacheSize(kCacheSize);
   // A background of exact 8-bit levels (the frame buffer rounds 0.3 x 255 =
@@ -500,7 +521,20 @@ int TestTransmittanceMapperSky(int, char*[])
       renderer->SetEnvironmentalBG(0.05, 0.04, 0.03);
       renderer->SetEnvironmentalBG2(0.15, 0.22, 0.4);
     },
-    true);
+    Drawn::ShadedCT);
+  // A medium's Shade under the sun and a gradient sky: each collision's
+  // surface term (the lobe's light, the sky's by next-event estimation
+  // alone) added to its scattering, the paths scattered by the phase
+  // function (vtkVolumetricPathTracer's AddSurfaceTerm()).
+  AgainstCpu(
+    "A medium's Shade, gradient sky",
+    [](vtkRenderer* renderer)
+    {
+      renderer->GradientEnvironmentalBGOn();
+      renderer->SetEnvironmentalBG(0.05, 0.04, 0.03);
+      renderer->SetEnvironmentalBG2(0.15, 0.22, 0.4);
+    },
+    Drawn::MediumShade);
   MapFrame();
   ShadedMapFrame();
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -521,7 +521,9 @@ vec3 tyndallSampleHG(vec3 w, float g)
 //   f(l) = ((1 - k) (Kd c |n.l| + Ks |n.h|^p) + k Kd c) / (2 pi),
 // drawn from the mixture of a two-sided cosine lobe, Blinn-Phong's
 // half-vector lobe and the sphere (shares Diffuse, Specular and Volume);
-// else the phase function. Independent components (TYNDALL_COMPONENT_
+// else the phase function (and with TYNDALL_SHADING_ADDITIVE, a
+// vtkParticipatingMediumProperty's Shade, the phase function with the same
+// lobe's light added: tyndallPathAddedSurface()). Independent components (TYNDALL_COMPONENT_
 // SHADING): one drawn with its share of their parts in the mixture (which
 // add up to P, not always 1), whose gradient, colour, coefficients and k
 // make the lobe, f and Ka c times P (Scale). The renderer's
@@ -734,13 +736,13 @@ vec3 tyndallLobeSkyEvent(vec3 x, TyndallScatterer lobe, bool last)
   return vec3(0.0);
 }
 
-// A shaded collision's light at x per unit of throughput (the CPU tracer's
-// SurfaceSource()): VTK's ambient Ka c, each light's E f(l) T_l and, with
-// the sky, its next-event estimate against the lobe's sampling.
-vec3 tyndallPathCollisionLight(
-  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool last)
+// The lights' and the sky's light a shaded collision at x reflects by its
+// lobe, per unit of throughput: each light's LightUnit E f(l) T_l and, with
+// the sky, its next-event estimate (weighed against the lobe's sampling
+// unless `last`; the CPU tracer's SurfaceSource() without Ka c).
+vec3 tyndallLobeLight(vec3 x, TyndallScatterer lobe, bool last)
 {
-  vec3 sum = lobe.Scale * lobe.K.x * lobe.Color;
+  vec3 sum = vec3(0.0);
   if (!tyndallLobeScatters(lobe))
   {
     return sum;
@@ -769,6 +771,40 @@ vec3 tyndallPathCollisionLight(
   }
   return sum + tyndallLobeSkyEvent(x, lobe, last);
 }
+#else
+TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
+{
+  return TyndallScatterer(0.0);
+}
+#endif
+
+// A vtkParticipatingMediumProperty's Shade (TYNDALL_SHADING_ADDITIVE): the
+// surface term its collisions add to their scattering, the lobe's light at
+// x (the lights not scaled: LightUnit f is VTK's term per unit light), the
+// sky's by next-event estimation alone (the lobe is never sampled: the
+// medium scatters on by its phase function; the CPU tracer's
+// AddSurfaceTerm()); 0 otherwise.
+#if TYNDALL_SHADING_ADDITIVE
+vec3 tyndallPathAddedSurface(vec3 x, TyndallScatterer lobe)
+{
+  return tyndallLobeLight(x, lobe, true);
+}
+#else
+vec3 tyndallPathAddedSurface(vec3 x, TyndallScatterer lobe)
+{
+  return vec3(0.0);
+}
+#endif
+
+#if TYNDALL_SHADING && !TYNDALL_SHADING_ADDITIVE
+// A shaded collision's light at x per unit of throughput (the CPU tracer's
+// SurfaceSource()): VTK's ambient Ka c, and the lobe's light of the lights
+// and the sky, the sky's against the lobe's sampling.
+vec3 tyndallPathCollisionLight(
+  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool last)
+{
+  return lobe.Scale * lobe.K.x * lobe.Color + tyndallLobeLight(x, lobe, last);
+}
 
 // Draws the scattered direction w from the lobe (its density phasePdf),
 // the throughput times its weight; false when the path ends there
@@ -789,25 +825,21 @@ float tyndallPathSkyUnit()
   return pathLightUnit;
 }
 #else
-TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
-{
-  return TyndallScatterer(0.0);
-}
-
 // A collision's light at x per unit of throughput: its colour times the
 // in-scattered light (next-event estimation) and, with the sky, its
-// estimate against the phase function's sampling, plus its emission.
+// estimate against the phase function's sampling, plus its emission and
+// a medium's surface term (`surface`: its lobe).
 vec3 tyndallPathCollisionLight(
-  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer phase, bool last)
+  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer surface, bool last)
 {
   vec3 light = tyndallPathInScattering(x, w) + tyndallPathSkyEvent(x, w, last);
-  return s.Color * light + tyndallSampleEmission(s);
+  return s.Color * light + tyndallSampleEmission(s) + tyndallPathAddedSurface(x, surface);
 }
 
 // The throughput times the collision's colour, then (unless the path ends
 // there: Russian roulette) the scattered direction w drawn from the phase
 // function (its density phasePdf), from x (o).
-bool tyndallPathScatter(TyndallScatterer phase, TyndallCameraSample s, vec3 x, inout vec3 beta,
+bool tyndallPathScatter(TyndallScatterer surface, TyndallCameraSample s, vec3 x, inout vec3 beta,
   inout vec3 w, out vec3 o, out float phasePdf)
 {
   beta *= s.Color;
