@@ -773,7 +773,8 @@ int main(int argc, char* argv[])
   {
     std::cerr << "rendering " << window->GetSize()[0] << " x " << window->GetSize()[1] << ": "
               << builder->GetMapper()->GetTransmittanceMethodAsString() << ", "
-              << (builder->GetProperty()->GetScatteringModel() ==
+              << (options->GetFlag("vtk-property") ? "a plain vtkVolumeProperty"
+                     : builder->GetProperty()->GetScatteringModel() ==
                        vtkParticipatingMediumProperty::SINGLE_SCATTERING
                      ? "single scattering"
                      : "emission-absorption")

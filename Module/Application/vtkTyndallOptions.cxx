@@ -164,6 +164,12 @@ const Spec kOptions[] = {
     "CT and MR presets' 0.9, 0.3, 10) to the medium's single scattering, shadowed like it: its "
     "surfaces catch highlights",
     KeyMode::Toggle, "g" },
+  { "vtk-property", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
+    "draw the volumes with a plain vtkVolumeProperty (VTK's meaning) made from their transfer "
+    "functions: unlit, or with --shade VTK's gradient shading shadowed by the transmittance "
+    "maps (path traced: its collisions scatter as shaded surfaces, a shaded CT); the medium's "
+    "own options do not apply (the built-in cloud without its detail; particles keep theirs)",
+    KeyMode::Toggle, "k" },
   { "model", "", Kind::Choice, 0, 0, false, "emission-absorption|single-scattering", "M",
     "single-scattering", "Scattering", Both,
     "single-scattering (colour = albedo) or emission-absorption (colour = emitted colour, as "
@@ -888,6 +894,23 @@ public:
     {
       return "--path-bounces, --path-shadows, --path-distance and --path-denoise need "
              "--path-trace";
+    }
+    if (set("vtk-property"))
+    {
+      // A plain vtkVolumeProperty has none of these (vtkParticipatingMediumProperty's).
+      for (const char* name :
+        { "model", "anisotropy", "ambient", "density-scale", "extinction-color", "octaves",
+          "octave-scattering", "octave-extinction", "octave-anisotropy", "octave-build-up",
+          "emission-scale", "emission-array", "blackbody", "temperature-scale", "light-scale",
+          "detail", "no-scene-shadows", "no-scene-compositing" })
+      {
+        if (set(name))
+        {
+          return std::string("--") + name +
+            " sets the medium (vtkParticipatingMediumProperty), which --vtk-property replaces "
+            "by a plain vtkVolumeProperty";
+        }
+      }
     }
     if (set("skip-bad-frames") && !set("sequence"))
     {

@@ -923,6 +923,34 @@ void vtkTyndallSceneBuilder::ApplyOptions()
   this->ApplyClipping();
   this->ApplySlice();
   this->ApplyEmission();
+  this->ApplyPropertyKind();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallSceneBuilder::ApplyPropertyKind()
+{
+  // --vtk-property: each grid volume drawn with a plain vtkVolumeProperty
+  // made anew from its medium's settings (VTK's meaning), else the medium.
+  const bool plain = this->Options->GetFlag("vtk-property");
+  auto apply = [plain](vtkVolume* volume, vtkParticipatingMediumProperty* medium)
+  {
+    if (!plain)
+    {
+      volume->SetProperty(medium);
+      return;
+    }
+    vtkNew<vtkVolumeProperty> copy;
+    vtkParticipatingMediumProperty::CopyVolumeProperty(medium, copy);
+    volume->SetProperty(copy);
+  };
+  apply(this->Volume, this->Property);
+  for (const AddedVolume& added : this->AddedVolumes)
+  {
+    if (!added.Particles) // a particle cloud is a medium only
+    {
+      apply(added.Volume, added.Property);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -140,6 +140,8 @@ public:
    */
   vtkImageData* GetImage();
   vtkTransmittanceVolumeMapper* GetMapper();
+  /// The volume's medium (with --vtk-property the volume draws a plain copy
+  /// of it, made anew by ApplyOptions(): change the medium, then apply).
   vtkParticipatingMediumProperty* GetProperty();
   vtkVolume* GetVolume();
   /// The first light (the sun, the key light or the first given light).
@@ -199,6 +201,8 @@ private:
   void ApplyMediumOptions(vtkParticipatingMediumProperty* medium);
   // The --emission-... options: the first volume's emission.
   void ApplyEmission();
+  // --vtk-property: the volumes' plain vtkVolumeProperty copies, or their media.
+  void ApplyPropertyKind();
   // Updates `source` with its progress and errors forwarded; false on error or no points.
   bool Update(vtkAlgorithm* source);
   bool ReadTransferFunctionFile();

@@ -2,8 +2,13 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
+#include "vtkImageData.h"
+#include "vtkImplicitFunction.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +56,7 @@ void vtkParticipatingMediumProperty::SetExtinctionColor(double red, double green
 //------------------------------------------------------------------------------
 void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
 {
-  this->Superclass::DeepCopy(p);
+  CopyVolumeProperty(p, this);
   auto* medium = vtkParticipatingMediumProperty::SafeDownCast(p);
   if (!medium)
   {
@@ -77,6 +82,57 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
   this->SetSceneCompositing(medium->SceneCompositing);
   this->SetDetailNoise(medium->DetailNoise);
   this->SetDetailFilterWidth(medium->DetailFilterWidth);
+}
+
+//------------------------------------------------------------------------------
+void vtkParticipatingMediumProperty::CopyVolumeProperty(
+  vtkVolumeProperty* from, vtkVolumeProperty* to)
+{
+  if (!from || !to || from == to)
+  {
+    return;
+  }
+  to->vtkVolumeProperty::DeepCopy(from);
+  to->SetTransferFunctionMode(from->GetTransferFunctionMode());
+  for (int c = 0; c < VTK_MAX_VRCOMP; ++c)
+  {
+    vtkImageData* function = from->GetTransferFunction2D(c);
+    vtkSmartPointer<vtkImageData> copy;
+    if (function)
+    {
+      copy = vtkSmartPointer<vtkImageData>::New();
+      copy->DeepCopy(function);
+    }
+    to->SetTransferFunction2D(c, copy);
+  }
+  to->SetSliceFunction(from->GetSliceFunction());
+  for (const int label : from->GetLabelMapLabels())
+  {
+    if (vtkColorTransferFunction* color = from->GetLabelColor(label))
+    {
+      vtkNew<vtkColorTransferFunction> copy;
+      copy->DeepCopy(color);
+      to->SetLabelColor(label, copy);
+    }
+    for (const bool gradient : { false, true })
+    {
+      vtkPiecewiseFunction* opacity =
+        gradient ? from->GetLabelGradientOpacity(label) : from->GetLabelScalarOpacity(label);
+      if (opacity)
+      {
+        vtkNew<vtkPiecewiseFunction> copy;
+        copy->DeepCopy(opacity);
+        if (gradient)
+        {
+          to->SetLabelGradientOpacity(label, copy);
+        }
+        else
+        {
+          to->SetLabelScalarOpacity(label, copy);
+        }
+      }
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -299,12 +299,23 @@ public:
   ///@}
 
   /**
-   * Copies vtkVolumeProperty's settings and, when `p` is a
-   * vtkParticipatingMediumProperty, these (the emission colour is shared,
-   * like VTK's transfer functions). Hides vtkVolumeProperty::DeepCopy(),
-   * which is not virtual: call it on this class.
+   * Copies vtkVolumeProperty's settings (CopyVolumeProperty()) and, when
+   * `p` is a vtkParticipatingMediumProperty, these (the emission colour and
+   * the detail noise shared). Hides vtkVolumeProperty::DeepCopy(), which is
+   * not virtual: call it on this class.
    */
   void DeepCopy(vtkVolumeProperty* p);
+
+  /**
+   * vtkVolumeProperty::DeepCopy() of `from` into `to` (either class: the
+   * vtkVolumeProperty part), and what VTK 9.1's leaves out: the
+   * transfer-function mode and each component's 2-D transfer function, the
+   * slice function (shared) and the label maps' colour, opacity and
+   * gradient opacity functions (copied, as VTK copies the 1-D functions).
+   * A plain copy of a medium's settings is VTK's picture of them
+   * (tyndall-render's --vtk-property).
+   */
+  static void CopyVolumeProperty(vtkVolumeProperty* from, vtkVolumeProperty* to);
 
   /**
    * Includes the emission colour's and the detail noise's modification times.

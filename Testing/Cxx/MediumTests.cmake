@@ -2,6 +2,7 @@
 # detail's closed forms, the transfer-function presets and files (CPU).
 vtk_add_test_cxx(TyndallMediumCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
+  TestParticipatingMediumPropertyCopy.cxx
   TestTransferFunctionFileReader.cxx
   TestTransferFunctionPresets.cxx
   TestTyndallComponents.cxx

@@ -258,9 +258,9 @@ def sequence_mode(args):
     return failures
 
 
-def key_against_render(args, common, option, values, key, presses, what):
+def key_against_render(args, common, values, key, presses, what):
     """The viewer's picture at start and after `presses` presses of `key`
-    against tyndall-render's pictures with `option` at values["start"] and
+    against tyndall-render's pictures with the options values["start"] and
     values["moved"] (both with the options `common`); the two must differ."""
     failures = []
     os.makedirs(args.output_dir, exist_ok=True)
@@ -271,8 +271,8 @@ def key_against_render(args, common, option, values, key, presses, what):
         for name in ("render_%s.png" % state, "viewer_%s.png" % state):
             if os.path.exists(out(name)):
                 os.remove(out(name))
-    for state, value in values.items():
-        result = run([args.render, "-q", "-s"] + size + common + [option, str(value), "-o",
+    for state, options in values.items():
+        result = run([args.render, "-q", "-s"] + size + common + options + ["-o",
                       out("render_%s.png" % state), args.input])
         if result.returncode != 0:
             return ["tyndall-render exited with %d" % result.returncode]
@@ -305,16 +305,26 @@ def slice_mode(args):
     """The slice blend mode: the viewer's plane at start and after five
     presses of "]" (--slice-offset +0.02 each) against tyndall-render's
     pictures at --slice-offset 0 and 0.1."""
-    return key_against_render(args, ["--blend-mode", "slice"], "--slice-offset",
-                              {"start": 0.0, "moved": 0.1}, "]", 5, "slice")
+    return key_against_render(args, ["--blend-mode", "slice"],
+                              {"start": ["--slice-offset", "0"],
+                               "moved": ["--slice-offset", "0.1"]}, "]", 5, "slice")
 
 
 def exposure_mode(args):
     """The display transform: the viewer's picture with the ACES curve and
     sRGB at start and after three presses of "e" (--exposure +0.5 each)
     against tyndall-render's pictures at --exposure 0 and 1.5."""
-    return key_against_render(args, ["--tone-curve", "aces", "--srgb"], "--exposure",
-                              {"start": 0.0, "moved": 1.5}, "e", 3, "exposure")
+    return key_against_render(args, ["--tone-curve", "aces", "--srgb"],
+                              {"start": ["--exposure", "0"], "moved": ["--exposure", "1.5"]},
+                              "e", 3, "exposure")
+
+
+def property_mode(args):
+    """The kind of property: the viewer's shaded CT as a medium at start and
+    after the key "k" (--vtk-property: a plain vtkVolumeProperty, VTK's
+    gradient shading) against tyndall-render's pictures of both."""
+    return key_against_render(args, ["--shade"], {"start": [], "moved": ["--vtk-property"]},
+                              "k", 1, "property")
 
 
 def paths_mode(args):
@@ -434,7 +444,8 @@ def main():
     q = sub.add_parser("sequence")
     c = sub.add_parser("slice")
     e = sub.add_parser("exposure")
-    for p in (q, c, e):
+    k = sub.add_parser("property")
+    for p in (q, c, e, k):
         p.add_argument("--viewer", required=True)
         p.add_argument("--render", required=True)
         p.add_argument("--input", required=True)
@@ -453,7 +464,7 @@ def main():
     args = parser.parse_args()
 
     modes = {"scripted": scripted, "sequence": sequence_mode, "slice": slice_mode,
-             "exposure": exposure_mode, "paths": paths_mode, "denoise": denoise_mode, "failures": failures_mode}
+             "exposure": exposure_mode, "property": property_mode, "paths": paths_mode, "denoise": denoise_mode, "failures": failures_mode}
     failures = modes[args.mode](args)
     for message in failures:
         print("FAIL:", message)

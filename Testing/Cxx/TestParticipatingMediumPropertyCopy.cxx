@@ -1,0 +1,127 @@
+// vtkParticipatingMediumProperty::CopyVolumeProperty() and DeepCopy(): a
+// plain vtkVolumeProperty made from a medium's settings (tyndall-render's
+// --vtk-property) keeps everything of vtkVolumeProperty the medium was
+// given, including what VTK 9.1's own DeepCopy() leaves out: the
+// transfer-function mode and a component's 2-D function, the slice
+// function and the label maps' colour, opacity and gradient opacity (copied:
+// equal values, other objects); a medium copied into a medium keeps its own
+// settings too. Costs under 0.1 s.
+#include "vtkColorTransferFunction.h"
+#include "vtkCosineNoise.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkParticipatingMediumProperty.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
+#include "vtkVolumeProperty.h"
+
+#include "TyndallTestCheck.h"
+
+#include <cstdlib>
+
+namespace
+{
+using tyndall_test::Check;
+
+// A medium given one of each kind of vtkVolumeProperty setting.
+void SetUp(vtkParticipatingMediumProperty* medium, vtkPlane* plane)
+{
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(10.0, 0.6);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.2, 0.3, 0.4);
+  color->AddRGBPoint(10.0, 0.9, 0.8, 0.7);
+  medium->SetScalarOpacity(opacity);
+  medium->SetColor(color);
+  medium->SetScalarOpacityUnitDistance(0.25);
+  medium->ShadeOn();
+  medium->SetDiffuse(0.45);
+  medium->SetSpecularPower(22.0);
+  medium->SetInterpolationTypeToLinear();
+  vtkNew<vtkImageData> transfer;
+  transfer->SetDimensions(4, 3, 1);
+  transfer->AllocateScalars(VTK_FLOAT, 4);
+  auto* values = vtkFloatArray::SafeDownCast(transfer->GetPointData()->GetScalars());
+  for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+  {
+    values->SetValue(i, 0.01f * static_cast<float>(i));
+  }
+  medium->SetTransferFunction2D(transfer);
+  medium->SetTransferFunctionMode(vtkVolumeProperty::TF_2D);
+  plane->SetNormal(0.0, 1.0, 0.0);
+  medium->SetSliceFunction(plane);
+  vtkNew<vtkColorTransferFunction> labelColor;
+  labelColor->AddRGBPoint(0.0, 1.0, 0.0, 0.0);
+  vtkNew<vtkPiecewiseFunction> labelOpacity;
+  labelOpacity->AddPoint(0.0, 0.3);
+  vtkNew<vtkPiecewiseFunction> labelGradient;
+  labelGradient->AddPoint(0.0, 0.7);
+  medium->SetLabelColor(3, labelColor);
+  medium->SetLabelScalarOpacity(3, labelOpacity);
+  medium->SetLabelGradientOpacity(3, labelGradient);
+  medium->SetScatteringAnisotropy(0.4);
+  medium->SetDensityScale(2.5);
+  vtkNew<vtkCosineNoise> noise;
+  medium->SetDetailNoise(noise);
+}
+
+// Whether `copy` holds the vtkVolumeProperty settings SetUp() gave `medium`.
+void CheckVolumeSettings(vtkVolumeProperty* copy, vtkParticipatingMediumProperty* medium,
+  vtkPlane* plane, const char* what)
+{
+  const std::string w = what;
+  double rgb[3];
+  copy->GetRGBTransferFunction()->GetColor(10.0, rgb);
+  Check(rgb[0] == 0.9 && rgb[2] == 0.7, w + ": the colour function");
+  Check(copy->GetScalarOpacity()->GetValue(10.0) == 0.6, w + ": the opacity function");
+  Check(copy->GetScalarOpacityUnitDistance() == 0.25, w + ": the unit distance");
+  Check(copy->GetShade() == 1 && copy->GetDiffuse() == 0.45 && copy->GetSpecularPower() == 22.0,
+    w + ": Shade and the coefficients");
+  Check(copy->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D, w + ": the 2-D mode");
+  vtkImageData* transfer = copy->GetTransferFunction2D();
+  Check(transfer && transfer != medium->GetTransferFunction2D() &&
+      transfer->GetDimensions()[0] == 4 &&
+      transfer->GetPointData()->GetScalars()->GetComponent(5, 2) ==
+        medium->GetTransferFunction2D()->GetPointData()->GetScalars()->GetComponent(5, 2),
+    w + ": the 2-D function, copied");
+  Check(copy->GetSliceFunction() == plane, w + ": the slice function");
+  vtkColorTransferFunction* labelColor = copy->GetLabelColor(3);
+  vtkPiecewiseFunction* labelOpacity = copy->GetLabelScalarOpacity(3);
+  vtkPiecewiseFunction* labelGradient = copy->GetLabelGradientOpacity(3);
+  Check(labelColor && labelColor != medium->GetLabelColor(3) && labelColor->GetRedValue(0.0) == 1.0,
+    w + ": label 3's colour, copied");
+  Check(labelOpacity && labelOpacity != medium->GetLabelScalarOpacity(3) &&
+      labelOpacity->GetValue(0.0) == 0.3,
+    w + ": label 3's opacity, copied");
+  Check(labelGradient && labelGradient->GetValue(0.0) == 0.7, w + ": label 3's gradient opacity");
+  Check(copy->GetLabelMapLabels().size() == 1, w + ": one label");
+}
+}
+
+int TestParticipatingMediumPropertyCopy(int, char*[])
+{
+  vtkNew<vtkParticipatingMediumProperty> medium;
+  vtkNew<vtkPlane> plane;
+  SetUp(medium, plane);
+
+  vtkNew<vtkVolumeProperty> plain;
+  vtkParticipatingMediumProperty::CopyVolumeProperty(medium, plain);
+  CheckVolumeSettings(plain, medium, plane, "a plain copy");
+
+  vtkNew<vtkParticipatingMediumProperty> copy;
+  copy->DeepCopy(medium);
+  CheckVolumeSettings(copy, medium, plane, "a medium's copy");
+  Check(copy->GetScatteringAnisotropy() == medium->GetScatteringAnisotropy() &&
+      copy->GetDensityScale() == 2.5 && copy->GetDetailNoise() == medium->GetDetailNoise(),
+    "a medium's copy: the medium's own settings");
+
+  // Nothing to copy from or into: nothing happens (no crash).
+  vtkParticipatingMediumProperty::CopyVolumeProperty(nullptr, plain);
+  vtkParticipatingMediumProperty::CopyVolumeProperty(medium, nullptr);
+  vtkParticipatingMediumProperty::CopyVolumeProperty(plain, plain);
+  Check(plain->GetShade() == 1, "copying into itself leaves the property");
+  return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
