@@ -177,6 +177,7 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   }
   this->Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
   this->Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
+  this->Plain = PlainCopy();
   this->Volume = vtkSmartPointer<vtkVolume>::New();
   // A transfer-function file is read before the (maybe slow) data.
   if (!this->ReadTransferFunctionFile() || !this->LoadMedium() || !this->ChooseTransferFunction())
@@ -930,25 +931,30 @@ void vtkTyndallSceneBuilder::ApplyOptions()
 void vtkTyndallSceneBuilder::ApplyPropertyKind()
 {
   // --vtk-property: each grid volume drawn with a plain vtkVolumeProperty
-  // made anew from its medium's settings (VTK's meaning), else the medium.
+  // made from its medium's settings (VTK's meaning), made anew only when the
+  // medium changed (a new property would rebuild the maps), else the medium.
   const bool plain = this->Options->GetFlag("vtk-property");
-  auto apply = [plain](vtkVolume* volume, vtkParticipatingMediumProperty* medium)
+  auto apply = [plain](vtkVolume* volume, vtkParticipatingMediumProperty* medium, PlainCopy& copy)
   {
     if (!plain)
     {
       volume->SetProperty(medium);
       return;
     }
-    vtkNew<vtkVolumeProperty> copy;
-    vtkParticipatingMediumProperty::CopyVolumeProperty(medium, copy);
-    volume->SetProperty(copy);
+    if (!copy.Property || medium->GetMTime() > copy.MediumTime)
+    {
+      copy.Property = vtkSmartPointer<vtkVolumeProperty>::New();
+      vtkParticipatingMediumProperty::CopyVolumeProperty(medium, copy.Property);
+      copy.MediumTime = medium->GetMTime();
+    }
+    volume->SetProperty(copy.Property);
   };
-  apply(this->Volume, this->Property);
-  for (const AddedVolume& added : this->AddedVolumes)
+  apply(this->Volume, this->Property, this->Plain);
+  for (AddedVolume& added : this->AddedVolumes)
   {
     if (!added.Particles) // a particle cloud is a medium only
     {
-      apply(added.Volume, added.Property);
+      apply(added.Volume, added.Property, added.Plain);
     }
   }
 }

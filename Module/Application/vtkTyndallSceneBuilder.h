@@ -70,6 +70,7 @@ class vtkTransmittanceVolumeMapper;
 class vtkTyndallOptions;
 class vtkVolume;
 class vtkVolumeFileReader;
+class vtkVolumeProperty;
 class vtkVolumeShadowReceiverPass;
 
 class TYNDALLAPPLICATION_EXPORT vtkTyndallSceneBuilder : public vtkObject
@@ -264,12 +265,21 @@ private:
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
 
   /// A volume added with --add-volume.
+  // A volume's plain vtkVolumeProperty (--vtk-property) and its medium's
+  // modification time when it was copied.
+  struct PlainCopy
+  {
+    vtkSmartPointer<vtkVolumeProperty> Property;
+    vtkMTimeType MediumTime = 0;
+  };
+  PlainCopy Plain;
   struct AddedVolume
   {
     vtkSmartPointer<vtkImageData> Image;
     vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
     vtkSmartPointer<vtkParticipatingMediumProperty> Property;
     vtkSmartPointer<vtkVolume> Volume;
+    PlainCopy Plain;
     bool Particles = false; // a --particles cloud
     double DensityScale = 1.0;
   };

@@ -322,9 +322,23 @@ def exposure_mode(args):
 def property_mode(args):
     """The kind of property: the viewer's shaded CT as a medium at start and
     after the key "k" (--vtk-property: a plain vtkVolumeProperty, VTK's
-    gradient shading) against tyndall-render's pictures of both."""
-    return key_against_render(args, ["--shade"], {"start": [], "moved": ["--vtk-property"]},
-                              "k", 1, "property")
+    gradient shading) against tyndall-render's pictures of both; then, with
+    --vtk-property, a key that changes nothing of the property (j, the
+    jitter) rebuilds no map (the plain copy is kept while its medium is
+    unchanged)."""
+    failures = key_against_render(args, ["--shade"], {"start": [], "moved": ["--vtk-property"]},
+                                  "k", 1, "property")
+    events = "frames 2; key j; frames 2; key j; frames 2; quit"
+    result = run([args.viewer, "-s", "32", "32"] + CACHE +
+                 ["--shade", "--vtk-property", args.input, "--events", events])
+    frames = parse_frames(result.stdout)
+    builds = [f["builds"] for f in frames]
+    print("map builds per frame with --vtk-property, j pressed twice: %s" % builds)
+    if result.returncode != 0 or len(builds) < 6:
+        failures.append("the viewer's run with --vtk-property failed (%d)" % result.returncode)
+    elif builds[-1] != builds[1]:
+        failures.append("the key j rebuilt the maps of a plain property (%s)" % builds)
+    return failures
 
 
 def paths_mode(args):
