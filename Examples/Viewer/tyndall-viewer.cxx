@@ -801,10 +801,18 @@ void Viewer::UpdateText()
 {
   std::ostringstream os;
   os << std::fixed << this->Mapper->GetTransmittanceMethodAsString() << " | "
-     << this->Mapper->GetNumberOfCoefficients() << " coefficients | g " << std::setprecision(2)
-     << this->Medium->GetScatteringAnisotropy() << " | density " << std::setprecision(2)
-     << this->Medium->GetDensityScale() << " | octaves " << this->Medium->GetScatteringOctaves()
-     << " | jitter " << (this->Mapper->GetJitter() ? "on" : "off") << "\n";
+     << this->Mapper->GetNumberOfCoefficients() << " coefficients | ";
+  if (this->Options->GetFlag("vtk-property"))
+  {
+    os << "VTK's vtkVolumeProperty";
+  }
+  else
+  {
+    os << "g " << std::setprecision(2) << this->Medium->GetScatteringAnisotropy() << " | density "
+       << std::setprecision(2) << this->Medium->GetDensityScale() << " | octaves "
+       << this->Medium->GetScatteringOctaves();
+  }
+  os << " | jitter " << (this->Mapper->GetJitter() ? "on" : "off") << "\n";
   if (this->FrameNumber > 0)
   {
     os << std::setprecision(1) << this->LastFrameMs << " ms";
@@ -1065,6 +1073,15 @@ void Viewer::Drag(DragMode mode, double dx, double dy)
 // A key: the options table says what it changes (vtkTyndallOptions::ApplyKey).
 void Viewer::Key(int key)
 {
+  // A plain vtkVolumeProperty (--vtk-property) has none of the medium's
+  // settings: their keys would change nothing drawn (and rebuild the maps).
+  const char* option = this->Options->GetKeyOption(key);
+  if (option && this->Options->GetFlag("vtk-property") && vtkTyndallOptions::IsMediumOption(option))
+  {
+    std::cerr << Program << ": key '" << static_cast<char>(key) << "' sets the medium's --"
+              << option << ", which --vtk-property (k) does not draw\n";
+    return;
+  }
   const char* bound = this->Options->ApplyKey(key);
   if (!bound)
   {
@@ -1103,6 +1120,15 @@ void Viewer::Key(int key)
   {
     this->Playing = false;
     this->StepFrame(name == "next-frame" ? 1 : -1);
+  }
+  else if (name == "vtk-property")
+  {
+    if (this->Options->GetFlag("vtk-property"))
+    {
+      std::cerr << Program << ": the volumes drawn with a plain vtkVolumeProperty (VTK's "
+                << "meaning): the medium's settings do not apply until k again\n";
+    }
+    this->Builder->ApplyOptions();
   }
   else if (name == "exposure" || name == "path-denoise")
   {

@@ -696,6 +696,7 @@ class vtkTyndallOptions::vtkInternals
 {
 public:
   std::map<std::string, Value> Values;
+  bool VolumeDensityScaleGiven = false; // --volume-density-scale, any volume's
   std::vector<Light> Lights;
   std::vector<AddedVolume> Volumes;
 
@@ -814,6 +815,7 @@ public:
     else if (name == "volume-density-scale")
     {
       v.DensityScale = n[0];
+      this->VolumeDensityScaleGiven = true;
     }
     else if (name == "volume-preset")
     {
@@ -898,18 +900,23 @@ public:
     if (set("vtk-property"))
     {
       // A plain vtkVolumeProperty has none of these (vtkParticipatingMediumProperty's).
-      for (const char* name :
-        { "model", "anisotropy", "ambient", "density-scale", "extinction-color", "octaves",
-          "octave-scattering", "octave-extinction", "octave-anisotropy", "octave-build-up",
-          "emission-scale", "emission-array", "blackbody", "temperature-scale", "light-scale",
-          "detail", "no-scene-shadows", "no-scene-compositing" })
+      std::string medium;
+      for (const auto& value : this->Values)
       {
-        if (set(name))
+        if (medium.empty() && vtkTyndallOptions::IsMediumOption(value.first))
         {
-          return std::string("--") + name +
-            " sets the medium (vtkParticipatingMediumProperty), which --vtk-property replaces "
-            "by a plain vtkVolumeProperty";
+          medium = value.first;
         }
+      }
+      if (medium.empty() && this->VolumeDensityScaleGiven)
+      {
+        medium = "volume-density-scale";
+      }
+      if (!medium.empty())
+      {
+        return "--" + medium +
+          " sets the medium (vtkParticipatingMediumProperty), which --vtk-property replaces by "
+          "a plain vtkVolumeProperty";
       }
     }
     if (set("skip-bad-frames") && !set("sequence"))
@@ -987,6 +994,7 @@ bool vtkTyndallOptions::Parse(int argc, char* argv[])
   in.Values.clear();
   in.Lights.clear();
   in.Volumes.clear();
+  in.VolumeDensityScaleGiven = false;
   this->Input.clear();
   this->HelpRequested = false;
   this->ErrorMessage.clear();
@@ -1297,6 +1305,32 @@ const char* vtkTyndallOptions::ApplyKey(int key)
     return s.Name;
   }
   return nullptr;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTyndallOptions::GetKeyOption(int key)
+{
+  for (const Spec& s : kOptions)
+  {
+    if ((s.Programs & this->Program) && s.Mode != KeyMode::None && key > 0 && key <= 255 &&
+      (std::strchr(s.KeysUp, key) || std::strchr(s.KeysDown, key)))
+    {
+      return s.Name;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTyndallOptions::IsMediumOption(const std::string& name)
+{
+  static const char* const medium[] = { "model", "anisotropy", "ambient", "density-scale",
+    "volume-density-scale", "extinction-color", "octaves", "octave-scattering", "octave-extinction",
+    "octave-anisotropy", "octave-build-up", "emission-scale", "emission-array", "blackbody",
+    "temperature-scale", "light-scale", "no-scene-shadows", "no-scene-compositing" };
+  // (--detail and every --detail-... option: the medium's procedural detail.)
+  return name.compare(0, 6, "detail") == 0 ||
+    std::find(std::begin(medium), std::end(medium), name) != std::end(medium);
 }
 
 //------------------------------------------------------------------------------

@@ -174,6 +174,21 @@ public:
   const char* ApplyKey(int key);
 
   /**
+   * The name of the option or action a viewer key is bound to (what
+   * ApplyKey() would change), or nullptr; nothing is changed.
+   */
+  const char* GetKeyOption(int key);
+
+  /**
+   * Whether the option `name` (without "--") sets the medium only
+   * (vtkParticipatingMediumProperty: its model, scattering, emission,
+   * detail, densities and scene rules), which --vtk-property replaces by a
+   * plain vtkVolumeProperty: a command line refuses one beside it, and the
+   * viewer ignores its keys while it is on.
+   */
+  static bool IsMediumOption(const std::string& name);
+
+  /**
    * The viewer's key bindings, one line each, for its help.
    */
   std::string GetKeyHelp();

@@ -264,7 +264,6 @@ private:
   vtkSmartPointer<vtkVolumeShadowReceiverPass> GroundShadows;
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
 
-  /// A volume added with --add-volume.
   // A volume's plain vtkVolumeProperty (--vtk-property) and its medium's
   // modification time when it was copied.
   struct PlainCopy
@@ -272,7 +271,9 @@ private:
     vtkSmartPointer<vtkVolumeProperty> Property;
     vtkMTimeType MediumTime = 0;
   };
-  PlainCopy Plain;
+  PlainCopy Plain; // the input volume's
+
+  /// A volume added with --add-volume.
   struct AddedVolume
   {
     vtkSmartPointer<vtkImageData> Image;

@@ -8,7 +8,6 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,18 +92,20 @@ void vtkParticipatingMediumProperty::CopyVolumeProperty(
     return;
   }
   to->vtkVolumeProperty::DeepCopy(from);
-  to->SetTransferFunctionMode(from->GetTransferFunctionMode());
+  // Each 2-D function copied (VTK 9.1's SetTransferFunction2D() cannot
+  // clear one: it reads the function given without checking for null, so a
+  // function `to` has where `from` has none stays, unused in TF_1D), then
+  // the mode (setting a 2-D function sets TF_2D).
   for (int c = 0; c < VTK_MAX_VRCOMP; ++c)
   {
-    vtkImageData* function = from->GetTransferFunction2D(c);
-    vtkSmartPointer<vtkImageData> copy;
-    if (function)
+    if (vtkImageData* function = from->GetTransferFunction2D(c))
     {
-      copy = vtkSmartPointer<vtkImageData>::New();
+      vtkNew<vtkImageData> copy;
       copy->DeepCopy(function);
+      to->SetTransferFunction2D(c, copy);
     }
-    to->SetTransferFunction2D(c, copy);
   }
+  to->SetTransferFunctionMode(from->GetTransferFunctionMode());
   to->SetSliceFunction(from->GetSliceFunction());
   for (const int label : from->GetLabelMapLabels())
   {

@@ -312,7 +312,9 @@ public:
    * transfer-function mode and each component's 2-D transfer function, the
    * slice function (shared) and the label maps' colour, opacity and
    * gradient opacity functions (copied, as VTK copies the 1-D functions).
-   * A plain copy of a medium's settings is VTK's picture of them
+   * What `to` has and `from` lacks stays (a 2-D function, a label's
+   * functions: VTK 9.1 cannot remove them); into a new property the copy is
+   * exact. A plain copy of a medium's settings is VTK's picture of them
    * (tyndall-render's --vtk-property).
    */
   static void CopyVolumeProperty(vtkVolumeProperty* from, vtkVolumeProperty* to);

@@ -1,6 +1,6 @@
 /**
  * @class   vtkTyndallSurfaceLobe
- * @brief   How a path tracer scatters at a collision in a plain vtkVolumeProperty with Shade on
+ * @brief   How a path tracer scatters at a collision in a volume with Shade on
  *
  * VTK's gradient shading (vtkTyndallShading) is a local model: each sample
  * reflects the lights as a surface whose normal is the scalar's gradient.
@@ -23,7 +23,8 @@
  * **Light units.** VTK's lights shade a facing surface with Kd c E (E the
  * light's intensity times its colour): against f above a light is 2 pi
  * brighter (LightUnit). A path tracer multiplies the renderer's lights and
- * its sky by LightUnit in a scene whose volume is shaded, so that the first
+ * its sky by LightUnit in a scene whose volume has a plain property with
+ * Shade on, so that the first
  * bounce of a light is VTK's own term, Kd c |n.l| E + Ks |n.h|^p E
  * (vtkTyndallShading::AddLight()), and the bounces after it are this
  * lobe's, which does not add energy (without the blending below). VTK's
@@ -47,6 +48,14 @@
  * (the sphere's 4 pi against the lobe's light unit 2 pi): above Kd c = 1/2
  * its collisions add energy, which the paths' bounce limit bounds, as VTK's
  * term does for its one bounce.
+ *
+ * **A vtkParticipatingMediumProperty with Shade on** (its surface term
+ * added to its single scattering, vtkTyndallShading::GetAdditive()): the
+ * lights are not scaled, a collision scatters by the medium's phase
+ * function, and the lobe (component 0's gradient and coefficients, the
+ * collision's colour, no blending) only gives the surface term it adds,
+ * LightUnit times its light from the lights and the sky; it is never
+ * sampled (vtkVolumetricPathTracer).
  *
  * Sample() draws l from the mixture of a two-sided cosine lobe about n and
  * Blinn-Phong's half-vector lobe (h about n turned towards v, cos theta_h =

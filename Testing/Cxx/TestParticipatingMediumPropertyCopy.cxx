@@ -5,7 +5,9 @@
 // transfer-function mode and a component's 2-D function, the slice
 // function and the label maps' colour, opacity and gradient opacity (copied:
 // equal values, other objects); a medium copied into a medium keeps its own
-// settings too. Costs under 0.1 s.
+// settings too; the mode is the source's when it holds a 2-D function but
+// draws the 1-D ones, and a property without a 2-D function copies into one
+// that has one (VTK 9.1 cannot set a null one). Costs under 0.1 s.
 #include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
@@ -96,7 +98,9 @@ void CheckVolumeSettings(vtkVolumeProperty* copy, vtkParticipatingMediumProperty
   Check(labelOpacity && labelOpacity != medium->GetLabelScalarOpacity(3) &&
       labelOpacity->GetValue(0.0) == 0.3,
     w + ": label 3's opacity, copied");
-  Check(labelGradient && labelGradient->GetValue(0.0) == 0.7, w + ": label 3's gradient opacity");
+  Check(labelGradient && labelGradient != medium->GetLabelGradientOpacity(3) &&
+      labelGradient->GetValue(0.0) == 0.7,
+    w + ": label 3's gradient opacity, copied");
   Check(copy->GetLabelMapLabels().size() == 1, w + ": one label");
 }
 }
@@ -117,6 +121,21 @@ int TestParticipatingMediumPropertyCopy(int, char*[])
   Check(copy->GetScatteringAnisotropy() == medium->GetScatteringAnisotropy() &&
       copy->GetDensityScale() == 2.5 && copy->GetDetailNoise() == medium->GetDetailNoise(),
     "a medium's copy: the medium's own settings");
+
+  // The 1-D functions asked for while a 2-D function is held (VTK sets TF_2D
+  // when a 2-D function is set): the mode is the source's.
+  medium->SetTransferFunctionMode(vtkVolumeProperty::TF_1D);
+  vtkNew<vtkVolumeProperty> oneD;
+  vtkParticipatingMediumProperty::CopyVolumeProperty(medium, oneD);
+  Check(oneD->GetTransferFunctionMode() == vtkVolumeProperty::TF_1D &&
+      oneD->GetTransferFunction2D() != nullptr,
+    "a copy of TF_1D with a 2-D function held: TF_1D, the function kept");
+  // A property without a 2-D function copied into a medium that has one
+  // (VTK 9.1 cannot set a null one): no crash, the source's mode.
+  vtkNew<vtkVolumeProperty> bare;
+  copy->DeepCopy(bare);
+  Check(copy->GetTransferFunctionMode() == vtkVolumeProperty::TF_1D && copy->GetShade() == 0,
+    "a bare property copied into a medium with a 2-D function: its settings, TF_1D");
 
   // Nothing to copy from or into: nothing happens (no crash).
   vtkParticipatingMediumProperty::CopyVolumeProperty(nullptr, plain);

@@ -22,9 +22,10 @@
 //    samples (1, 2, 4, then PathTraceSamplesPerFrame, the last trimmed),
 //    a picture that has them all is redrawn unchanged, the same samples a
 //    frame at a time make the same picture (another seed's does not), and a
-//    frame the tracer refuses (a shaded plain property beside another
-//    volume) says so once and draws the map-based frame (a shaded one with
-//    a blending is traced, and a vtkParticipatingMediumProperty's Shade); a
+//    frame the tracer refuses (a shaded volume, of either property, beside
+//    another volume) says so once and draws the map-based frame (a shaded
+//    one with a blending is traced, and a vtkParticipatingMediumProperty's
+//    Shade, without a warning); a
 //    coloured extinction's mean is
 //    redrawn unchanged, and denoised.
 #include "vtkCamera.h"
@@ -372,9 +373,13 @@ void Mode()
   // A vtkParticipatingMediumProperty's Shade (its surface term) is traced
   // (its mean against the CPU's: TestTransmittanceMapperSky).
   scene.Property->ShadeOn();
+  vtkNew<WarningCounter> warnings;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
   scene.Window->Render();
   scene.Window->Render();
-  Check(scene.Mapper->GetLastPathTraceSamples() > 0, "a medium's Shade is path traced");
+  Check(scene.Mapper->GetLastPathTraceSamples() > 0 && warnings->Count == 0,
+    "a medium's Shade is path traced, without a warning");
+  scene.Mapper->RemoveObserver(warnings);
   scene.Property->ShadeOff();
   // A shaded plain property is traced, with VTK 9.2's volumetric scattering
   // blending too (its mean against the CPU's: "Shaded CT, blending 1"), but
@@ -396,8 +401,16 @@ void Mode()
   vtkFrustumCoverageCuller::SafeDownCast(scene.Renderer->GetCullers()->GetLastItem())
     ->SetSortingStyleToBackToFront();
   CheckRefusedOnce(scene, "beside other volumes", "a shaded volume beside another is refused");
+  // A medium's Shade beside another volume too (alone first: a traced
+  // frame forgets the refusal said).
   scene.Renderer->RemoveVolume(other);
   scene.Volume->SetProperty(scene.Property);
+  scene.Property->ShadeOn();
+  scene.Window->Render();
+  scene.Renderer->AddVolume(other);
+  CheckRefusedOnce(scene, "beside other volumes", "a medium's Shade beside another is refused");
+  scene.Renderer->RemoveVolume(other);
+  scene.Property->ShadeOff();
 }
 
 // The mean of an 8-bit picture's channel c, in levels.

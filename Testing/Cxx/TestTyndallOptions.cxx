@@ -137,6 +137,20 @@ int TestTyndallOptions(int, char*[])
   ExpectError(o, { "--component", "1" }, "--component needs an input file");
   ExpectError(o, { "-r", "64", "a.vti" }, "--resolution applies to the built-in cloud only");
   ExpectError(o, { "--script", "s.txt" }, "unknown option '--script'"); // a viewer option
+  // --vtk-property: a plain vtkVolumeProperty, none of the medium's options.
+  ExpectError(o, { "--vtk-property", "--octaves", "3" },
+    "--octaves sets the medium (vtkParticipatingMediumProperty), which --vtk-property");
+  ExpectError(o, { "--vtk-property", "--detail-octaves", "2" }, "--detail-octaves sets the medium");
+  ExpectError(o,
+    { "a.vti", "--vtk-property", "--add-volume", "b.vti", "--volume-density-scale", "2" },
+    "--volume-density-scale sets the medium");
+  Check(Parse(o,
+          { "a.vti", "--vtk-property", "--shade", "--add-volume", "b.vti", "--volume-scale", "2" }),
+    "--vtk-property with --shade and a volume's placement");
+  Check(vtkTyndallOptions::IsMediumOption("anisotropy") &&
+      vtkTyndallOptions::IsMediumOption("detail-contrast") &&
+      !vtkTyndallOptions::IsMediumOption("shade") && !vtkTyndallOptions::IsMediumOption("method"),
+    "the medium's options: anisotropy and the detail, not Shade or the method");
   Check(Parse(o, { "--", "-odd-name.vti" }) && std::string(o->GetInput()) == "-odd-name.vti",
     "'--' ends the options");
   Check(Parse(o, { "-h" }) && o->GetHelpRequested(), "-h asks for help");
@@ -186,6 +200,12 @@ int TestTyndallOptions(int, char*[])
     viewer->ApplyKey('-');
   }
   Check(viewer->GetNumber("coefficients") == 1, "-: down to the range's end, no further");
+  Check(std::string(viewer->GetKeyOption('a')) == "anisotropy" &&
+      std::string(viewer->GetKeyOption('k')) == "vtk-property" && !viewer->GetKeyOption('#'),
+    "a key's option, unchanged: a the anisotropy, k --vtk-property, # none");
+  Check(std::string(viewer->GetKeyOption('p')) == "clip-offset" &&
+      viewer->GetNumber("clip-offset") == 0.0,
+    "GetKeyOption() changes nothing");
   Check(std::string(viewer->ApplyKey('p')) == "clip-offset" && viewer->ApplyKey('p') &&
       viewer->ApplyKey('o') && viewer->GetNumber("clip-offset") == 0.05,
     "p, p, o: the clipping plane forward twice and back once by 0.05");

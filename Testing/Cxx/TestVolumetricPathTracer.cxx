@@ -37,7 +37,9 @@
 // 7. A vtkParticipatingMediumProperty with Shade on (its surface term added
 //    to its single scattering): one bounce against the reference's single
 //    scattering plus the surface term (global z -1.1, mean z^2 0.93; the
-//    lobe's light unit 2 pi left out: z -345), and 6 bounces add light.
+//    lobe's light unit 2 pi left out: z -345), also over two independent
+//    components (component 0's gradient, the mixture's colour), and 6
+//    bounces add light.
 //
 // TYNDALL_PATH_TRACER_QUICK (the sanitizer suite, set in
 // Testing/Cxx/CMakeLists.txt): every render with a sixteenth of its samples
@@ -477,6 +479,32 @@ void TestShadedSurface(Scene& scene)
   scene.Volume->SetProperty(scene.Property);
 }
 
+// The scene's blob and a copy of it moved 0.35 along x, as two components.
+vtkSmartPointer<vtkImageData> TwoBlobs(Scene& scene)
+{
+  int dims[3];
+  scene.Image->GetDimensions(dims);
+  auto two = vtkSmartPointer<vtkImageData>::New();
+  two->SetDimensions(dims);
+  two->SetOrigin(scene.Image->GetOrigin());
+  two->SetSpacing(scene.Image->GetSpacing());
+  two->AllocateScalars(VTK_FLOAT, 2);
+  const float* blob = static_cast<float*>(scene.Image->GetScalarPointer());
+  float* v = static_cast<float*>(two->GetScalarPointer());
+  const double h = scene.Image->GetSpacing()[0];
+  for (vtkIdType p = 0; p < scene.Image->GetNumberOfPoints(); ++p)
+  {
+    const int i = static_cast<int>(p % dims[0]);
+    const int j = static_cast<int>((p / dims[0]) % dims[1]);
+    const int k = static_cast<int>(p / (dims[0] * dims[1]));
+    const double x = -1.35 + i * h, y = -1.0 + j * h, z = -1.0 + k * h;
+    v[2 * p] = blob[p];
+    v[2 * p + 1] =
+      static_cast<float>(8.0 * std::exp(-(x * x + 1.5 * y * y + z * z) / (2.0 * 0.4 * 0.4)));
+  }
+  return two;
+}
+
 // What the lobe adds to TestShadedSurface, one bounce against VTK's shading
 // as there (the mapper a vtkTransmittanceVolumeMapper, which holds VTK
 // 9.2's blending; not drawn here): the shaded blob with the blending 1 (k =
@@ -500,26 +528,7 @@ void TestShadedBlendingAndComponents(Scene& scene)
   ScaleIntensities(scene.Renderer, 0.4);
   OneBounceAgainstShading(scene, "shaded, blending 1", 33);
 
-  int dims[3];
-  scene.Image->GetDimensions(dims);
-  vtkNew<vtkImageData> two;
-  two->SetDimensions(dims);
-  two->SetOrigin(scene.Image->GetOrigin());
-  two->SetSpacing(scene.Image->GetSpacing());
-  two->AllocateScalars(VTK_FLOAT, 2);
-  const float* blob = static_cast<float*>(scene.Image->GetScalarPointer());
-  float* v = static_cast<float*>(two->GetScalarPointer());
-  const double h = scene.Image->GetSpacing()[0];
-  for (vtkIdType p = 0; p < scene.Image->GetNumberOfPoints(); ++p)
-  {
-    const int i = static_cast<int>(p % dims[0]);
-    const int j = static_cast<int>((p / dims[0]) % dims[1]);
-    const int k = static_cast<int>(p / (dims[0] * dims[1]));
-    const double x = -1.35 + i * h, y = -1.0 + j * h, z = -1.0 + k * h;
-    v[2 * p] = blob[p];
-    v[2 * p + 1] =
-      static_cast<float>(8.0 * std::exp(-(x * x + 1.5 * y * y + z * z) / (2.0 * 0.4 * 0.4)));
-  }
+  vtkSmartPointer<vtkImageData> two = TwoBlobs(scene);
   mapper->SetInputData(two);
   mapper->SetVolumetricScatteringBlending(0.5f);
   vtkSmartPointer<vtkVolumeProperty> components = MakeShadedBlob(scene);
@@ -574,6 +583,23 @@ void TestMediumShade(Scene& scene)
     Report(s, "a medium's Shade, 6 bounces vs 1");
     Check(s.Global > 5.0, "a medium's Shade: more bounces give more radiance");
   }
+  // Over two independent components (the blob and its copy moved along x):
+  // the surface term of component 0's gradient and the mixture's colour
+  // (without emission, which the components cannot take from the tables).
+  scene.Mapper->SetInputData(TwoBlobs(scene));
+  const double emission = scene.Property->GetEmissionScale();
+  scene.Property->SetEmissionScale(0.0);
+  vtkNew<vtkColorTransferFunction> blue;
+  blue->AddRGBPoint(0.0, 0.4, 0.6, 0.9);
+  blue->AddRGBPoint(8.0, 0.6, 0.8, 1.0);
+  scene.Property->IndependentComponentsOn();
+  scene.Property->SetScalarOpacity(1, scene.Opacity);
+  scene.Property->SetColor(1, blue);
+  scene.Property->SetScalarOpacityUnitDistance(1, 0.05);
+  OneBounceAgainstShading(scene, "a medium's Shade, two independent components", 37, 2.0, 0.0);
+  scene.Property->IndependentComponentsOff();
+  scene.Property->SetEmissionScale(emission);
+  scene.Mapper->SetInputData(scene.Image);
   scene.Property->ShadeOff();
 }
 

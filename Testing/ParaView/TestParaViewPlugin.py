@@ -109,7 +109,7 @@ changes = [("TyndallTransmittanceMethod", 0), ("TyndallNumberOfCoefficients", 2)
            ("TyndallDensityScale", 2.0), ("TyndallAnisotropy", -0.5), ("TyndallLightScale", 20.0),
            ("TyndallAmbient", 0.5), ("TyndallEmission", 0.5), ("TyndallOctaves", 1),
            ("TyndallExposure", 1.0), ("TyndallToneCurve", 2), ("TyndallEncodeSRGB", 1),
-           ("TyndallSkyLight", 1), ("Shade", 1)]
+           ("TyndallSkyLight", 1), ("Shade", 1), ("TyndallVTKProperty", 1)]
 for name, value in changes:
     # GetData(): a value, or an enumeration's text (GetPropertyValue would
     # give an enumeration's live property, which follows the change).
@@ -164,6 +164,28 @@ check(scene.psnr(undone, traced) == float("inf"), "the denoiser off gives the me
 display.TyndallPathTracing = 0
 again, _ = screenshot(view, "plugin-smoke-paths-off.png")
 check(scene.psnr(again, picture) == float("inf"), "path tracing off gives the first picture")
+
+# The VTK Property: the volume drawn with a plain vtkVolumeProperty made
+# from the medium's settings, VTK's meaning. Unshaded it is VTK's
+# emission-absorption picture, the medium's Emission-absorption model
+# exactly; Shade then changes it (VTK's gradient shading reaches the plain
+# property); off, the first picture again.
+display.TyndallVTKProperty = 1
+plain, _ = screenshot(view, "plugin-vtk-property.png")
+display.Shade = 1
+plain_shaded, _ = screenshot(view, "plugin-vtk-property-shaded.png")
+display.Shade = 0
+display.TyndallVTKProperty = 0
+display.TyndallScatteringModel = 0
+emission_absorption, _ = screenshot(view, "plugin-emission-absorption.png")
+display.TyndallScatteringModel = 1
+again, _ = screenshot(view, "plugin-vtk-property-off.png")
+value_db = scene.psnr(plain, emission_absorption)
+check(value_db >= 60.0,
+      "VTK Property: the unshaded picture is emission-absorption: %.1f dB from it" % value_db)
+value_db = scene.psnr(plain_shaded, plain)
+check(value_db < 40.0, "VTK Property with Shade: VTK's shading, %.1f dB from the unshaded" % value_db)
+check(scene.psnr(again, picture) == float("inf"), "VTK Property off gives the first picture")
 
 # 3. A state-file round trip.
 state = os.path.join(output, "plugin-smoke.pvsm")

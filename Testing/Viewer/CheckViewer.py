@@ -478,7 +478,8 @@ def main():
     args = parser.parse_args()
 
     modes = {"scripted": scripted, "sequence": sequence_mode, "slice": slice_mode,
-             "exposure": exposure_mode, "property": property_mode, "paths": paths_mode, "denoise": denoise_mode, "failures": failures_mode}
+             "exposure": exposure_mode, "property": property_mode, "paths": paths_mode,
+             "denoise": denoise_mode, "failures": failures_mode}
     failures = modes[args.mode](args)
     for message in failures:
         print("FAIL:", message)

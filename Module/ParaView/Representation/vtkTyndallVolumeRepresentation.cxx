@@ -108,6 +108,35 @@ void vtkTyndallVolumeRepresentation::UpdateMapperParameters()
     this->Medium->Modified();
   }
   this->UpdateTransfer2D();
+  this->UpdateDrawnProperty();
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::UpdateDrawnProperty()
+{
+  if (!this->VTKProperty)
+  {
+    this->Actor->SetProperty(this->Medium);
+    return;
+  }
+  // A new copy only when the medium changed: a new property rebuilds the maps.
+  if (!this->Plain || this->Medium->GetMTime() > this->MediumCopyTime)
+  {
+    this->Plain = vtkSmartPointer<vtkVolumeProperty>::New();
+    vtkParticipatingMediumProperty::CopyVolumeProperty(this->Medium, this->Plain);
+    this->MediumCopyTime = this->Medium->GetMTime();
+  }
+  this->Actor->SetProperty(this->Plain);
+}
+
+//------------------------------------------------------------------------------
+void vtkTyndallVolumeRepresentation::SetVTKProperty(int on)
+{
+  if (this->VTKProperty != (on != 0))
+  {
+    this->VTKProperty = on != 0;
+    this->UpdateDrawnProperty();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -308,6 +337,7 @@ void vtkTyndallVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->TyndallMapper->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Medium:\n";
   this->Medium->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "VTKProperty: " << this->VTKProperty << "\n";
 }
 
 //------------------------------------------------------------------------------

@@ -24,7 +24,10 @@
  *   gradient magnitude, classifies the medium as VTK's mapper does
  *   (vtkTyndallGridMedium; its colours clamped to [0, 1], as VTK's mapper
  *   reads them); over a second array, or with several components drawn as
- *   such, it is not drawn (the 1-D functions, with a warning).
+ *   such, it is not drawn (the 1-D functions, with a warning). With
+ *   SetVTKProperty() on, the volume is drawn with a plain copy of the
+ *   medium's vtkVolumeProperty settings instead: ParaView's Shade is then
+ *   VTK's gradient shading, shadowed by the maps.
  *
  * Everything else is ParaView's: the data delivery, the outline shown while
  * interacting on ranks without data, the array selection, the volume's
@@ -44,11 +47,13 @@
 
 #include "TyndallParaViewRepresentationModule.h" // For export macro
 #include "vtkImageVolumeRepresentation.h"
-#include "vtkNew.h" // For vtkNew
+#include "vtkNew.h"          // For vtkNew
+#include "vtkSmartPointer.h" // For vtkSmartPointer
 
 class vtkImageData;
 class vtkParticipatingMediumProperty;
 class vtkTransmittanceVolumeMapper;
+class vtkVolumeProperty;
 
 class TYNDALLPARAVIEWREPRESENTATION_EXPORT vtkTyndallVolumeRepresentation
   : public vtkImageVolumeRepresentation
@@ -135,6 +140,19 @@ public:
   void SetScatteringOctaves(int octaves);
   ///@}
 
+  /**
+   * Whether the volume is drawn with a plain vtkVolumeProperty made from
+   * the medium's vtkVolumeProperty settings (vtkParticipatingMediumProperty::
+   * CopyVolumeProperty(): ParaView's colour map, opacity, Shade and its
+   * coefficients), so that the mapper gives them VTK's meaning: unlit, or
+   * with Shade VTK's gradient shading (Ambient, Diffuse, Specular, Specular
+   * Power) shadowed by the maps, and path traced a shaded CT; the medium's
+   * own settings (the scattering model, anisotropy, ambient and emission,
+   * octaves, density and light scale) do not apply. Default off (the medium:
+   * Tyndall's meaning). tyndall-render's --vtk-property.
+   */
+  void SetVTKProperty(int on);
+
   ///@{
   /**
    * Under MPI (more than one process in VTK's global controller) the mapper
@@ -170,7 +188,7 @@ protected:
   /**
    * ParaView's parameters, then the medium's share of the volume property's
    * transfer functions (the medium is the rendered volume's property from
-   * the constructor on).
+   * the constructor on, or its plain copy: SetVTKProperty()).
    */
   void UpdateMapperParameters() override;
 
@@ -186,6 +204,12 @@ private:
   vtkImageData* Transfer2DSource = nullptr; // compared only
   vtkMTimeType Transfer2DCopyTime = 0;
   bool WarnedTransfer2D = false; // the 1-D functions used instead, said once
+  // SetVTKProperty(): the drawn property, the medium or its plain copy
+  // (made anew when the medium changed since MediumCopyTime).
+  void UpdateDrawnProperty();
+  bool VTKProperty = false;
+  vtkSmartPointer<vtkVolumeProperty> Plain;
+  vtkMTimeType MediumCopyTime = 0;
 };
 
 #endif

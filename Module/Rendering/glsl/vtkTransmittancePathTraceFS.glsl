@@ -523,10 +523,10 @@ vec3 tyndallSampleHG(vec3 w, float g)
 // half-vector lobe and the sphere (shares Diffuse, Specular and Volume);
 // else the phase function (and with TYNDALL_SHADING_ADDITIVE, a
 // vtkParticipatingMediumProperty's Shade, the phase function with the same
-// lobe's light added: tyndallPathAddedSurface()). Independent components (TYNDALL_COMPONENT_
-// SHADING): one drawn with its share of their parts in the mixture (which
-// add up to P, not always 1), whose gradient, colour, coefficients and k
-// make the lobe, f and Ka c times P (Scale). The renderer's
+// lobe's light added: tyndallPathAddedSurface()). Independent components
+// (TYNDALL_COMPONENT_SHADING): one drawn with its share of their parts in
+// the mixture (which add up to P, not always 1), whose gradient, colour,
+// coefficients and k make the lobe, f and Ka c times P (Scale). The renderer's
 // lights and sky are pathLightUnit (vtkTyndallSurfaceLobe::LightUnit, 2 pi)
 // brighter against the lobe, so that a light's first bounce is VTK's
 // shading term, and a shaded collision exchanges its light from
