@@ -41,7 +41,7 @@ set(tyndall_test_costs
   TyndallBenchmark-CinematicSkyQuick 27
   TyndallParaView-MPI 26
   Tyndall::RenderingCxx-TestTransmittanceMapperDepthPeeling 25
-  Tyndall::ReferenceCxx-TestVolumetricPathTracer 34
+  Tyndall::ReferenceCxx-TestVolumetricPathTracer 36
   TyndallIO-FuzzOpenVDBReader 22
   Tyndall::RenderingCxx-TestTransmittanceMapperSky 24
   Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 18

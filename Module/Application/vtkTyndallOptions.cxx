@@ -162,7 +162,7 @@ const Spec kOptions[] = {
   { "shade", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "add VTK's gradient surface term (VTK's Diffuse 0.7, Specular 0.2, specular power 10; the "
     "CT and MR presets' 0.9, 0.3, 10) to the medium's single scattering, shadowed like it: its "
-    "surfaces catch highlights",
+    "surfaces catch highlights (with --vtk-property: VTK's gradient shading instead)",
     KeyMode::Toggle, "g" },
   { "vtk-property", "", Kind::Flag, 0, 0, false, "", "", "", "Scattering", Both,
     "draw the volumes with a plain vtkVolumeProperty (VTK's meaning) made from their transfer "

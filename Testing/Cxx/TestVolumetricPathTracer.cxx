@@ -453,6 +453,21 @@ vtkSmartPointer<vtkImageData> OneBounceAgainstShading(
   return copy;
 }
 
+// The scene traced with 6 bounces (256 spp, `seed`) has more radiance than
+// `one`, its 1-bounce picture (the global z of the difference above 5).
+void CheckMoreBounces(Scene& scene, vtkImageData* one, const std::string& what, unsigned int seed)
+{
+  vtkNew<vtkVolumetricPathTracer> many;
+  vtkImageData* more = Trace(many, scene, vtkVolumetricPathTracer::DELTA_TRACKING, 6, 256, seed);
+  Check(one && more, what + ": 6 bounces render");
+  if (one && more)
+  {
+    const Stats s = Compare(more, one, true);
+    Report(s, what + ", 6 bounces vs 1");
+    Check(s.Global > 5.0, what + ": more bounces give more radiance");
+  }
+}
+
 // A plain vtkVolumeProperty with Shade on, path traced with one bounce,
 // against vtkSingleScatteringReference's VTK shading (the same
 // expectation: the lights' first bounce off the lobe is VTK's term, see
@@ -463,18 +478,7 @@ void TestShadedSurface(Scene& scene)
   scene.Volume->SetProperty(MakeShadedBlob(scene));
   ScaleIntensities(scene.Renderer, 0.4);
   vtkSmartPointer<vtkImageData> one = OneBounceAgainstShading(scene, "shaded", 31);
-  vtkNew<vtkVolumetricPathTracer> many;
-  vtkImageData* more = Trace(many, scene, vtkVolumetricPathTracer::DELTA_TRACKING, 6, 256, 32);
-  if (more && one)
-  {
-    const Stats s = Compare(more, one, true);
-    Report(s, "shaded, 6 bounces vs 1");
-    Check(s.Global > 5.0, "shaded: more bounces give more radiance");
-  }
-  else
-  {
-    Check(false, "shaded: 6 bounces render");
-  }
+  CheckMoreBounces(scene, one, "shaded", 32);
   ScaleIntensities(scene.Renderer, 1.0 / 0.4);
   scene.Volume->SetProperty(scene.Property);
 }
@@ -574,15 +578,7 @@ void TestMediumShade(Scene& scene)
   // finer one; the shaded blob's shell does.)
   vtkSmartPointer<vtkImageData> one =
     OneBounceAgainstShading(scene, "a medium's Shade", 35, 2.0, 0.0);
-  vtkNew<vtkVolumetricPathTracer> many;
-  vtkImageData* more = Trace(many, scene, vtkVolumetricPathTracer::DELTA_TRACKING, 6, 256, 36);
-  Check(one && more, "a medium's Shade: 6 bounces render");
-  if (one && more)
-  {
-    const Stats s = Compare(more, one, true);
-    Report(s, "a medium's Shade, 6 bounces vs 1");
-    Check(s.Global > 5.0, "a medium's Shade: more bounces give more radiance");
-  }
+  CheckMoreBounces(scene, one, "a medium's Shade", 36);
   // Over two independent components (the blob and its copy moved along x):
   // the surface term of component 0's gradient and the mixture's colour
   // (without emission, which the components cannot take from the tables).
@@ -662,16 +658,8 @@ void TestModesAgree(Scene& scene)
 void TestMoreBounces(Scene& scene)
 {
   vtkNew<vtkVolumetricPathTracer> one;
-  vtkNew<vtkVolumetricPathTracer> many;
-  vtkImageData* a = Trace(many, scene, vtkVolumetricPathTracer::DELTA_TRACKING, 6, 256, 21);
-  vtkImageData* b = Trace(one, scene, vtkVolumetricPathTracer::DELTA_TRACKING, 1, 256, 22);
-  Check(a && b, "bounces: both render");
-  if (a && b)
-  {
-    const Stats s = Compare(a, b, true);
-    Report(s, "6 bounces vs 1");
-    Check(s.Global > 5.0, "more bounces give more radiance");
-  }
+  CheckMoreBounces(
+    scene, Trace(one, scene, vtkVolumetricPathTracer::DELTA_TRACKING, 1, 256, 22), "detail", 21);
 }
 
 void TestDeterminism(Scene& scene)
