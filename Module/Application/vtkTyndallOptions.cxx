@@ -915,8 +915,8 @@ public:
       if (!medium.empty())
       {
         return "--" + medium +
-          " sets the medium (vtkParticipatingMediumProperty), which --vtk-property replaces by "
-          "a plain vtkVolumeProperty";
+          " applies to the medium (vtkParticipatingMediumProperty) only, which --vtk-property "
+          "replaces by a plain vtkVolumeProperty";
       }
     }
     if (set("skip-bad-frames") && !set("sequence"))
@@ -1310,6 +1310,10 @@ const char* vtkTyndallOptions::ApplyKey(int key)
 //------------------------------------------------------------------------------
 const char* vtkTyndallOptions::GetKeyOption(int key)
 {
+  if (this->Program != VIEWER)
+  {
+    return nullptr; // only the viewer has keys
+  }
   for (const Spec& s : kOptions)
   {
     if ((s.Programs & this->Program) && s.Mode != KeyMode::None && key > 0 && key <= 255 &&

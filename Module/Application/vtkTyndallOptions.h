@@ -180,10 +180,11 @@ public:
   const char* GetKeyOption(int key);
 
   /**
-   * Whether the option `name` (without "--") sets the medium only
+   * Whether the option `name` (without "--") applies to the medium only
    * (vtkParticipatingMediumProperty: its model, scattering, emission,
-   * detail, densities and scene rules), which --vtk-property replaces by a
-   * plain vtkVolumeProperty: a command line refuses one beside it, and the
+   * densities and scene rules, and its procedural detail with the
+   * detail's sampling), which --vtk-property replaces by a plain
+   * vtkVolumeProperty: a command line refuses one beside it, and the
    * viewer ignores its keys while it is on.
    */
   static bool IsMediumOption(const std::string& name);

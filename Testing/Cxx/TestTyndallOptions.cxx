@@ -139,14 +139,16 @@ int TestTyndallOptions(int, char*[])
   ExpectError(o, { "--script", "s.txt" }, "unknown option '--script'"); // a viewer option
   // --vtk-property: a plain vtkVolumeProperty, none of the medium's options.
   ExpectError(o, { "--vtk-property", "--octaves", "3" },
-    "--octaves sets the medium (vtkParticipatingMediumProperty), which --vtk-property");
-  ExpectError(o, { "--vtk-property", "--detail-octaves", "2" }, "--detail-octaves sets the medium");
+    "--octaves applies to the medium (vtkParticipatingMediumProperty) only, which --vtk-property");
+  ExpectError(
+    o, { "--vtk-property", "--detail-octaves", "2" }, "--detail-octaves applies to the medium");
   ExpectError(o,
     { "a.vti", "--vtk-property", "--add-volume", "b.vti", "--volume-density-scale", "2" },
-    "--volume-density-scale sets the medium");
+    "--volume-density-scale applies to the medium");
   Check(Parse(o,
           { "a.vti", "--vtk-property", "--shade", "--add-volume", "b.vti", "--volume-scale", "2" }),
     "--vtk-property with --shade and a volume's placement");
+  Check(!o->GetKeyOption('a'), "tyndall-render has no keys");
   Check(vtkTyndallOptions::IsMediumOption("anisotropy") &&
       vtkTyndallOptions::IsMediumOption("detail-contrast") &&
       !vtkTyndallOptions::IsMediumOption("shade") && !vtkTyndallOptions::IsMediumOption("method"),

@@ -570,6 +570,9 @@ void TestShadedBlendingAndComponents(Scene& scene)
 // at each collision, never scattered by the lobe).
 void TestMediumShade(Scene& scene)
 {
+  const double diffuse = scene.Property->GetDiffuse(), specular = scene.Property->GetSpecular();
+  const double power = scene.Property->GetSpecularPower();
+  const int independent = scene.Property->GetIndependentComponents();
   scene.Property->ShadeOn();
   scene.Property->SetDiffuse(0.6);
   scene.Property->SetSpecular(0.4);
@@ -593,8 +596,11 @@ void TestMediumShade(Scene& scene)
   scene.Property->SetColor(1, blue);
   scene.Property->SetScalarOpacityUnitDistance(1, 0.05);
   OneBounceAgainstShading(scene, "a medium's Shade, two independent components", 37, 2.0, 0.0);
-  scene.Property->IndependentComponentsOff();
+  scene.Property->SetIndependentComponents(independent);
   scene.Property->SetEmissionScale(emission);
+  scene.Property->SetDiffuse(diffuse);
+  scene.Property->SetSpecular(specular);
+  scene.Property->SetSpecularPower(power);
   scene.Mapper->SetInputData(scene.Image);
   scene.Property->ShadeOff();
 }

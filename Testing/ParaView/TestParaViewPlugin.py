@@ -168,8 +168,8 @@ check(scene.psnr(again, picture) == float("inf"), "path tracing off gives the fi
 # The VTK Property: the volume drawn with a plain vtkVolumeProperty made
 # from the medium's settings, VTK's meaning. Unshaded it is VTK's
 # emission-absorption picture, the medium's Emission-absorption model
-# exactly; Shade then changes it (VTK's gradient shading reaches the plain
-# property); off, the first picture again.
+# (60 dB or more; measured 69.3); Shade then changes it (VTK's gradient
+# shading reaches the plain property); off, the first picture again.
 display.TyndallVTKProperty = 1
 plain, _ = screenshot(view, "plugin-vtk-property.png")
 display.Shade = 1

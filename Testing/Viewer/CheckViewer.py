@@ -325,19 +325,22 @@ def property_mode(args):
     gradient shading) against tyndall-render's pictures of both; then, with
     --vtk-property, a key that changes nothing of the property (j, the
     jitter) rebuilds no map (the plain copy is kept while its medium is
-    unchanged)."""
+    unchanged), and a key of the medium's (a, the anisotropy) is ignored
+    with a message."""
     failures = key_against_render(args, ["--shade"], {"start": [], "moved": ["--vtk-property"]},
                                   "k", 1, "property")
-    events = "frames 2; key j; frames 2; key j; frames 2; quit"
+    events = "frames 2; key j; frames 2; key a; frames 2; quit"
     result = run([args.viewer, "-s", "32", "32"] + CACHE +
                  ["--shade", "--vtk-property", args.input, "--events", events])
     frames = parse_frames(result.stdout)
     builds = [f["builds"] for f in frames]
-    print("map builds per frame with --vtk-property, j pressed twice: %s" % builds)
+    print("map builds per frame with --vtk-property, j then a pressed: %s" % builds)
     if result.returncode != 0 or len(builds) < 6:
         failures.append("the viewer's run with --vtk-property failed (%d)" % result.returncode)
     elif builds[-1] != builds[1]:
-        failures.append("the key j rebuilt the maps of a plain property (%s)" % builds)
+        failures.append("the keys j and a rebuilt the maps of a plain property (%s)" % builds)
+    if "sets the medium's --anisotropy" not in result.stderr:
+        failures.append("the key a was not refused with --vtk-property")
     return failures
 
 

@@ -167,8 +167,8 @@ void vtkTyndallVolumeRepresentation::UpdateTransfer2D()
                     << ": the 1-D functions are used.");
   }
   this->WarnedTransfer2D = oneD;
-  this->Medium->SetTransferFunctionMode(
-    oneD ? vtkVolumeProperty::TF_1D : paraview->GetTransferFunctionMode());
+  // The mode after the function (VTK may set TF_2D with a new 2-D function).
+  const int mode = oneD ? vtkVolumeProperty::TF_1D : paraview->GetTransferFunctionMode();
   // ParaView composites its boxes without premultiplying: overlapping ones
   // can exceed 1, which VTK's mapper clamps and Tyndall refuses; a clamped
   // copy, made again when ParaView's changes.
@@ -176,6 +176,7 @@ void vtkTyndallVolumeRepresentation::UpdateTransfer2D()
   if (!source)
   {
     this->Medium->SetTransferFunction2D(nullptr);
+    this->Medium->SetTransferFunctionMode(mode);
     return;
   }
   if (source != this->Transfer2DSource || source->GetMTime() > this->Transfer2DCopyTime)
@@ -195,6 +196,7 @@ void vtkTyndallVolumeRepresentation::UpdateTransfer2D()
     this->Transfer2DCopyTime = this->Transfer2D->GetMTime();
   }
   this->Medium->SetTransferFunction2D(this->Transfer2D);
+  this->Medium->SetTransferFunctionMode(mode);
 }
 
 //------------------------------------------------------------------------------
