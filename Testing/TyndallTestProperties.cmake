@@ -10,7 +10,9 @@
 #   seconds at most). A new test of more than 5 s adds its line here.
 # - the sanitizer selection: the tests labelled NoSanitizer are left out of
 #   the sanitizer suite that setup.sh runs (ctest -LE NoSanitizer in
-#   build-asan/; TYNDALL_SANITIZE_ALL=1 runs them too). Each is a rendering
+#   build-asan/, which does not even compile their sources:
+#   tyndall_sanitizer_sources(); TYNDALL_SANITIZE_ALL=1 builds and runs them
+#   too, TYNDALL_SANITIZE_ALL_TESTS=ON in CMake). Each is a rendering
 #   test whose time goes to Mesa's llvmpipe running Tyndall's shaders (not
 #   instrumented, so the sanitizers see nothing of it), and whose Tyndall C++
 #   runs in tests kept in the selection: the list says which.
@@ -139,6 +141,25 @@ function (tyndall_compile_test_drivers)
         "$<$<OR:$<CONFIG:Release>,$<CONFIG:RelWithDebInfo>,$<CONFIG:MinSizeRel>>:-O1>")
     endif ()
   endforeach ()
+endfunction ()
+
+# The sources of `listvar` (Test*.cxx) less those of the tests named
+# `prefix`<source name> in tyndall_no_sanitizer_tests, in the sanitizer build
+# (TYNDALL_SANITIZE) unless TYNDALL_SANITIZE_ALL_TESTS: its suite does not run
+# them (setup.sh's -LE NoSanitizer), and their 17 sources were about 50 s of
+# its compile on one core (3 s each at -O0 with the sanitizers).
+function (tyndall_sanitizer_sources listvar prefix)
+  if (NOT TYNDALL_SANITIZE OR TYNDALL_SANITIZE_ALL_TESTS)
+    return ()
+  endif ()
+  set(kept)
+  foreach (source IN LISTS "${listvar}")
+    get_filename_component(name "${source}" NAME_WE)
+    if (NOT "${prefix}${name}" IN_LIST tyndall_no_sanitizer_tests)
+      list(APPEND kept "${source}")
+    endif ()
+  endforeach ()
+  set("${listvar}" "${kept}" PARENT_SCOPE)
 endfunction ()
 
 function (tyndall_finish_tests)

@@ -4,9 +4,10 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID NO_OUTPUT
   TestTransmittanceDetailFilterChain.cxx
   TestTransmittanceLightFrustum.cxx)
-# vtkTransmittanceVolumeMapper (needs a display).
-vtk_add_test_cxx(TyndallRenderingCxxTests tests
-  NO_DATA NO_VALID NO_OUTPUT
+# vtkTransmittanceVolumeMapper (needs a display). The sanitizer build leaves
+# out the sources of the tests its suite does not run (NoSanitizer,
+# tyndall_sanitizer_sources(); TYNDALL_SANITIZE_ALL_TESTS keeps them).
+set(tyndall_mapper_tests
   TestTransmittanceMapperCaching.cxx
   TestTransmittanceMapperEmptySpace.cxx
   TestTransmittanceMapperInteractive.cxx
@@ -36,6 +37,10 @@ vtk_add_test_cxx(TyndallRenderingCxxTests tests
   TestTransmittanceMapperTiling.cxx
   TestTransmittanceMapperBricks.cxx
   TestTransmittanceMapReducer.cxx)
+tyndall_sanitizer_sources(tyndall_mapper_tests Tyndall::RenderingCxx-)
+vtk_add_test_cxx(TyndallRenderingCxxTests tests
+  NO_DATA NO_VALID NO_OUTPUT
+  ${tyndall_mapper_tests})
 # VTK's scenes against VTK's mapper (no baseline; -T: where their pictures go).
 vtk_add_test_cxx(TyndallRenderingCxxTests tests
   NO_DATA NO_VALID

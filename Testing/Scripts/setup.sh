@@ -137,6 +137,10 @@ build_sanitized() {
       -DTYNDALL_SANITIZE=ON -DTYNDALL_ENABLE_FUZZING=OFF -DTYNDALL_UNITY_BUILD=ON \
       -DPython3_EXECUTABLE=/usr/bin/python3 >&2
   fi
+  # The NoSanitizer tests are built only when the suite runs them.
+  if [ "${TYNDALL_SANITIZE_ALL:-0}" = 1 ]; then
+    cmake -DTYNDALL_SANITIZE_ALL_TESTS=ON "$sanitizer_build" >&2
+  fi
   cmake --build "$sanitizer_build" -j "$jobs" >&2
 }
 
