@@ -23,7 +23,7 @@
 
 set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
-  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 165
+  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 175
   Tyndall::RenderingCxx-TestTransmittanceMapperReference 80
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 80
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77
@@ -95,7 +95,7 @@ set(tyndall_no_sanitizer_tests
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneRules
   # 47 s: the detail medium (TestTyndallDetailMedium, TyndallCLI-Detail*)
   Tyndall::RenderingCxx-TestTransmittanceMapperDetail
-  # 70 s unsanitized: the CPU path tracer at 4096 spp beside the GPU's paths
+  # 88 s unsanitized: the CPU path tracer at 4096 spp beside the GPU's paths
   # (TestVolumetricPathTracer; the mapper's path-tracing mode: TyndallCLI-PathTrace*)
   Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace
   # 8 s unsanitized: 1024 spp of paths at 64^2 (the denoiser's twin: TestTyndallDenoiser;

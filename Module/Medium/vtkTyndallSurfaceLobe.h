@@ -23,9 +23,10 @@
  * **Light units.** VTK's lights shade a facing surface with Kd c E (E the
  * light's intensity times its colour): against f above a light is 2 pi
  * brighter (LightUnit). A path tracer multiplies the renderer's lights and
- * its sky by LightUnit in a scene whose volume has a plain property with
- * Shade on, so that the first
- * bounce of a light is VTK's own term, Kd c |n.l| E + Ks |n.h|^p E
+ * its sky by LightUnit at a collision that scatters by this lobe (its
+ * next-event estimates, and the sky a path meets after it; a plain
+ * property with Shade on), not at other media's collisions, so that the
+ * first bounce of a light is VTK's own term, Kd c |n.l| E + Ks |n.h|^p E
  * (vtkTyndallShading::AddLight()), and the bounces after it are this
  * lobe's, which does not add energy (without the blending below). VTK's
  * ambient term Ka c stays what it

@@ -134,8 +134,6 @@ struct Scene : public vtkTyndallReferenceScene
   bool SurfaceAdded = false;
   /// How far a shaded collision's light is exchanged from (world, along its direction).
   double SurfaceOffset = 0.0;
-  /// The sky's radiance factor (vtkTyndallSurfaceLobe::LightUnit in a shaded scene).
-  double SkyScale = 1.0;
 };
 
 // A ray in world (origin X, unit direction W) and in every medium's frame,
@@ -147,6 +145,10 @@ struct Ray
   double W[3];
   double T0 = 0.0;
   double T1 = kInfinity;
+  /// The sky's radiance factor when this ray, scattered, leaves the media:
+  /// vtkTyndallSurfaceLobe::LightUnit after a plain property's shaded
+  /// collision (its lobe's unit), else 1.
+  double SkyUnit = 1.0;
   vtkTyndallReferenceScene::LocalRays Local;
   double Low[kMaxMedia];
   double High[kMaxMedia];
@@ -553,15 +555,16 @@ private:
     this->MediaTransmittance(y, nullptr, l, std::max(tMax - offset, 0.0), rng, timing, path, T);
   }
 
-  // The source term of a shaded collision at the world point x: VTK's
-  // ambient term Ka c (`ambient`), plus each light's E f(v, l) T_l and, with a sky,
-  // its next-event estimate weighted by the power heuristic against the
-  // lobe's sampling (1 at the path's last collision).
-  void SurfaceSource(const double x[3], const double ambient[3], const vtkTyndallSurfaceLobe& lobe,
-    bool last, Random& rng, Timing& timing, const PathState& path, double J[3]) const
+  // The lights' and the sky's light a shaded collision at the world point x
+  // reflects by its lobe, in its unit (vtkTyndallSurfaceLobe::LightUnit
+  // times each light's E f(v, l) T_l and, with a sky, its next-event
+  // estimate weighted by the power heuristic against the lobe's sampling,
+  // 1 at the path's last collision), added to J.
+  void AddLobeLight(const double x[3], const vtkTyndallSurfaceLobe& lobe, bool last, Random& rng,
+    Timing& timing, const PathState& path, double J[3]) const
   {
     const Scene& s = *this->S;
-    std::copy(ambient, ambient + 3, J);
+    const double unit = vtkTyndallSurfaceLobe::LightUnit;
     if (!lobe.Scatters())
     {
       return;
@@ -578,7 +581,7 @@ private:
       this->SurfaceTransmittance(x, l, tMax, rng, timing, path, T);
       for (int c = 0; c < 3; ++c)
       {
-        J[c] += factor * light.Color[c] * f[c] * T[c];
+        J[c] += unit * factor * light.Color[c] * f[c] * T[c];
       }
     }
     if (!s.Environment || !s.Environment->Enabled())
@@ -594,7 +597,7 @@ private:
     }
     lobe.Evaluate(l, f);
     this->SurfaceTransmittance(x, l, kInfinity, rng, timing, path, T);
-    const double weight = (last ? 1.0 : PowerWeight(pdf, lobe.Pdf(l))) * s.SkyScale / pdf;
+    const double weight = (last ? 1.0 : PowerWeight(pdf, lobe.Pdf(l))) * unit / pdf;
     for (int c = 0; c < 3; ++c)
     {
       J[c] += sky[c] * f[c] * T[c] * weight;
@@ -623,7 +626,7 @@ private:
     const double phase = s.Phase(vtkMath::Dot(l, ray.W));
     double T[3];
     this->LightTransmittance(ray, t, x, l, kInfinity, rng, timing, path, T);
-    const double weight = (last ? 1.0 : PowerWeight(pdf, phase)) * phase * s.SkyScale / pdf;
+    const double weight = (last ? 1.0 : PowerWeight(pdf, phase)) * phase / pdf;
     for (int c = 0; c < 3; ++c)
     {
       J[c] += albedo[c] * sky[c] * T[c] * weight;
@@ -632,13 +635,14 @@ private:
 
   // A scattered ray that leaves the media: adds beta L(w) times the power
   // heuristic's weight of the phase function's density `phasePdf` (the
-  // direction's) against the sky's.
+  // direction's) against the sky's, in the unit of the collision it left
+  // (Ray::SkyUnit).
   void AddSkyEscape(const Ray& ray, const double beta[3], double phasePdf, double L[3]) const
   {
     const vtkTyndallEnvironment& sky = *this->S->Environment;
     double radiance[3];
     sky.Evaluate(ray.W, radiance);
-    const double weight = PowerWeight(phasePdf, sky.Pdf(ray.W)) * this->S->SkyScale;
+    const double weight = PowerWeight(phasePdf, sky.Pdf(ray.W)) * ray.SkyUnit;
     for (int c = 0; c < 3; ++c)
     {
       L[c] += beta[c] * radiance[c] * weight;
@@ -773,26 +777,20 @@ private:
     phasePdf = s.Phase(vtkMath::Dot(ray.W, w));
     ray.T0 = 0.0;
     ray.T1 = kInfinity;
+    ray.SkyUnit = 1.0;
     return true;
   }
 
   // A vtkParticipatingMediumProperty's Shade at a collision in the volume
   // (world point x, own point p, reached along w): adds its surface term to
-  // J, LightUnit times the lobe's light (the lights and sky not scaled), the
-  // sky's by its next-event estimate alone (weight 1: the lobe is not
-  // sampled).
+  // J, the lobe's light (no ambient term), the sky's by its next-event
+  // estimate alone (weight 1: the lobe is not sampled).
   void AddSurfaceTerm(const double w[3], const double x[3], const double p[3], const Point& point,
     Random& rng, Timing& timing, const PathState& path, double J[3]) const
   {
     double ambient[3];
     const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, w, point, rng, ambient);
-    const double none[3] = { 0.0, 0.0, 0.0 }; // no ambient term
-    double surface[3];
-    this->SurfaceSource(x, none, lobe, true, rng, timing, path, surface);
-    for (int c = 0; c < 3; ++c)
-    {
-      J[c] += vtkTyndallSurfaceLobe::LightUnit * surface[c];
-    }
+    this->AddLobeLight(x, lobe, true, rng, timing, path, J);
   }
 
   // Scatter() at a collision in the shaded volume (world point x, own point
@@ -802,10 +800,9 @@ private:
     bool last, Random& rng, Timing& timing, PathState& path, double beta[3], double& phasePdf,
     double L[3]) const
   {
-    double ambient[3];
-    const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, ray.W, point, rng, ambient);
     double J[3];
-    this->SurfaceSource(x, ambient, lobe, last, rng, timing, path, J);
+    const vtkTyndallSurfaceLobe lobe = this->SurfaceLobe(p, ray.W, point, rng, J);
+    this->AddLobeLight(x, lobe, last, rng, timing, path, J);
     for (int c = 0; c < 3; ++c)
     {
       L[c] += beta[c] * J[c];
@@ -832,6 +829,7 @@ private:
     }
     ray.T0 = 0.0;
     ray.T1 = kInfinity;
+    ray.SkyUnit = vtkTyndallSurfaceLobe::LightUnit;
     return true;
   }
 
@@ -1019,24 +1017,6 @@ void SetUpSurface(Scene& scene)
   scene.SurfaceAdded = grid.GetShading().GetAdditive();
   scene.SurfaceOffset = vtkTyndallShading::ShadowOffset * grid.GetMinimumWorldSpacing();
 }
-
-// Every light, the sky and the ambient light `unit` times brighter.
-void ScaleLights(Scene& scene, double unit)
-{
-  for (Scene::LightSource& light : scene.Lights)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      light.E[c] *= unit;
-      light.Color[c] *= unit;
-    }
-  }
-  for (double& ambient : scene.Ambient)
-  {
-    ambient *= unit;
-  }
-  scene.SkyScale = unit;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -1079,10 +1059,6 @@ bool vtkVolumetricPathTracer::RenderImage(
   if (!scene.SetUpView(tyndall, renderer, this))
   {
     return false;
-  }
-  if (scene.Surface && !scene.SurfaceAdded)
-  {
-    ScaleLights(scene, vtkTyndallSurfaceLobe::LightUnit);
   }
 
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;

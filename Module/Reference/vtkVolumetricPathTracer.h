@@ -149,23 +149,27 @@
  * next-event estimate, weighed against the lobe's draws), then a direction
  * drawn from the lobe, the throughput times f / pdf. The lobe is about the
  * scalar's unit gradient (0 where it is 0, but the blending's isotropic
- * part: without it the collision only glows with Ka c); the lights, the
- * sky and the ambient light are vtkTyndallSurfaceLobe::LightUnit (2 pi)
- * brighter, so that one bounce is VTK's shading exactly (without its clamp
- * to 1: vtkSingleScatteringReference's picture of it), and the bounces
- * after it do not add energy (the blending's isotropic part may: it
- * scatters 2 k Kd c). As the map-based frame's shading takes T_l, a shaded
- * collision exchanges its light from vtkTyndallShading::ShadowOffset voxels
- * along its direction: its shadow rays and its scattered ray (a surface does
- * not shadow itself; without the offset one bounce is 26 % darker on the
- * test's blob). A headlight lights from where it is (VTK's shading takes
- * its direction along the camera ray). VTK 9.2's volumetric scattering
- * blending mixes an isotropic part into the lobe (its weight k at the
- * collision, vtkTyndallShading::BlendWeight(); one bounce is VTK's blended
- * term). Independent components: a collision is shaded as one of them
- * (its gradient, colour, coefficients and k), drawn with its share of
- * their parts in the mixture, the lobe and Ka c times the parts' sum (an
- * unbiased estimate of VTK's mixture of their shadings).
+ * part: without it the collision only glows with Ka c); such a collision
+ * sees the lights and the sky vtkTyndallSurfaceLobe::LightUnit (2 pi)
+ * brighter (its next-event estimates, and the sky met by a path its lobe
+ * scattered), so that one bounce is VTK's shading exactly (without its clamp
+ * to 1: vtkSingleScatteringReference's picture of it), and the bounces after
+ * it do not add energy (the blending's isotropic part may: it scatters 2 k
+ * Kd c). The other volumes' collisions see the lights, the sky and the
+ * ambient light unscaled (as a medium's picture does; with this volume's
+ * LightScale, ambient light and phase function, as every guest's collision):
+ * the unit is the shaded collision's, not the scene's. As the map-based
+ * frame's shading takes T_l, a shaded collision exchanges its light from
+ * vtkTyndallShading::ShadowOffset voxels along its direction: its shadow
+ * rays and its scattered ray (a surface does not shadow itself; without the
+ * offset one bounce is 26 % darker on the test's blob). A headlight lights
+ * from where it is (VTK's shading takes its direction along the camera ray).
+ * VTK 9.2's volumetric scattering blending mixes an isotropic part into the
+ * lobe (its weight k at the collision, vtkTyndallShading::BlendWeight(); one
+ * bounce is VTK's blended term). Independent components: a collision is
+ * shaded as one of them (its gradient, colour, coefficients and k), drawn
+ * with its share of their parts in the mixture, the lobe and Ka c times the
+ * parts' sum (an unbiased estimate of VTK's mixture of their shadings).
  *
  * A vtkParticipatingMediumProperty's Shade (vtkTyndallShading's surface
  * term added to the medium's single scattering: Tyndall's meaning) is a

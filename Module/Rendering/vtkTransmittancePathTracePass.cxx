@@ -51,14 +51,6 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "the isosurface blend mode draws surfaces, not a medium";
   }
-  // A plain property's Shade: collisions scatter as its surfaces
-  // (vtkTyndallSurfaceLobe), as the CPU tracer's, alone in the scene; a
-  // vtkParticipatingMediumProperty's: they add the lobe's light.
-  const vtkTyndallShading& shading = medium.GetShading();
-  if (shading.Enabled() && !frame.Guests.empty())
-  {
-    return "a shaded volume beside other volumes is not path traced on the GPU yet";
-  }
   for (const vtkTransmittanceFrame::Guest& guest : frame.Guests)
   {
     // The scattered paths cross the guests but add only this volume's
@@ -72,7 +64,8 @@ std::string vtkTransmittancePathTracePass::Refusal(
     if (guest.Medium->GetParameters().HasEmission && !frame.GetShaderVariant().Emission)
     {
       return "another volume's emission is path traced only with this volume's (give this one "
-             "an EmissionScale and emission colour too)";
+             "an EmissionScale and emission colour too: a vtkParticipatingMediumProperty's; a "
+             "plain vtkVolumeProperty has none)";
     }
   }
   if (distributed)

@@ -107,10 +107,8 @@ public:
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode (neither is a medium: the CPU tracer refuses them
-   * too), a Shade beside other volumes (a plain property's Shade is
-   * otherwise traced, vtkTyndallSurfaceLobe, and a
-   * vtkParticipatingMediumProperty's, its lobe's light added), another volume's emission
-   * array, another volume's emission while this one has no table emission,
+   * too), another volume's emission array, another volume's emission while
+   * this one has no table emission,
    * depth peeling (`peeling`), several processes (`distributed`).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);

@@ -409,7 +409,7 @@ public:
    * draws, scattered paths through every one.
    *
    * A plain vtkVolumeProperty with Shade on (a shaded CT) is traced as the
-   * CPU tracer traces it: each collision scatters as VTK's shaded surface
+   * CPU tracer traces it: each of its collisions scatters as VTK's shaded surface
    * (vtkTyndallSurfaceLobe: a lobe about the gradient, the lights' first
    * bounce VTK's shading term, VTK's ambient term an emission), with VTK
    * 9.2's volumetric scattering blending (an isotropic part of the lobe)
@@ -421,8 +421,9 @@ public:
    * its surface term).
    *
    * Not path traced yet, each said once in a warning, the map-based frame
-   * drawn instead: VTK's depth peeling for volumes, several processes, a
-   * shaded volume (either property) beside other volumes; and never (they are not
+   * drawn instead: VTK's depth peeling for volumes, several processes,
+   * another volume's emission array or emission without this volume's; and
+   * never (they are not
    * media; the CPU tracer refuses them too): the projection and isosurface
    * blend modes.
    */

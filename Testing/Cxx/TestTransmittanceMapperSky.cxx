@@ -82,7 +82,7 @@ constexpr int kCacheSize = 64;
 // 1. the white furnace; `shaded`: a shaded one (a plain property with
 // Shade on, white, Kd 1, Ks 0, Ka 0: every collision scatters all it
 // receives, its lobe's weight exactly 1; the sky is LightUnit L to it, the
-// sky's unit in a shaded scene, and so is the background), which holds
+// sky's unit for a shaded collision, and so is the background), which holds
 // the paths' own loop with vtkTyndallSurfaceLobe (the lobe's weights, the
 // sky's draws and the escapes weighed against each other, the unit on
 // both, the offset start: one bounce does not reach them).

@@ -50,8 +50,10 @@ struct PathComparison
   int Samples;                                    // the CPU tracer's per pixel
   int Pictures;                                   // the pictures whose noise counts (1 or 2)
   std::function<double(vtkIdType, int)> Expected; // pixel p's channel c
+  std::function<bool(vtkIdType)> Selected;        // the pixels compared (null: all)
 
-  // The z score of the sum of channel c over the pixels [x0, x1) x [y0, y1).
+  // The z score of the sum of channel c over the pixels [x0, x1) x [y0, y1)
+  // (those Selected).
   double Z(int x0, int y0, int x1, int y1, int c, double* difference = nullptr) const
   {
     int dims[3];
@@ -69,6 +71,10 @@ struct PathComparison
       for (int x = x0; x < x1; ++x)
       {
         const vtkIdType p = static_cast<vtkIdType>(y) * dims[0] + x;
+        if (this->Selected && !this->Selected(p))
+        {
+          continue;
+        }
         const double t = T->GetComponent(p, tc);
         sum += pixels[p * components + c] / 255.0 - this->Expected(p, c);
         variance += this->Pictures *

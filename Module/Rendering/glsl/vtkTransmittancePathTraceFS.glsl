@@ -15,8 +15,10 @@
 // extinction by spectral tracking (TYNDALL_CHROMATIC); with guests (other
 // volumes) the camera ray's flight through the camera media, scattered
 // flights through every medium (TYNDALL_CAMERA_GUESTS: tyndallEveryGuest)
-// to the maps' box, the collision's colour their mixture. It writes the paths'
-// mean radiance (premultiplied) and 1 - the mean of their first flights'
+// to the maps' box, the collision's colour their mixture (a shaded volume's
+// collision its own with its share of their extinction, else the others':
+// tyndallPathOnSurface(); a medium's Shade's surface term weighed by it).
+// It writes the paths' mean radiance (premultiplied) and 1 - the mean of their first flights'
 // escapes (an unbiased estimate of the view transmittance; per channel into
 // a second image with a coloured extinction, the escapes weighted by
 // spectral tracking); the still frames' images are averaged by
@@ -514,6 +516,30 @@ vec3 tyndallSampleHG(vec3 w, float g)
   return normalize(sinTheta * cos(phi) * u + sinTheta * sin(phi) * v + mu * w);
 }
 
+// This volume's colour (rgb) and extinction (a) in the collision's camera
+// sample s: with guests (TYNDALL_CAMERA_GUESTS) its part of their mixture,
+// else the sample's.
+vec4 tyndallPathOwn(TyndallCameraSample s)
+{
+#if TYNDALL_CAMERA_GUESTS
+  return s.Own;
+#else
+  return vec4(s.Color, s.Sigma);
+#endif
+}
+
+// This volume's share of the collision's extinction: exactly 1 alone, its
+// part of the mixture with guests (the CPU tracer's collisions are each one
+// medium's, this one's with this probability).
+float tyndallPathOwnShare(TyndallCameraSample s)
+{
+#if TYNDALL_CAMERA_GUESTS
+  return s.Guests.a > 0.0 ? clamp(s.Own.a / s.Sigma, 0.0, 1.0) : 1.0;
+#else
+  return 1.0;
+#endif
+}
+
 // How a collision scatters: with TYNDALL_SHADING (a plain property's
 // Shade, vtkTyndallSurfaceLobe: its CPU twin) a lobe about the scalar's
 // unit gradient n, towards where the path came from V (h = normalize(l +
@@ -558,8 +584,9 @@ TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
 {
   TyndallScatterer lobe;
   int part = 0;
-  float sigma = s.Sigma;
-  lobe.Color = s.Color;
+  vec4 own = tyndallPathOwn(s);
+  float sigma = own.a;
+  lobe.Color = own.rgb;
   lobe.Scale = 1.0;
 #if TYNDALL_COMPONENT_SHADING
   // The part drawn (the last of positive weight takes what rounding leaves).
@@ -783,64 +810,37 @@ TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
 // x (the lights not scaled: LightUnit f is VTK's term per unit light), the
 // sky's by next-event estimation alone (the lobe is never sampled: the
 // medium scatters on by its phase function; the CPU tracer's
-// AddSurfaceTerm()); 0 otherwise.
+// AddSurfaceTerm()), times this volume's share of the collision s (the
+// CPU adds it at this volume's collisions only); 0 otherwise.
 #if TYNDALL_SHADING_ADDITIVE
-vec3 tyndallPathAddedSurface(vec3 x, TyndallScatterer lobe)
+vec3 tyndallPathAddedSurface(vec3 x, TyndallCameraSample s, TyndallScatterer lobe)
 {
-  return tyndallLobeLight(x, lobe, true);
+  float share = tyndallPathOwnShare(s);
+  return share > 0.0 ? share * tyndallLobeLight(x, lobe, true) : vec3(0.0);
 }
 #else
-vec3 tyndallPathAddedSurface(vec3 x, TyndallScatterer lobe)
+vec3 tyndallPathAddedSurface(vec3 x, TyndallCameraSample s, TyndallScatterer lobe)
 {
   return vec3(0.0);
 }
 #endif
 
-#if TYNDALL_SHADING && !TYNDALL_SHADING_ADDITIVE
-// A shaded collision's light at x per unit of throughput (the CPU tracer's
-// SurfaceSource()): VTK's ambient Ka c, and the lobe's light of the lights
-// and the sky, the sky's against the lobe's sampling.
-vec3 tyndallPathCollisionLight(
-  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool last)
-{
-  return lobe.Scale * lobe.K.x * lobe.Color + tyndallLobeLight(x, lobe, last);
-}
-
-// Draws the scattered direction w from the lobe (its density phasePdf),
-// the throughput times its weight; false when the path ends there
-// (Russian roulette, or a lobe that does not scatter). The scattered
-// path leaves from shadowOffset along w (o).
-bool tyndallPathScatter(TyndallScatterer lobe, TyndallCameraSample s, vec3 x, inout vec3 beta,
-  inout vec3 w, out vec3 o, out float phasePdf)
-{
-  vec3 weight;
-  w = tyndallSampleLobe(lobe, weight, phasePdf);
-  beta *= weight;
-  o = x + shadowOffset * w;
-  return phasePdf > 0.0 && tyndallPathRoulette(beta);
-}
-
-float tyndallPathSkyUnit()
-{
-  return pathLightUnit;
-}
-#else
-// A collision's light at x per unit of throughput: its colour times the
-// in-scattered light (next-event estimation) and, with the sky, its
-// estimate against the phase function's sampling, plus its emission and
-// a medium's surface term (`surface`: its lobe).
-vec3 tyndallPathCollisionLight(
+// A medium's collision's light at x per unit of throughput: its colour
+// times the in-scattered light (next-event estimation) and, with the sky,
+// its estimate against the phase function's sampling, plus its emission
+// and a medium's surface term (`surface`: its lobe).
+vec3 tyndallMediumCollisionLight(
   vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer surface, bool last)
 {
   vec3 light = tyndallPathInScattering(x, w) + tyndallPathSkyEvent(x, w, last);
-  return s.Color * light + tyndallSampleEmission(s) + tyndallPathAddedSurface(x, surface);
+  return s.Color * light + tyndallSampleEmission(s) + tyndallPathAddedSurface(x, s, surface);
 }
 
-// The throughput times the collision's colour, then (unless the path ends
-// there: Russian roulette) the scattered direction w drawn from the phase
-// function (its density phasePdf), from x (o).
-bool tyndallPathScatter(TyndallScatterer surface, TyndallCameraSample s, vec3 x, inout vec3 beta,
-  inout vec3 w, out vec3 o, out float phasePdf)
+// The throughput times a medium's collision's colour, then (unless the
+// path ends there: Russian roulette) the scattered direction w drawn from
+// the phase function (its density phasePdf), from x (o).
+bool tyndallMediumScatter(TyndallCameraSample s, vec3 x, inout vec3 beta, inout vec3 w,
+  out vec3 o, out float phasePdf)
 {
   beta *= s.Color;
   o = x;
@@ -855,11 +855,99 @@ bool tyndallPathScatter(TyndallScatterer surface, TyndallCameraSample s, vec3 x,
   return true;
 }
 
-float tyndallPathSkyUnit()
+#if TYNDALL_SHADING && !TYNDALL_SHADING_ADDITIVE
+// Whether the collision s is this volume's, whose shaded surfaces scatter
+// (a plain property's Shade): always alone (no number drawn); with guests
+// drawn with this volume's share of the extinction (the CPU tracer's
+// collision of one medium), else s becomes the guests' part of the mixture
+// (their colour and emission; a plain property has no emission of its own).
+bool tyndallPathOnSurface(inout TyndallCameraSample s)
+{
+#if TYNDALL_CAMERA_GUESTS
+  if (s.Guests.a <= 0.0 || tyndallRandom() * s.Sigma < s.Own.a)
+  {
+    return true;
+  }
+  s.Color = s.Guests.rgb;
+  s.Emission *= s.Sigma / s.Guests.a;
+  return false;
+#else
+  return true;
+#endif
+}
+
+// A shaded collision's light at x per unit of throughput (the CPU tracer's
+// ScatterAtSurface()): VTK's ambient Ka c, and the lobe's light of the
+// lights and the sky, the sky's against the lobe's sampling.
+vec3 tyndallSurfaceCollisionLight(vec3 x, TyndallScatterer lobe, bool last)
+{
+  return lobe.Scale * lobe.K.x * lobe.Color + tyndallLobeLight(x, lobe, last);
+}
+
+// Draws the scattered direction w from the lobe (its density phasePdf),
+// the throughput times its weight; false when the path ends there
+// (Russian roulette, or a lobe that does not scatter). The scattered
+// path leaves from shadowOffset along w (o).
+bool tyndallSurfaceScatter(
+  TyndallScatterer lobe, vec3 x, inout vec3 beta, inout vec3 w, out vec3 o, out float phasePdf)
+{
+  vec3 weight;
+  w = tyndallSampleLobe(lobe, weight, phasePdf);
+  beta *= weight;
+  o = x + shadowOffset * w;
+  return phasePdf > 0.0 && tyndallPathRoulette(beta);
+}
+
+// The sky's unit for a path that leaves after a collision: the lobe's
+// (pathLightUnit: the lights and the sky are brighter against it), a
+// medium's 1.
+float tyndallPathSkyUnit(bool surface)
+{
+  return surface ? pathLightUnit : 1.0;
+}
+#else
+// Without a plain property's Shade every collision is a medium's.
+bool tyndallPathOnSurface(inout TyndallCameraSample s)
+{
+  return false;
+}
+
+vec3 tyndallSurfaceCollisionLight(vec3 x, TyndallScatterer lobe, bool last)
+{
+  return vec3(0.0);
+}
+
+bool tyndallSurfaceScatter(
+  TyndallScatterer lobe, vec3 x, inout vec3 beta, inout vec3 w, out vec3 o, out float phasePdf)
+{
+  o = x;
+  phasePdf = 0.0;
+  return false;
+}
+
+float tyndallPathSkyUnit(bool surface)
 {
   return 1.0;
 }
 #endif
+
+// A collision's light at x per unit of throughput, on a shaded surface
+// (`surface`: its lobe) or in a medium.
+vec3 tyndallPathCollisionLight(
+  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool surface, bool last)
+{
+  return surface ? tyndallSurfaceCollisionLight(x, lobe, last)
+                 : tyndallMediumCollisionLight(x, w, s, lobe, last);
+}
+
+// Scatters the path at a collision (see tyndallSurfaceScatter() and
+// tyndallMediumScatter()); false when it ends there.
+bool tyndallPathScatter(TyndallScatterer lobe, TyndallCameraSample s, bool surface, vec3 x,
+  inout vec3 beta, inout vec3 w, out vec3 o, out float phasePdf)
+{
+  return surface ? tyndallSurfaceScatter(lobe, x, beta, w, o, phasePdf)
+                 : tyndallMediumScatter(s, x, beta, w, o, phasePdf);
+}
 
 // One path from the camera ray p0 + t w, t in [tNear, tFar]: adds its
 // radiance to `radiance` and its first flight's escape (1 or 0) to
@@ -873,6 +961,7 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
   float t0 = tNear;
   float t1 = tFar;
   float phasePdf = 0.0; // the density of the last scattered direction
+  bool surface = false; // whether the last collision was on a shaded surface
   for (int bounce = 0; bounce < pathBounces; ++bounce)
   {
     vec3 x;
@@ -890,7 +979,7 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
     {
       if (bounce > 0 && !tyndallPathSpent())
       {
-        radiance += beta * tyndallPathSkyUnit() * tyndallPathSkyEscape(w, phasePdf);
+        radiance += beta * tyndallPathSkyUnit(surface) * tyndallPathSkyEscape(w, phasePdf);
       }
       break;
     }
@@ -900,9 +989,11 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
       break;
     }
     bool last = bounce + 1 >= pathBounces;
+    surface = tyndallPathOnSurface(s);
     TyndallScatterer scatterer = tyndallPathScatterer(x, w, s);
-    radiance += beta * tyndallPathCollisionLight(x, w, s, scatterer, last);
-    if (last || tyndallPathSpent() || !tyndallPathScatter(scatterer, s, x, beta, w, o, phasePdf))
+    radiance += beta * tyndallPathCollisionLight(x, w, s, scatterer, surface, last);
+    if (last || tyndallPathSpent() ||
+      !tyndallPathScatter(scatterer, s, surface, x, beta, w, o, phasePdf))
     {
       break;
     }

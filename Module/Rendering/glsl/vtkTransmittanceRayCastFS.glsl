@@ -550,23 +550,35 @@ float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER 
 // outside its box) plus its camera guests', returned; their colours and
 // emission colours mixed in proportion to their extinctions (the mixture's
 // albedo and emission per unit extinction; CPU twin:
-// vtkSingleScatteringReference's camera rays).
-float tyndallCameraMedium(vec3 x, out vec3 color, out vec3 emission)
+// vtkSingleScatteringReference's camera rays); this medium's own colour
+// and extinction in `own`, the guests' in `guests` (their mixture's colour;
+// the path tracer's collision is one or the other's).
+float tyndallCameraMedium(
+  vec3 x, out vec3 color, out vec3 emission, out vec4 own, out vec4 guests)
 {
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   bool inside = all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(1.0)));
   vec3 ownColor = vec3(0.0);
   float tableCoord = 0.0;
-  float sigma = inside ? tyndallMedium(x, ownColor, tableCoord) : 0.0;
-  color = sigma * ownColor;
-  emission = vec3(0.0);
+  own.a = inside ? tyndallMedium(x, ownColor, tableCoord) : 0.0;
+  own.rgb = ownColor;
+  vec3 ownEmission = vec3(0.0);
 #if TYNDALL_EMISSION
-  if (sigma > 0.0)
+  if (own.a > 0.0)
   {
-    emission = sigma * tyndallEmissionColor(tableCoord);
+    ownEmission = own.a * tyndallEmissionColor(tableCoord);
   }
 #endif
+  // The guests' sums apart (the mixture's less this medium's part would
+  // lose their colour to rounding where their share is small).
+  float sigma = 0.0;
+  color = vec3(0.0);
+  emission = vec3(0.0);
   TYNDALL_FOR_GUESTS(TYNDALL_GUEST_CAMERA_SAMPLE)
+  guests = vec4(sigma > 0.0 ? color / sigma : vec3(0.0), sigma);
+  sigma += own.a;
+  color += own.a * ownColor;
+  emission += ownEmission;
   if (sigma > 0.0)
   {
     color /= sigma;
@@ -731,6 +743,10 @@ struct TyndallCameraSample
   vec3 Position;    // where its light is looked up: the sample, or a step's first isosurface
   vec3 Normal;      // where a shaded sample's normal is taken: the sample, or an isosurface
                     // step's end (where VTK shades it)
+#if TYNDALL_CAMERA_GUESTS
+  vec4 Own;    // this medium's colour and extinction in the mixture (tyndallCameraMedium())
+  vec4 Guests; // the guests' (their mixture's colour)
+#endif
 #if TYNDALL_COMPONENT_SHADING
   vec4 Parts;    // independent components' parts in the colour (vtkTyndallComponents::Parts())
   mat4x3 Colors; // colours
@@ -793,6 +809,10 @@ TyndallCameraSample tyndallIsoCameraSample(vec3 x0, vec3 w, float dt)
       s.Position = x0 + first * dt * w;
     }
   }
+#if TYNDALL_CAMERA_GUESTS
+  s.Own = vec4(s.Color, s.Sigma); // the isosurfaces are this volume's alone
+  s.Guests = vec4(0.0);
+#endif
   return s;
 }
 #endif
@@ -810,7 +830,7 @@ TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
   tyndallFootprint = tyndallPixelFootprint(x);
 #if TYNDALL_CAMERA_GUESTS
   s.TableCoord = 0.0;
-  s.Sigma = tyndallCameraMedium(x, s.Color, s.Emission);
+  s.Sigma = tyndallCameraMedium(x, s.Color, s.Emission, s.Own, s.Guests);
 #else
   s.Emission = vec3(0.0);
   s.Sigma = tyndallMedium(x, s.Color, s.TableCoord);
