@@ -177,7 +177,6 @@ bool vtkTyndallSceneBuilder::Build(vtkRenderer* renderer)
   }
   this->Mapper = vtkSmartPointer<vtkTransmittanceVolumeMapper>::New();
   this->Property = vtkSmartPointer<vtkParticipatingMediumProperty>::New();
-  this->Plain = PlainCopy();
   this->Volume = vtkSmartPointer<vtkVolume>::New();
   // A transfer-function file is read before the (maybe slow) data.
   if (!this->ReadTransferFunctionFile() || !this->LoadMedium() || !this->ChooseTransferFunction())
@@ -931,30 +930,18 @@ void vtkTyndallSceneBuilder::ApplyOptions()
 void vtkTyndallSceneBuilder::ApplyPropertyKind()
 {
   // --vtk-property: each grid volume drawn with a plain vtkVolumeProperty
-  // made from its medium's settings (VTK's meaning), made anew only when the
-  // medium changed (a new property would rebuild the maps), else the medium.
+  // made from its medium's settings (VTK's meaning; the same one while the
+  // medium is unchanged: a new property would rebuild the maps), else the
+  // medium.
   const bool plain = this->Options->GetFlag("vtk-property");
-  auto apply = [plain](vtkVolume* volume, vtkParticipatingMediumProperty* medium, PlainCopy& copy)
-  {
-    if (!plain)
-    {
-      volume->SetProperty(medium);
-      return;
-    }
-    if (!copy.Property || medium->GetMTime() > copy.MediumTime)
-    {
-      copy.Property = vtkSmartPointer<vtkVolumeProperty>::New();
-      vtkParticipatingMediumProperty::CopyVolumeProperty(medium, copy.Property);
-      copy.MediumTime = medium->GetMTime();
-    }
-    volume->SetProperty(copy.Property);
-  };
-  apply(this->Volume, this->Property, this->Plain);
+  auto apply = [plain](vtkVolume* volume, vtkParticipatingMediumProperty* medium)
+  { volume->SetProperty(plain ? medium->GetPlainCopy() : medium); };
+  apply(this->Volume, this->Property);
   for (AddedVolume& added : this->AddedVolumes)
   {
     if (!added.Particles) // a particle cloud is a medium only
     {
-      apply(added.Volume, added.Property, added.Plain);
+      apply(added.Volume, added.Property);
     }
   }
 }

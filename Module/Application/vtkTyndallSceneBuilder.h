@@ -264,15 +264,6 @@ private:
   vtkSmartPointer<vtkVolumeShadowReceiverPass> GroundShadows;
   vtkSmartPointer<vtkTransferFunctionFileReader> TransferFunctionFile;
 
-  // A volume's plain vtkVolumeProperty (--vtk-property) and its medium's
-  // modification time when it was copied.
-  struct PlainCopy
-  {
-    vtkSmartPointer<vtkVolumeProperty> Property;
-    vtkMTimeType MediumTime = 0;
-  };
-  PlainCopy Plain; // the input volume's
-
   /// A volume added with --add-volume.
   struct AddedVolume
   {
@@ -280,7 +271,6 @@ private:
     vtkSmartPointer<vtkTransmittanceVolumeMapper> Mapper;
     vtkSmartPointer<vtkParticipatingMediumProperty> Property;
     vtkSmartPointer<vtkVolume> Volume;
-    PlainCopy Plain;
     bool Particles = false; // a --particles cloud
     double DensityScale = 1.0;
   };

@@ -84,6 +84,20 @@ void vtkParticipatingMediumProperty::DeepCopy(vtkVolumeProperty* p)
 }
 
 //------------------------------------------------------------------------------
+vtkVolumeProperty* vtkParticipatingMediumProperty::GetPlainCopy()
+{
+  if (!this->PlainCopy || this->GetMTime() > this->PlainCopyTime)
+  {
+    this->PlainCopy = vtkSmartPointer<vtkVolumeProperty>::New();
+    CopyVolumeProperty(this, this->PlainCopy);
+    // (After the copy: reading a component's missing function makes VTK
+    // create it, which modifies this property.)
+    this->PlainCopyTime = this->GetMTime();
+  }
+  return this->PlainCopy;
+}
+
+//------------------------------------------------------------------------------
 void vtkParticipatingMediumProperty::CopyVolumeProperty(
   vtkVolumeProperty* from, vtkVolumeProperty* to)
 {

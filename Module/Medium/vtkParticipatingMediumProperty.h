@@ -52,6 +52,7 @@
 #define vtkParticipatingMediumProperty_h
 
 #include "TyndallMediumModule.h" // For export macro
+#include "vtkSmartPointer.h"     // For vtkSmartPointer
 #include "vtkVersionMacros.h"    // For VTK_VERSION_NUMBER
 #include "vtkVolumeProperty.h"
 
@@ -320,6 +321,18 @@ public:
   static void CopyVolumeProperty(vtkVolumeProperty* from, vtkVolumeProperty* to);
 
   /**
+   * A plain vtkVolumeProperty of this medium's settings (CopyVolumeProperty()
+   * into a new one: VTK's meaning of its transfer functions and shading),
+   * made anew only when this property was modified since the last call
+   * (GetMTime(), its functions' times included), else the same object: a
+   * mapper given a new property rebuilds its maps. What tyndall-render's
+   * --vtk-property and ParaView's VTK Property draw. Owned by this property
+   * (changing the copy changes nothing of it: the next change of this
+   * property replaces the copy).
+   */
+  vtkVolumeProperty* GetPlainCopy();
+
+  /**
    * Includes the emission colour's and the detail noise's modification times.
    */
   vtkMTimeType GetMTime() override;
@@ -352,6 +365,9 @@ protected:
   double DetailFilterWidth = 0.5;
 
 private:
+  vtkSmartPointer<vtkVolumeProperty> PlainCopy; // GetPlainCopy()'s, made at PlainCopyTime
+  vtkMTimeType PlainCopyTime = 0;
+
   vtkParticipatingMediumProperty(const vtkParticipatingMediumProperty&) = delete;
   void operator=(const vtkParticipatingMediumProperty&) = delete;
 };

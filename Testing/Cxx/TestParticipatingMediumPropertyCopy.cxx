@@ -7,7 +7,9 @@
 // equal values, other objects); a medium copied into a medium keeps its own
 // settings too; the mode is the source's when it holds a 2-D function but
 // draws the 1-D ones, and a property without a 2-D function copies into one
-// that has one (VTK 9.1 cannot set a null one). Costs under 0.1 s.
+// that has one (VTK 9.1 cannot set a null one); GetPlainCopy() is such a
+// copy, the same object while the medium (its functions included) is
+// unchanged and a new one after a change. Costs under 0.1 s.
 #include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
 #include "vtkFloatArray.h"
@@ -121,6 +123,31 @@ int TestParticipatingMediumPropertyCopy(int, char*[])
   Check(copy->GetScatteringAnisotropy() == medium->GetScatteringAnisotropy() &&
       copy->GetDensityScale() == 2.5 && copy->GetDetailNoise() == medium->GetDetailNoise(),
     "a medium's copy: the medium's own settings");
+
+  // The medium's own plain copy: kept while it is unchanged (a new
+  // property would rebuild a mapper's maps), made anew when it or one of
+  // its functions changed.
+  vtkVolumeProperty* own = medium->GetPlainCopy();
+  CheckVolumeSettings(own, medium, plane, "the medium's plain copy");
+  Check(medium->GetPlainCopy() == own, "the plain copy kept while the medium is unchanged");
+  own->Register(nullptr); // (kept alive to tell a new copy from a reused address)
+  medium->GetScalarOpacity()->AddPoint(12.0, 0.8);
+  vtkVolumeProperty* changed = medium->GetPlainCopy();
+  Check(changed != own && changed->GetScalarOpacity()->GetValue(12.0) == 0.8,
+    "a new plain copy after the opacity function changed");
+  changed->Register(nullptr);
+  const double diffuse = medium->GetDiffuse();
+  medium->SetDiffuse(0.3);
+  Check(medium->GetPlainCopy() != changed && medium->GetPlainCopy()->GetDiffuse() == 0.3,
+    "a new plain copy after a setting changed");
+  medium->SetDiffuse(diffuse);
+  own->UnRegister(nullptr);
+  changed->UnRegister(nullptr);
+  // A medium without functions: reading them for the first copy makes VTK
+  // create them (which modifies the medium), and the copy is still kept.
+  vtkNew<vtkParticipatingMediumProperty> empty;
+  vtkVolumeProperty* first = empty->GetPlainCopy();
+  Check(empty->GetPlainCopy() == first, "a bare medium's plain copy kept too");
 
   // The 1-D functions asked for while a 2-D function is held (VTK sets TF_2D
   // when a 2-D function is set): the mode is the source's.

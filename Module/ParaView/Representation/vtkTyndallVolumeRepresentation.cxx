@@ -119,14 +119,8 @@ void vtkTyndallVolumeRepresentation::UpdateDrawnProperty()
     this->Actor->SetProperty(this->Medium);
     return;
   }
-  // A new copy only when the medium changed: a new property rebuilds the maps.
-  if (!this->Plain || this->Medium->GetMTime() > this->MediumCopyTime)
-  {
-    this->Plain = vtkSmartPointer<vtkVolumeProperty>::New();
-    vtkParticipatingMediumProperty::CopyVolumeProperty(this->Medium, this->Plain);
-    this->MediumCopyTime = this->Medium->GetMTime();
-  }
-  this->Actor->SetProperty(this->Plain);
+  // (A new copy only when the medium changed: a new property rebuilds the maps.)
+  this->Actor->SetProperty(this->Medium->GetPlainCopy());
 }
 
 //------------------------------------------------------------------------------

@@ -47,13 +47,11 @@
 
 #include "TyndallParaViewRepresentationModule.h" // For export macro
 #include "vtkImageVolumeRepresentation.h"
-#include "vtkNew.h"          // For vtkNew
-#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkNew.h" // For vtkNew
 
 class vtkImageData;
 class vtkParticipatingMediumProperty;
 class vtkTransmittanceVolumeMapper;
-class vtkVolumeProperty;
 
 class TYNDALLPARAVIEWREPRESENTATION_EXPORT vtkTyndallVolumeRepresentation
   : public vtkImageVolumeRepresentation
@@ -205,11 +203,9 @@ private:
   vtkMTimeType Transfer2DCopyTime = 0;
   bool WarnedTransfer2D = false; // the 1-D functions used instead, said once
   // SetVTKProperty(): the drawn property, the medium or its plain copy
-  // (made anew when the medium changed since MediumCopyTime).
+  // (vtkParticipatingMediumProperty::GetPlainCopy()).
   void UpdateDrawnProperty();
   bool VTKProperty = false;
-  vtkSmartPointer<vtkVolumeProperty> Plain;
-  vtkMTimeType MediumCopyTime = 0;
 };
 
 #endif
