@@ -502,7 +502,7 @@ private:
           s.ChannelTransmittances(this->LightTransmittance(x, &rays, t, l, tMax), T);
         }
       },
-      J);
+      s.Parameters->EmissionScale, J); // (the camera media share their EmissionScale)
     if (s.Shaded)
     {
       // A vtkParticipatingMediumProperty's Shade: its surface term added.

@@ -30,7 +30,8 @@
  * The lighting (phase function, ambient, octaves, emission scale, coloured
  * extinction) is the volume's own medium's (Parameters): the media a camera
  * ray samples together are lit alike (vtkTyndallMediumParameters::
- * SameLighting()).
+ * SameLighting()); the path tracer's collision in another medium glows by
+ * that medium's own emission scale (Source()'s `emissionScale`).
  *
  * Internal to Tyndall::Reference; not wrapped.
  */
@@ -306,13 +307,13 @@ public:
 
   /**
    * The source term J at a point `point` of the media at the world point x
-   * seen along w: albedo (Ambient + AddInScattering()) + EmissionScale
-   * emission, with `transmittance` as
-   * AddInScattering()'s.
+   * seen along w: albedo (Ambient + AddInScattering()) + `emissionScale`
+   * emission (the EmissionScale of the medium the point is of: the camera
+   * media share theirs), with `transmittance` as AddInScattering()'s.
    */
   template <typename LightTransmittance>
   void Source(const vtkTyndallMedium::Point& point, const double x[3], const double w[3],
-    LightTransmittance&& transmittance, double J[3]) const
+    LightTransmittance&& transmittance, double emissionScale, double J[3]) const
   {
     const double* albedo = point.Albedo;
     double in[3] = { this->Ambient[0], this->Ambient[1], this->Ambient[2] };
@@ -322,7 +323,7 @@ public:
     }
     for (int c = 0; c < 3; ++c)
     {
-      J[c] = albedo[c] * in[c] + this->Parameters->EmissionScale * point.Emission[c];
+      J[c] = albedo[c] * in[c] + emissionScale * point.Emission[c];
     }
   }
 

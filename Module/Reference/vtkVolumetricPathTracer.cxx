@@ -402,17 +402,18 @@ private:
     timing.ShadowRays += 1.0;
   }
 
-  // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision at the
-  // world distance t of `ray` (world point x): the light transmittance per
-  // channel is each channel's own estimate with a coloured extinction.
-  void Source(const Ray& ray, double t, const double x[3], const Point& point, Random& rng,
+  // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision of
+  // medium k (its own EmissionScale) at the world distance t of `ray`
+  // (world point x): the light transmittance per channel is each channel's
+  // own estimate with a coloured extinction.
+  void Source(const Ray& ray, double t, int k, const double x[3], const Point& point, Random& rng,
     Timing& timing, const PathState& path, double J[3]) const
   {
     this->S->Source(
       point, x, ray.W,
       [&](const double l[3], double tMax, double T[3])
       { this->LightTransmittance(ray, t, x, l, tMax, rng, timing, path, T); },
-      J);
+      this->S->Media[k].Medium->GetParameters().EmissionScale, J);
   }
 
   // Adds beta times an estimate of the emission from arrays along the ray's
@@ -460,7 +461,7 @@ private:
         }
         for (int c = 0; c < 3; ++c)
         {
-          L[c] += beta[c] * length * T[c] * s.Parameters->EmissionScale * e[c];
+          L[c] += beta[c] * length * T[c] * medium.GetParameters().EmissionScale * e[c];
         }
       }
     }
@@ -750,7 +751,7 @@ private:
     }
     else
     {
-      this->Source(ray, t, x, point, rng, timing, path, J);
+      this->Source(ray, t, k, x, point, rng, timing, path, J);
       if (s.Environment && s.Environment->Enabled())
       {
         this->AddSkyEvent(ray, t, x, point.Albedo, last, rng, timing, path, J);

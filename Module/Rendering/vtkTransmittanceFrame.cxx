@@ -746,10 +746,13 @@ void vtkTransmittanceFrame::SetCameraGuestUniforms(vtkShaderProgram* program, bo
   // texture on a unit of its own, never read).
   int scattering[kMaxGuests] = {};
   float colored[kMaxGuests] = {};
+  float emission[kMaxGuests] = {}; // declared by the emission variant only
   for (int g = 0; g < n; ++g)
   {
     const Guest& guest = this->Guests[g];
     camera[g] = guest.Camera ? 1.0f : 0.0f;
+    const vtkTyndallMediumParameters& parameters = guest.Medium->GetParameters();
+    emission[g] = parameters.HasEmission ? static_cast<float>(parameters.EmissionScale) : 0.0f;
     vtkTextureObject* grid = guest.Textures->GetScatteringTexture();
     colored[g] = grid && (guest.Camera || every) ? 1.0f : 0.0f;
     scattering[g] = (grid ? grid : guest.Textures->GetVolumeTexture())->GetTextureUnit();
@@ -757,6 +760,7 @@ void vtkTransmittanceFrame::SetCameraGuestUniforms(vtkShaderProgram* program, bo
   program->SetUniform1fv("guestCamera", n, camera); // declared by the ray cast only
   program->SetUniform1iv("guestScattering", n, scattering);
   program->SetUniform1fv("guestColored", n, colored);
+  program->SetUniform1fv("guestEmissionScale", n, emission);
 }
 
 //------------------------------------------------------------------------------

@@ -53,19 +53,22 @@ std::string vtkTransmittancePathTracePass::Refusal(
   }
   for (const vtkTransmittanceFrame::Guest& guest : frame.Guests)
   {
-    // The scattered paths cross the guests but add only this volume's
-    // emission terms (a guest's table emission through this one's).
+    // The scattered paths add a guest's table emission (by its own scale),
+    // not yet the emission array's light along their segments.
     if (guest.Medium->GetEmissionFromArray())
     {
       return "another volume's emission array (EmissionArrayName) is not path traced yet";
     }
-    // (Variant::Emission: this volume's table emission, under which the
-    // camera samples mix the guests' emission colours.)
-    if (guest.Medium->GetParameters().HasEmission && !frame.GetShaderVariant().Emission)
+    // (Variant::Emission: the table emission, under which the samples mix
+    // the guests' emission colours; turned on for the paths of a volume
+    // that does not emit, GuestsEmit(), not beside its own emission of
+    // another kind.)
+    if (guest.Medium->GetParameters().HasEmission && !frame.GetShaderVariant().Emission &&
+      medium.GetParameters().HasEmission)
     {
-      return "another volume's emission is path traced only with this volume's (give this one "
-             "an EmissionScale and emission colour too: a vtkParticipatingMediumProperty's; a "
-             "plain vtkVolumeProperty has none)";
+      return "another volume's emission is path traced beside this volume's only when this "
+             "one's comes from its transfer functions (not an emission array or a 2-D transfer "
+             "function)";
     }
   }
   if (distributed)
@@ -78,6 +81,14 @@ std::string vtkTransmittancePathTracePass::Refusal(
            "average";
   }
   return std::string();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTransmittancePathTracePass::GuestsEmit(const vtkTransmittanceFrame& frame)
+{
+  return std::any_of(frame.Guests.begin(), frame.Guests.end(),
+    [](const vtkTransmittanceFrame::Guest& g)
+    { return g.Medium->GetParameters().HasEmission && !g.Medium->GetEmissionFromArray(); });
 }
 
 //------------------------------------------------------------------------------
@@ -254,6 +265,12 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   // image, which the accumulation images (and their running mean) carry.
   const bool chromatic = Chromatic(frame);
   variant.Accumulate = variant.Accumulate || chromatic;
+  // Another volume's table emission beside this one's none: the samples'
+  // emission (each medium's by its own EmissionScale), this volume's 0.
+  if (!frame.Medium->GetParameters().HasEmission && GuestsEmit(frame))
+  {
+    variant.Emission = true;
+  }
   // Guests: the scattered flights sample every one (tyndallEveryGuest), the
   // camera ray its camera guests.
   if (!frame.Guests.empty())

@@ -107,11 +107,18 @@ public:
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode (neither is a medium: the CPU tracer refuses them
-   * too), another volume's emission array, another volume's emission while
-   * this one has no table emission,
+   * too), another volume's emission array, another volume's emission beside
+   * this one's from an emission array or a 2-D transfer function,
    * depth peeling (`peeling`), several processes (`distributed`).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
+
+  /**
+   * Whether another volume of the frame emits through its transfer
+   * functions (its collisions glow in this volume's paths, by its own
+   * EmissionScale).
+   */
+  static bool GuestsEmit(const vtkTransmittanceFrame& frame);
 
   /**
    * Traces a frame of `samples` paths per pixel (NextSamples()) and adds it

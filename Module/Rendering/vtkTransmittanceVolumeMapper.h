@@ -406,7 +406,8 @@ public:
    *
    * Several volumes sharing their shadows (guests) are traced as the CPU
    * tracer traces them: the camera ray through the media this mapper
-   * draws, scattered paths through every one.
+   * draws, scattered paths through every one (in single scattering a
+   * collision in another volume glows by its own EmissionScale).
    *
    * A plain vtkVolumeProperty with Shade on (a shaded CT) is traced as the
    * CPU tracer traces it: each of its collisions scatters as VTK's shaded surface
@@ -422,7 +423,8 @@ public:
    *
    * Not path traced yet, each said once in a warning, the map-based frame
    * drawn instead: VTK's depth peeling for volumes, several processes,
-   * another volume's emission array or emission without this volume's; and
+   * another volume's emission array, or its emission beside this volume's
+   * from an emission array or a 2-D transfer function; and
    * never (they are not
    * media; the CPU tracer refuses them too): the projection and isosurface
    * blend modes.

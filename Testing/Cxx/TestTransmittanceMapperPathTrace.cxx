@@ -21,17 +21,20 @@
 //    of the extinction, the lights and a gradient sky 2 pi brighter for its
 //    lobe only; z 0.56; every collision the CT's, z -48; the lights 2 pi
 //    brighter for the fog too, z 169; the sky after the fog's collisions,
-//    z 14) and a medium's Shade in a black fog (its surface term at its own
-//    collisions alone; z 0.41; at every collision, z 9.6);
+//    z 14), a medium's Shade in a black fog (its surface term at its own
+//    collisions alone; z 0.41; at every collision, z 9.6) and the cloud in
+//    a glowing fog (the fog's emission, EmissionScale 2, this volume none;
+//    z below 2.5; the fog's emission by a scale of 1, z -16);
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples (1, 2, 4, then PathTraceSamplesPerFrame, the last trimmed),
 //    a picture that has them all is redrawn unchanged, the same samples a
 //    frame at a time make the same picture (another seed's does not), and a
-//    frame the tracer refuses (another volume's emission without this
-//    one's) says so once and draws the map-based frame (a shaded one with a
-//    blending is traced, and a vtkParticipatingMediumProperty's Shade, alone
-//    and beside another volume, without a warning); a
+//    frame the tracer refuses (a projection blend mode) says so once and
+//    draws the map-based frame (a shaded one with a blending is traced, and
+//    a vtkParticipatingMediumProperty's Shade, alone and beside another
+//    volume, and another volume's emission without this one's, without a
+//    warning); a
 //    coloured extinction's mean is
 //    redrawn unchanged, and denoised.
 #include "vtkCamera.h"
@@ -319,13 +322,13 @@ void TwoVolumesAgainstCpu()
     worst = std::max(worst, std::abs(z));
   }
   Check(worst < 4.5, "two volumes: the GPU's mean is the CPU's within the noise");
-  // The other glowing while this one has no table emission: refused, said once.
+  // The other glowing while this one has no emission: traced (its mean:
+  // "A glowing fog"), without a warning.
   vtkNew<vtkColorTransferFunction> glow;
   glow->AddRGBPoint(0.0, 1.0, 0.5, 0.2);
   otherProperty->SetEmissionColor(glow);
   otherProperty->SetEmissionScale(1.0);
-  CheckRefusedOnce(scene, "another volume's emission",
-    "another volume's emission without this one's is refused, said once");
+  CheckTracedQuietly(scene, "another volume's emission without this one's is path traced");
 }
 
 // A shaded volume in a fog, another volume behind it that overlaps its box
@@ -340,9 +343,11 @@ void TwoVolumesAgainstCpu()
 // in a third CPU picture, 64 spp, there and at the four pixels beside: the
 // picture is this volume's layer alone there), or black (its collisions
 // absorb, after a medium's Shade's surface term) before a black background
-// and no sky (its layer black: every pixel compared). 256 spp.
-void ShadedInFogAgainstCpu(
-  const std::function<void(Scene&)>& shade, bool black, const std::string& name)
+// and no sky (its layer black: every pixel compared). 256 spp. `glow`:
+// the fog glows too (its own EmissionScale 2, this volume none; the
+// collisions in it add its emission, by its own scale).
+void InFogAgainstCpu(
+  const std::function<void(Scene&)>& shade, bool black, bool glow, const std::string& name)
 {
   const int size = 24, samples = 256;
   Scene scene(tyndall_test::MakeDenseMedium(24), 0.9, size);
@@ -361,6 +366,13 @@ void ShadedInFogAgainstCpu(
     tyndall_test::MakeCloudProperty(0.05);
   vtkNew<vtkColorTransferFunction> none;
   none->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+  if (glow)
+  {
+    vtkNew<vtkColorTransferFunction> emission;
+    emission->AddRGBPoint(0.0, 0.5, 0.25, 0.1);
+    fogProperty->SetEmissionColor(emission);
+    fogProperty->SetEmissionScale(2.0);
+  }
   if (black)
   {
     fogProperty->SetColor(none);
@@ -512,6 +524,10 @@ void Mode()
   CheckTracedQuietly(scene, "a medium's Shade beside another is path traced, without a warning");
   scene.Renderer->RemoveVolume(other);
   scene.Property->ShadeOff();
+  // A projection blend mode is not a medium: refused, said once.
+  scene.Mapper->SetBlendModeToMaximumIntensity();
+  CheckRefusedOnce(scene, "projection blend mode", "a projection blend mode is refused, said once");
+  scene.Mapper->SetBlendModeToComposite();
 }
 
 // The mean of an 8-bit picture's channel c, in levels.
@@ -621,10 +637,10 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       scene.Renderer->AddVolume(copy);
     });
   TwoVolumesAgainstCpu();
-  ShadedInFogAgainstCpu([](Scene& scene)
+  InFogAgainstCpu([](Scene& scene)
     { scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9)); },
-    false, "Shaded CT in a fog");
-  ShadedInFogAgainstCpu(
+    false, false, "Shaded CT in a fog");
+  InFogAgainstCpu(
     [](Scene& scene)
     {
       scene.Property->ShadeOn();
@@ -632,7 +648,10 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       scene.Property->SetSpecular(0.4);
       scene.Property->SetDensityScale(0.02); // the fog's share large where they overlap
     },
-    true, "A medium's Shade in a black fog");
+    true, false, "A medium's Shade in a black fog");
+  // The cloud's medium (no emission) in a glowing fog: the fog's collisions
+  // in its paths glow by the fog's EmissionScale.
+  InFogAgainstCpu([](Scene&) {}, false, true, "A glowing fog");
   // A shaded CT: a plain property with Shade on over the dense medium's
   // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
   const auto shadedCT = [](Scene& scene)

@@ -508,6 +508,13 @@ uniform float guestColored[TYNDALL_GUESTS];
 #define TYNDALL_GUEST_SCATTERING(g)
 #endif
 
+#if TYNDALL_EMISSION
+// Each guest's emission scale (its EmissionScale; 0 when it does not emit):
+// its table's emission colour times it is its emission, as this medium's
+// times emissionScale.
+uniform float guestEmissionScale[TYNDALL_GUESTS];
+#endif
+
 // Guest g's extinction at x (0 outside its box or when the camera rays do
 // not sample it, unless tyndallEveryGuest); adds its colour and emission,
 // weighted by it, to `color` and `emission`.
@@ -538,7 +545,8 @@ float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER 
 #endif
   color += sigma * albedo;
 #if TYNDALL_EMISSION
-  emission += sigma * texture(table, vec2(coord, TYNDALL_TABLE_EMISSION_ROW)).rgb;
+  emission += sigma * guestEmissionScale[g] *
+    texture(table, vec2(coord, TYNDALL_TABLE_EMISSION_ROW)).rgb;
 #endif
   return sigma;
 }
@@ -548,8 +556,9 @@ float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER 
 
 // What the camera rays see at x: the extinction of this medium (empty
 // outside its box) plus its camera guests', returned; their colours and
-// emission colours mixed in proportion to their extinctions (the mixture's
-// albedo and emission per unit extinction; CPU twin:
+// emissions (each medium's colour times its own EmissionScale) mixed in
+// proportion to their extinctions (the mixture's albedo and emission per
+// unit extinction; CPU twin:
 // vtkSingleScatteringReference's camera rays); this medium's own colour
 // and extinction in `own`, the guests' in `guests` (their mixture's colour;
 // the path tracer's collision is one or the other's).
@@ -566,7 +575,7 @@ float tyndallCameraMedium(
 #if TYNDALL_EMISSION
   if (own.a > 0.0)
   {
-    ownEmission = own.a * tyndallEmissionColor(tableCoord);
+    ownEmission = own.a * emissionScale * tyndallEmissionColor(tableCoord);
   }
 #endif
   // The guests' sums apart (the mixture's less this medium's part would
@@ -738,7 +747,7 @@ struct TyndallCameraSample
 {
   float Sigma;
   vec3 Color;
-  vec3 Emission;    // camera guests: the media's mixed emission colour
+  vec3 Emission;    // camera guests: the media's mixed emission (each scaled), per unit extinction
   float TableCoord; // alone: the sample's position in the transfer table
   vec3 Position;    // where its light is looked up: the sample, or a step's first isosurface
   vec3 Normal;      // where a shaded sample's normal is taken: the sample, or an isosurface
@@ -845,12 +854,13 @@ TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
 }
 
 // The sample's emission (scaled; per unit extinction) in single
-// scattering: from the transfer functions or the camera guests' mix
+// scattering: from the transfer functions or the camera guests' mix (each
+// medium's scaled by its own EmissionScale: tyndallCameraMedium())
 // (TYNDALL_EMISSION); none otherwise.
 vec3 tyndallSampleEmission(TyndallCameraSample s)
 {
 #if TYNDALL_EMISSION && TYNDALL_CAMERA_GUESTS
-  return emissionScale * s.Emission;
+  return s.Emission;
 #elif TYNDALL_EMISSION
   return emissionScale * tyndallEmissionColor(s.TableCoord);
 #else
