@@ -23,7 +23,7 @@
 
 set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
-  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 175
+  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 135
   Tyndall::RenderingCxx-TestTransmittanceMapperReference 80
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 80
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77
@@ -45,7 +45,7 @@ set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperDepthPeeling 25
   Tyndall::ReferenceCxx-TestVolumetricPathTracer 36
   TyndallIO-FuzzOpenVDBReader 22
-  Tyndall::RenderingCxx-TestTransmittanceMapperSky 24
+  Tyndall::RenderingCxx-TestTransmittanceMapperSky 17
   Tyndall::RenderingCxx-TestTransmittanceMapperBadInput 18
   TyndallParaView-Time 18
   Tyndall::RenderingCxx-TestTransmittanceMapperDenoise 17
