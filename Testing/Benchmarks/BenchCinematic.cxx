@@ -53,15 +53,22 @@
 //
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
 //   [--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail]
-//   [--scene 0|1|2] [--chromatic] [--help]
+//   [--scene 0|1|2] [--chromatic] [--fog] [--help]
 // --scene N measures one scene: 0 the cloud, 1 the dense medium, 2 the shaded CT.
+// --fog puts each scene in a fog lit its own way (the path tracing test's):
+// another volume around and behind the medium, a guest whose collisions the
+// scattered paths draw and light by its own parameters (g -0.6, LightScale
+// 3, ambient 0.3); the window's picture is then both layers, and the CPU
+// tracer's picture the medium's layer alone (its PSNR not comparable).
 // --chromatic gives the media a coloured extinction (red 0.25, green 0.6 of
 // blue's, the tests'): spectral tracking (not the shaded CT's plain property).
 // --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp, a light
 // cache of 32 texels a side: every render works, never a timing or a PSNR.
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
+#include "vtkCullerCollection.h"
 #include "vtkFloatArray.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -107,6 +114,7 @@ struct Options
   bool Detail = false;
   int Scene = -1; // --scene: 0 the cloud, 1 the dense medium, 2 the shaded CT; -1 every one
   bool Chromatic = false;
+  bool Fog = false;
 };
 
 // The --sun sky: an equirectangular 128 x 64 image, the --sky gradient with a
@@ -210,6 +218,10 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       o.Chromatic = true;
     }
+    else if (a == "--fog")
+    {
+      o.Fog = true;
+    }
     else
     {
       ok = false;
@@ -218,7 +230,7 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
                   "[--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail] "
-                  "[--scene 0|1|2] [--chromatic] [--help]\n");
+                  "[--scene 0|1|2] [--chromatic] [--fog] [--help]\n");
       return false;
     }
   }
@@ -229,6 +241,34 @@ bool Parse(int argc, char* argv[], Options& o)
 struct Scene : tyndall_test::PathScene
 {
   std::string Name;
+  // --fog: a 4^3 grid of the cloud's transfer functions at their peak value
+  // (extinction about 1), scaled 1.3 about a point 0.3 behind the origin.
+  vtkNew<vtkImageData> FogData;
+  vtkNew<vtkTransmittanceVolumeMapper> FogMapper;
+  vtkSmartPointer<vtkParticipatingMediumProperty> FogProperty =
+    tyndall_test::MakeCloudProperty(0.05);
+  vtkNew<vtkVolume> Fog;
+
+  void AddFog()
+  {
+    this->FogData->SetDimensions(4, 4, 4);
+    this->FogData->SetOrigin(-1.0, -1.0, -1.0);
+    this->FogData->SetSpacing(2.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0);
+    this->FogData->AllocateScalars(VTK_FLOAT, 1);
+    this->FogData->GetPointData()->GetScalars()->Fill(8.0);
+    this->FogMapper->SetInputData(this->FogData);
+    this->FogMapper->JitterOff();
+    this->FogProperty->SetScatteringAnisotropy(-0.6);
+    this->FogProperty->SetLightScale(3.0);
+    this->FogProperty->SetAmbientIntensity(0.3);
+    this->Fog->SetMapper(this->FogMapper);
+    this->Fog->SetProperty(this->FogProperty);
+    this->Fog->SetPosition(0.0, 0.0, -0.3);
+    this->Fog->SetScale(1.3);
+    this->Renderer->AddVolume(this->Fog);
+    vtkFrustumCoverageCuller::SafeDownCast(this->Renderer->GetCullers()->GetLastItem())
+      ->SetSortingStyleToBackToFront();
+  }
 
   Scene(const char* name, vtkImageData* data, double peakOpacity, const Options& o,
     vtkTyndallDisplay* display)
@@ -259,6 +299,10 @@ struct Scene : tyndall_test::PathScene
       this->Renderer->SetEnvironmentalBG(0.02, 0.02, 0.02);
       this->Renderer->SetEnvironmentalBG2(0.3, 0.45, 0.8);
     }
+    if (o.Fog)
+    {
+      this->AddFog();
+    }
     display->Attach(this->Window);
   }
 
@@ -287,8 +331,9 @@ struct Scene : tyndall_test::PathScene
 
 bool Run(Scene& s, const Options& o)
 {
-  std::printf("%s, %d x %d, up to %d bounces%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
-    o.Sun ? ", under the sun sky" : (o.Sky ? ", under the gradient sky" : ""));
+  std::printf("%s, %d x %d, up to %d bounces%s%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
+    o.Sun ? ", under the sun sky" : (o.Sky ? ", under the gradient sky" : ""),
+    o.Fog ? ", in a fog lit its own way" : "");
   // 1. the converged picture (its own random numbers).
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;
@@ -322,8 +367,9 @@ bool Run(Scene& s, const Options& o)
   const double cpuRate = pixels * o.CpuSamples / cpuSeconds;
   std::printf(
     "  converged: GPU %d spp (tracked shadows, seed 1) in %.1f s; against the CPU tracer at %d "
-    "spp %.1f dB\n",
-    samples, seconds, o.CpuSamples, tyndall_test::PSNR(converged, cpu->Composite()));
+    "spp %.1f dB%s\n",
+    samples, seconds, o.CpuSamples, tyndall_test::PSNR(converged, cpu->Composite()),
+    o.Fog ? " (not comparable: the fog's layer is the GPU's only)" : "");
   // 2. the map-based frame; under the sky with its mean as ambient light and
   // with its lights, each in single scattering and with the property's two
   // octaves (its default; the paths ignore the octaves).
