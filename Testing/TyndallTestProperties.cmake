@@ -23,7 +23,7 @@
 
 set(tyndall_test_costs
   Tyndall::RenderingCxx-TestTransmittanceMapperVTKScenes 234
-  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 135
+  Tyndall::RenderingCxx-TestTransmittanceMapperPathTrace 140
   Tyndall::RenderingCxx-TestTransmittanceMapperReference 80
   Tyndall::RenderingCxx-TestTransmittanceMapperSceneCompositing 80
   Tyndall::RenderingCxx-TestTransmittanceMapperChromatic 77

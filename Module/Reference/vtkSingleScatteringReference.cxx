@@ -490,7 +490,7 @@ private:
       return;
     }
     s.Source(
-      point, x, w,
+      point, x, w, *s.Parameters, // (the camera media are lit alike)
       [&](const double l[3], double tMax, double T[3])
       {
         if (s.Isosurfaced)
@@ -502,7 +502,7 @@ private:
           s.ChannelTransmittances(this->LightTransmittance(x, &rays, t, l, tMax), T);
         }
       },
-      s.Parameters->EmissionScale, J); // (the camera media share their EmissionScale)
+      J);
     if (s.Shaded)
     {
       // A vtkParticipatingMediumProperty's Shade: its surface term added.

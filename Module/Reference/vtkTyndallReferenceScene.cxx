@@ -155,7 +155,6 @@ vtkTyndallReferenceScene::LightSource vtkTyndallReferenceScene::ToSource(
   const vtkTyndallLight& light)
 {
   LightSource source;
-  std::copy(light.Irradiance, light.Irradiance + 3, source.E);
   std::copy(light.Color, light.Color + 3, source.Color);
   source.Headlight = light.Headlight;
   source.Positional = light.Positional;
@@ -199,6 +198,7 @@ void vtkTyndallReferenceScene::SetUpLights(const vtkTyndallSceneReader& reader)
   for (const vtkTyndallLight& light : reader.GetLights())
   {
     this->Lights.push_back(ToSource(light));
+    this->Lights.back().Scaled = true; // (its Irradiance: the volume's LightScale times Color)
   }
   // The sky: sampled (the path tracer), or the map-based frame's lights and ambient term.
   this->SkyLights.clear();

@@ -27,11 +27,12 @@
  *   checks between them, SetOutput() assembles the image and Composite()
  *   blends it over a background.
  *
- * The lighting (phase function, ambient, octaves, emission scale, coloured
- * extinction) is the volume's own medium's (Parameters): the media a camera
- * ray samples together are lit alike (vtkTyndallMediumParameters::
- * SameLighting()); the path tracer's collision in another medium glows by
- * that medium's own emission scale (Source()'s `emissionScale`).
+ * The lighting (phase function, light scale, ambient, octaves, emission
+ * scale) is the lit medium's, passed to Source() (`lit`): the camera rays'
+ * is the volume's own medium's (Parameters; the media a camera ray samples
+ * together are lit alike, vtkTyndallMediumParameters::SameLighting()), the
+ * path tracer's collision in another medium that medium's. The coloured
+ * extinction is the volume's own medium's.
  *
  * Internal to Tyndall::Reference; not wrapped.
  */
@@ -74,9 +75,11 @@ public:
     double CosCone = -1.0;
     double Exponent = 0.0;
     double Attenuation[3] = { 1.0, 0.0, 0.0 };
-    double E[3] = { 0.0, 0.0, 0.0 };     // LightScale * Intensity * DiffuseColor
     double Color[3] = { 0.0, 0.0, 0.0 }; // Intensity * DiffuseColor (gradient shading)
-    bool Headlight = false;              // shades along the camera ray (vtkTyndallShading)
+    /// A renderer's light, which a medium sees its LightScale times brighter
+    /// (AddLight()); a sky light is not scaled.
+    bool Scaled = false;
+    bool Headlight = false; // shades along the camera ray (vtkTyndallShading)
   };
 
   /// The most media a scene holds (the volume's own and its guests).
@@ -127,7 +130,8 @@ public:
   /**
    * The ambient radiance per channel Source() adds: the map-based frame's
    * (vtkTyndallSceneReader::GetMapAmbient()), or with SampleSky the
-   * medium's AmbientIntensity alone.
+   * volume's own medium's AmbientIntensity alone (Source() takes the lit
+   * medium's).
    */
   double Ambient[3] = { 0.0, 0.0, 0.0 };
   /**
@@ -226,10 +230,10 @@ public:
     }
   }
 
-  /// The phase function at the cosine mu (Henyey-Greenstein, the medium's anisotropy).
-  double Phase(double mu) const
+  /// The phase function at the cosine mu (Henyey-Greenstein, the lit medium's anisotropy).
+  static double Phase(const vtkTyndallMediumParameters& lit, double mu)
   {
-    return vtkTransmittanceMapMath::HenyeyGreenstein(this->Parameters->ScatteringAnisotropy, mu);
+    return vtkTransmittanceMapMath::HenyeyGreenstein(lit.ScatteringAnisotropy, mu);
   }
 
   /**
@@ -250,7 +254,8 @@ public:
 
   /**
    * Adds E_l * f_l * p(mu_l) * T_l of every light to `in`, at the world
-   * point x seen along the unit world direction w; `transmittance(l, tMax,
+   * point x of the medium lit as `lit` says, seen along the unit world
+   * direction w; `transmittance(l, tMax,
    * T)` sets T_l per channel along the world direction l (see
    * LightGeometry(); with a coloured extinction each channel's own, equal
    * channels without). With several octaves, p(mu_l) T_l becomes the
@@ -258,22 +263,26 @@ public:
    */
   template <typename LightTransmittance>
   void AddInScattering(const double x[3], const double w[3], const double albedo[3],
-    LightTransmittance&& transmittance, double in[3]) const
+    const vtkTyndallMediumParameters& lit, LightTransmittance&& transmittance, double in[3]) const
   {
     for (const LightSource& light : this->Lights)
     {
-      this->AddLight(light, x, w, albedo, transmittance, in);
+      this->AddLight(light, x, w, albedo, lit, transmittance, in);
     }
     for (const LightSource& light : this->SkyLights)
     {
-      this->AddLight(light, x, w, albedo, transmittance, in);
+      this->AddLight(light, x, w, albedo, lit, transmittance, in);
     }
   }
 
-  /// AddInScattering()'s term of one light.
+  /**
+   * AddInScattering()'s term of one light: E_l its colour, times the lit
+   * medium's LightScale for a renderer's light (LightSource::Scaled).
+   */
   template <typename LightTransmittance>
   void AddLight(const LightSource& light, const double x[3], const double w[3],
-    const double albedo[3], LightTransmittance&& transmittance, double in[3]) const
+    const double albedo[3], const vtkTyndallMediumParameters& lit,
+    LightTransmittance&& transmittance, double in[3]) const
   {
     const bool chromatic = this->GetChromatic();
     double l[3], factor, tMax;
@@ -288,59 +297,66 @@ public:
     double weight[3];
     if (!chromatic)
     {
-      this->LightWeight(mu, T[0], albedo, weight);
+      this->LightWeight(lit, mu, T[0], albedo, weight);
     }
     else
     {
       for (int c = 0; c < 3; ++c)
       {
         double channel[3];
-        this->LightWeight(mu, T[c], albedo, channel);
+        this->LightWeight(lit, mu, T[c], albedo, channel);
         weight[c] = channel[c];
       }
     }
+    const double scale = light.Scaled ? lit.LightScale : 1.0;
     for (int c = 0; c < 3; ++c)
     {
-      in[c] += light.E[c] * factor * weight[c];
+      in[c] += scale * light.Color[c] * factor * weight[c];
     }
   }
 
   /**
    * The source term J at a point `point` of the media at the world point x
-   * seen along w: albedo (Ambient + AddInScattering()) + `emissionScale`
-   * emission (the EmissionScale of the medium the point is of: the camera
-   * media share theirs), with `transmittance` as AddInScattering()'s.
+   * seen along w, of the medium lit as `lit` says (the camera media's:
+   * *Parameters; a collision's medium's): albedo (ambient + AddInScattering())
+   * + lit.EmissionScale emission, with `transmittance` as AddInScattering()'s.
+   * The ambient radiance is Ambient, or with SampleSky the lit medium's
+   * AmbientIntensity.
    */
   template <typename LightTransmittance>
   void Source(const vtkTyndallMedium::Point& point, const double x[3], const double w[3],
-    LightTransmittance&& transmittance, double emissionScale, double J[3]) const
+    const vtkTyndallMediumParameters& lit, LightTransmittance&& transmittance, double J[3]) const
   {
     const double* albedo = point.Albedo;
-    double in[3] = { this->Ambient[0], this->Ambient[1], this->Ambient[2] };
+    double in[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      in[c] = this->SampleSky ? lit.AmbientIntensity : this->Ambient[c];
+    }
     if (albedo[0] != 0.0 || albedo[1] != 0.0 || albedo[2] != 0.0)
     {
-      this->AddInScattering(x, w, albedo, transmittance, in);
+      this->AddInScattering(x, w, albedo, lit, transmittance, in);
     }
     for (int c = 0; c < 3; ++c)
     {
-      J[c] = albedo[c] * in[c] + emissionScale * point.Emission[c];
+      J[c] = albedo[c] * in[c] + lit.EmissionScale * point.Emission[c];
     }
   }
 
   /**
-   * p(mu) T per channel, or with several octaves the octaves' sum at the
-   * albedo `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
+   * p(mu) T per channel for the lit medium, or with several octaves the
+   * octaves' sum at the albedo `albedo` (vtkTransmittanceMapMath::OctaveScattering()).
    */
-  void LightWeight(double mu, double T, const double albedo[3], double weight[3]) const
+  void LightWeight(const vtkTyndallMediumParameters& lit, double mu, double T,
+    const double albedo[3], double weight[3]) const
   {
-    const vtkTyndallMediumParameters& p = *this->Parameters;
     if (this->Octaves > 1)
     {
       vtkTransmittanceMapMath::OctaveScattering(
-        this->Octaves, p.OctaveFactors, p.ScatteringAnisotropy, mu, T, albedo, weight);
+        this->Octaves, lit.OctaveFactors, lit.ScatteringAnisotropy, mu, T, albedo, weight);
       return;
     }
-    weight[0] = weight[1] = weight[2] = this->Phase(mu) * T;
+    weight[0] = weight[1] = weight[2] = Phase(lit, mu) * T;
   }
 
   /**

@@ -402,18 +402,18 @@ private:
     timing.ShadowRays += 1.0;
   }
 
-  // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision of
-  // medium k (its own EmissionScale) at the world distance t of `ray`
-  // (world point x): the light transmittance per channel is each channel's
-  // own estimate with a coloured extinction.
-  void Source(const Ray& ray, double t, int k, const double x[3], const Point& point, Random& rng,
-    Timing& timing, const PathState& path, double J[3]) const
+  // c (ambient + sum_l E_l f_l p(mu_l) T_l) + emission at a collision in
+  // the medium lit as `lit` (its own parameters) at the world distance t of
+  // `ray` (world point x): the light transmittance per channel is each
+  // channel's own estimate with a coloured extinction.
+  void Source(const Ray& ray, double t, const vtkTyndallMediumParameters& lit, const double x[3],
+    const Point& point, Random& rng, Timing& timing, const PathState& path, double J[3]) const
   {
     this->S->Source(
-      point, x, ray.W,
+      point, x, ray.W, lit,
       [&](const double l[3], double tMax, double T[3])
       { this->LightTransmittance(ray, t, x, l, tMax, rng, timing, path, T); },
-      this->S->Media[k].Medium->GetParameters().EmissionScale, J);
+      J);
   }
 
   // Adds beta times an estimate of the emission from arrays along the ray's
@@ -613,8 +613,9 @@ private:
   // power heuristic's weight against the phase function's sampling (1 at
   // the path's last collision, which draws no direction), l drawn from the
   // environment (vtkTyndallEnvironment::Sample()), T ratio tracked.
-  void AddSkyEvent(const Ray& ray, double t, const double x[3], const double albedo[3], bool last,
-    Random& rng, Timing& timing, const PathState& path, double J[3]) const
+  void AddSkyEvent(const Ray& ray, double t, const double x[3], const double albedo[3],
+    const vtkTyndallMediumParameters& lit, bool last, Random& rng, Timing& timing,
+    const PathState& path, double J[3]) const
   {
     const Scene& s = *this->S;
     const double u[4] = { rng.Uniform(), rng.Uniform(), rng.Uniform(), rng.Uniform() };
@@ -624,7 +625,7 @@ private:
     {
       return;
     }
-    const double phase = s.Phase(vtkMath::Dot(l, ray.W));
+    const double phase = Scene::Phase(lit, vtkMath::Dot(l, ray.W));
     double T[3];
     this->LightTransmittance(ray, t, x, l, kInfinity, rng, timing, path, T);
     const double weight = (last ? 1.0 : PowerWeight(pdf, phase)) * phase / pdf;
@@ -739,7 +740,10 @@ private:
     {
       point = Point(); // missing data: no colour, no emission
     }
-    const bool single = s.Parameters->GetSingleScattering();
+    // Lit as its own medium: its scattering model, phase function, light
+    // scale, ambient and emission scale.
+    const vtkTyndallMediumParameters& lit = s.Media[k].Medium->GetParameters();
+    const bool single = lit.GetSingleScattering();
     if (single && k == 0 && s.Surface && !s.SurfaceAdded)
     {
       return this->ScatterAtSurface(ray, x, p, point, last, rng, timing, path, beta, phasePdf, L);
@@ -751,10 +755,10 @@ private:
     }
     else
     {
-      this->Source(ray, t, k, x, point, rng, timing, path, J);
+      this->Source(ray, t, lit, x, point, rng, timing, path, J);
       if (s.Environment && s.Environment->Enabled())
       {
-        this->AddSkyEvent(ray, t, x, point.Albedo, last, rng, timing, path, J);
+        this->AddSkyEvent(ray, t, x, point.Albedo, lit, last, rng, timing, path, J);
       }
       if (k == 0 && s.SurfaceAdded)
       {
@@ -774,8 +778,8 @@ private:
     const double w[3] = { ray.W[0], ray.W[1], ray.W[2] };
     const double u1 = rng.Uniform();
     vtkVolumetricPathTracer::SampleHenyeyGreenstein(
-      s.Parameters->ScatteringAnisotropy, w, u1, rng.Uniform(), ray.W);
-    phasePdf = s.Phase(vtkMath::Dot(ray.W, w));
+      lit.ScatteringAnisotropy, w, u1, rng.Uniform(), ray.W);
+    phasePdf = Scene::Phase(lit, vtkMath::Dot(ray.W, w));
     ray.T0 = 0.0;
     ray.T1 = kInfinity;
     ray.SkyUnit = 1.0;

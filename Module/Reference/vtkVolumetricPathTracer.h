@@ -156,9 +156,9 @@
  * to 1: vtkSingleScatteringReference's picture of it), and the bounces after
  * it do not add energy (the blending's isotropic part may: it scatters 2 k
  * Kd c). The other volumes' collisions see the lights, the sky and the
- * ambient light unscaled (as a medium's picture does; with this volume's
- * LightScale, ambient light and phase function, as every guest's collision):
- * the unit is the shaded collision's, not the scene's. As the map-based
+ * ambient light without LightUnit (as a medium's picture does; by that
+ * volume's own LightScale, ambient light and phase function, as every
+ * guest's collision): the unit is the shaded collision's, not the scene's. As the map-based
  * frame's shading takes T_l, a shaded collision exchanges its light from
  * vtkTyndallShading::ShadowOffset voxels along its direction: its shadow
  * rays and its scattered ray (a surface does not shadow itself; without the

@@ -16,6 +16,8 @@
 #include "vtkTyndallGridMedium.h"
 #include "vtkTyndallMajorantGrid.h"
 #include "vtkTyndallMedium.h"
+#include "vtkTyndallMediumParameters.h"
+#include "vtkTyndallSceneReader.h"
 #include "vtkTyndallShading.h"
 #include "vtkTyndallSurfaceLobe.h"
 
@@ -32,6 +34,39 @@ constexpr double kBoundedBounces = 4.0;
 // The majorant is raised by this factor: the GPU's single-precision
 // extinction may round above the CPU's double bound.
 constexpr double kMajorantMargin = 1.0 + 1e-4;
+
+// How each medium a path collides in is lit, by its own parameters (the
+// CPU tracer's `lit`; tyndallPathCollisionMedium() draws the medium):
+// pathLighting[] this volume's, then each guest's (anisotropy, LightScale,
+// AmbientIntensity, 1 for single scattering), and the renderer's lights'
+// unscaled colours, pathLightColor[]. Declared by the guests' variant only.
+void SetLightingUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program)
+{
+  constexpr int media = vtkTyndallSceneReader::MaximumNumberOfGuests + 1;
+  constexpr int lights = vtkTyndallSceneReader::MaximumNumberOfLights;
+  float lighting[media][4] = {};
+  const int n = static_cast<int>(std::min<size_t>(frame.Guests.size() + 1, media));
+  for (int m = 0; m < n; ++m)
+  {
+    const vtkTyndallMediumParameters& p =
+      (m == 0 ? frame.Medium : frame.Guests[m - 1].Medium)->GetParameters();
+    lighting[m][0] = static_cast<float>(p.ScatteringAnisotropy);
+    lighting[m][1] = static_cast<float>(p.LightScale);
+    lighting[m][2] = static_cast<float>(p.AmbientIntensity);
+    lighting[m][3] = p.GetSingleScattering() ? 1.0f : 0.0f;
+  }
+  program->SetUniform4fv("pathLighting", n, lighting);
+  float color[lights][3] = {};
+  const int count = std::min(frame.GetSceneLights(), lights);
+  for (int l = 0; l < count; ++l)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      color[l][c] = static_cast<float>(frame.Lights[l].Source.Color[c]);
+    }
+  }
+  program->SetUniform3fv("pathLightColor", lights, color);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -297,6 +332,7 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   if (!frame.Guests.empty())
   {
     frame.SetCameraGuestUniforms(program, true);
+    SetLightingUniforms(frame, program);
   }
   if (variant.PathEnvironment)
   {

@@ -406,8 +406,10 @@ public:
    *
    * Several volumes sharing their shadows (guests) are traced as the CPU
    * tracer traces them: the camera ray through the media this mapper
-   * draws, scattered paths through every one (in single scattering a
-   * collision in another volume glows by its own EmissionScale).
+   * draws, scattered paths through every one; a collision is one medium's,
+   * drawn with its share of the extinction, and lit by that volume's own
+   * scattering model, phase function, LightScale, ambient light and
+   * EmissionScale.
    *
    * A plain vtkVolumeProperty with Shade on (a shaded CT) is traced as the
    * CPU tracer traces it: each of its collisions scatters as VTK's shaded surface

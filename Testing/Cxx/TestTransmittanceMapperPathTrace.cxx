@@ -343,11 +343,11 @@ void TwoVolumesAgainstCpu()
 // in a third CPU picture, 64 spp, there and at the four pixels beside: the
 // picture is this volume's layer alone there), or black (its collisions
 // absorb, after a medium's Shade's surface term) before a black background
-// and no sky (its layer black: every pixel compared). 256 spp. `glow`:
-// the fog glows too (its own EmissionScale 2, this volume none; the
-// collisions in it add its emission, by its own scale).
-void InFogAgainstCpu(
-  const std::function<void(Scene&)>& shade, bool black, bool glow, const std::string& name)
+// and no sky (its layer black: every pixel compared). 256 spp. `fogSetUp`
+// sets the fog's property up further (its own lighting: a collision in it
+// is lit as the fog).
+void InFogAgainstCpu(const std::function<void(Scene&)>& shade, bool black,
+  const std::function<void(vtkParticipatingMediumProperty*)>& fogSetUp, const std::string& name)
 {
   const int size = 24, samples = 256;
   Scene scene(tyndall_test::MakeDenseMedium(24), 0.9, size);
@@ -366,13 +366,7 @@ void InFogAgainstCpu(
     tyndall_test::MakeCloudProperty(0.05);
   vtkNew<vtkColorTransferFunction> none;
   none->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
-  if (glow)
-  {
-    vtkNew<vtkColorTransferFunction> emission;
-    emission->AddRGBPoint(0.0, 0.5, 0.25, 0.1);
-    fogProperty->SetEmissionColor(emission);
-    fogProperty->SetEmissionScale(2.0);
-  }
+  fogSetUp(fogProperty);
   if (black)
   {
     fogProperty->SetColor(none);
@@ -637,9 +631,10 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       scene.Renderer->AddVolume(copy);
     });
   TwoVolumesAgainstCpu();
+  const auto plainFog = [](vtkParticipatingMediumProperty*) {};
   InFogAgainstCpu([](Scene& scene)
     { scene.Volume->SetProperty(tyndall_test::MakeShadedProperty(4.0, 12.0, 0.9)); },
-    false, false, "Shaded CT in a fog");
+    false, plainFog, "Shaded CT in a fog");
   InFogAgainstCpu(
     [](Scene& scene)
     {
@@ -648,10 +643,34 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       scene.Property->SetSpecular(0.4);
       scene.Property->SetDensityScale(0.02); // the fog's share large where they overlap
     },
-    true, false, "A medium's Shade in a black fog");
-  // The cloud's medium (no emission) in a glowing fog: the fog's collisions
-  // in its paths glow by the fog's EmissionScale.
-  InFogAgainstCpu([](Scene&) {}, false, true, "A glowing fog");
+    true, plainFog, "A medium's Shade in a black fog");
+  // The cloud's medium (no emission) in a glowing fog lit its own way: the
+  // fog's collisions in its paths glow by the fog's EmissionScale, scatter
+  // backwards (g -0.6 against the cloud's 0.4) and see the sun 3 times as
+  // bright and an ambient light of 0.3 (the cloud's 1 and 0.05).
+  InFogAgainstCpu([](Scene&) {}, false,
+    [](vtkParticipatingMediumProperty* fog)
+    {
+      vtkNew<vtkColorTransferFunction> emission;
+      emission->AddRGBPoint(0.0, 0.5, 0.25, 0.1);
+      fog->SetEmissionColor(emission);
+      fog->SetEmissionScale(2.0);
+      fog->SetScatteringAnisotropy(-0.6);
+      fog->SetLightScale(3.0);
+      fog->SetAmbientIntensity(0.3);
+    },
+    "A glowing fog lit its own way");
+  // An emission-absorption fog: a path's collision in it ends there, the
+  // fog's colour seen (its own picture's meaning).
+  InFogAgainstCpu([](Scene&) {}, false,
+    [](vtkParticipatingMediumProperty* fog)
+    {
+      vtkNew<vtkColorTransferFunction> color;
+      color->AddRGBPoint(0.0, 0.8, 0.4, 0.1);
+      fog->SetColor(color);
+      fog->SetScatteringModelToEmissionAbsorption();
+    },
+    "An emission-absorption fog");
   // A shaded CT: a plain property with Shade on over the dense medium's
   // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
   const auto shadedCT = [](Scene& scene)

@@ -15,9 +15,11 @@
 // extinction by spectral tracking (TYNDALL_CHROMATIC); with guests (other
 // volumes) the camera ray's flight through the camera media, scattered
 // flights through every medium (TYNDALL_CAMERA_GUESTS: tyndallEveryGuest)
-// to the maps' box, the collision's colour their mixture (a shaded volume's
-// collision its own with its share of their extinction, else the others':
-// tyndallPathOnSurface(); a medium's Shade's surface term weighed by it).
+// to the maps' box, a collision drawn as one medium's with its share of
+// their extinction (tyndallPathCollisionMedium(), the CPU tracer's
+// collision of one medium: its colour, emission and lighting, a shaded
+// volume's own collision on its surface, a medium's Shade's surface term
+// at its own).
 // It writes the paths' mean radiance (premultiplied) and 1 - the mean of their first flights'
 // escapes (an unbiased estimate of the view transmittance; per channel into
 // a second image with a coloured extinction, the escapes weighted by
@@ -318,31 +320,82 @@ TyndallTransmittance tyndallPathTransmittance(vec3 x, vec3 dir, float tEnd, bool
 #endif
 }
 
-// The light scattered at x against the path's direction w, per unit of
-// scattering: ambient + sum_l E_l p(mu_l) T_l (next-event estimation),
-// T_l from the frame's method (the maps, a brute-force march or none) or
-// tracked to the light or the box's side (tyndallPathTransmittance(); a
-// light whose method is None is unshadowed either way).
-vec3 tyndallPathInScattering(vec3 x, vec3 w)
+// How a collision's medium is lit (vtkTyndallMediumParameters, the CPU
+// tracer's `lit`): its phase function's anisotropy, its ambient radiance,
+// its factor of the renderer's lights and its scattering model. With
+// guests each medium's own (pathLighting[]: this volume's, then the
+// guests'; the lights' colours pathLightColor[] times its LightScale), else
+// this volume's uniforms (lightIrradiance[] carries its LightScale).
+struct TyndallLighting
 {
-  if (pathTrackedShadows == 0)
+  float G;
+  vec3 Ambient;
+  float LightScale; // the lights' colours' factor (with guests; 1 alone)
+  bool Scatters;    // single scattering, else emission-absorption (the path ends)
+};
+
+#if TYNDALL_CAMERA_GUESTS
+// Per medium (this volume's first, then guest g's at g + 1): anisotropy,
+// LightScale, AmbientIntensity, 1 for single scattering (else 0).
+uniform vec4 pathLighting[TYNDALL_GUESTS + 1];
+uniform vec3 pathLightColor[TYNDALL_MAX_LIGHTS]; // intensity x colour (unscaled)
+
+// Medium m's lighting (-1: this volume's, else guest m's).
+TyndallLighting tyndallPathLighting(int m)
+{
+  vec4 p = pathLighting[m + 1];
+  return TyndallLighting(p.x, vec3(p.z), p.y, p.w > 0.5);
+}
+
+// Light l's irradiance as the medium lit as `lit` sees it.
+vec3 tyndallPathLightIrradiance(int l, TyndallLighting lit)
+{
+  return lit.LightScale * pathLightColor[l];
+}
+#else
+TyndallLighting tyndallPathLighting(int m)
+{
+  return TyndallLighting(anisotropy, ambient, 1.0, scatteringModel != 0);
+}
+
+vec3 tyndallPathLightIrradiance(int l, TyndallLighting lit)
+{
+  return lightIrradiance[l];
+}
+#endif
+
+// The light scattered at x against the path's direction w, per unit of
+// scattering, in the medium lit as `lit`: ambient + sum_l E_l p(mu_l) T_l
+// (next-event estimation), T_l from the frame's method (the maps, a
+// brute-force march or none: lightTransmittance()) or tracked to the light
+// or the box's side (tyndallPathTransmittance(); a light whose method is
+// None is unshadowed either way).
+vec3 tyndallPathInScattering(vec3 x, vec3 w, TyndallLighting lit)
+{
+  bool tracked = pathTrackedShadows != 0;
+  if (!tracked)
   {
     // The light loop and its brute-force marches, counted at once.
     tyndallPathIterations += pathCollisionCost;
-    return inScattering(x, w, vec3(1.0));
   }
-  vec3 sum = vec3(ambient);
+  vec3 sum = lit.Ambient;
   for (int l = 0; l < numberOfLights; ++l)
   {
-    if (!tyndallPathStep())
+    if (tracked && !tyndallPathStep())
     {
       break;
     }
     vec3 toLight;
     float distance;
-    vec3 E = lightIrradiance[l];
+    vec3 E = tyndallPathLightIrradiance(l, lit);
     if (!tyndallLightAt(l, x, E, toLight, distance) || occluded(l, x))
     {
+      continue;
+    }
+    float phase = tyndallPhaseHG(lit.G, dot(toLight, w));
+    if (!tracked)
+    {
+      sum += E * (phase * lightTransmittance(l, x, toLight, distance));
       continue;
     }
     TyndallTransmittance T = TyndallTransmittance(1.0);
@@ -351,7 +404,7 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w)
       T = tyndallPathTransmittance(
         x, toLight, min(tyndallIntersectMapBox(x, toLight).y, distance), false);
     }
-    sum += E * tyndallPhaseHG(anisotropy, dot(toLight, w)) * T;
+    sum += E * phase * T;
   }
   return sum;
 }
@@ -415,9 +468,9 @@ float tyndallPowerWeight(float a, float b)
 // (vtkTransmittanceEnvironmentFS.glsl), T to the box's side
 // (tyndallPathTransmittance()),
 // times the power heuristic's weight against the phase function's sampling
-// (1 at the path's last collision, which draws no direction). The CPU
-// tracer's AddSkyEvent().
-vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
+// (1 at the path's last collision, which draws no direction), for the
+// phase function of anisotropy g. The CPU tracer's AddSkyEvent().
+vec3 tyndallPathSkyEvent(vec3 x, vec3 w, float g, bool last)
 {
   tyndallPathIterations += pathSkySearchCost;
   vec4 u = vec4(tyndallRandom(), tyndallRandom(), tyndallRandom(), tyndallRandom());
@@ -428,7 +481,7 @@ vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
   {
     return vec3(0.0);
   }
-  float phase = tyndallPhaseHG(anisotropy, dot(l, w));
+  float phase = tyndallPhaseHG(g, dot(l, w));
   TyndallTransmittance T = tyndallPathTransmittance(x, l, tyndallIntersectMapBox(x, l).y, false);
   return L * (T * phase / pdf * (last ? 1.0 : tyndallPowerWeight(pdf, phase)));
 }
@@ -442,7 +495,7 @@ vec3 tyndallPathSkyEscape(vec3 w, float phasePdf)
 }
 #else
 // No sky: nothing to estimate at a collision, nothing met on leaving.
-vec3 tyndallPathSkyEvent(vec3 x, vec3 w, bool last)
+vec3 tyndallPathSkyEvent(vec3 x, vec3 w, float g, bool last)
 {
   return vec3(0.0);
 }
@@ -528,15 +581,33 @@ vec4 tyndallPathOwn(TyndallCameraSample s)
 #endif
 }
 
-// This volume's share of the collision's extinction: exactly 1 alone, its
-// part of the mixture with guests (the CPU tracer's collisions are each one
-// medium's, this one's with this probability).
-float tyndallPathOwnShare(TyndallCameraSample s)
+// Draws the medium the collision s at x is of, with its share of the
+// extinction (the CPU tracer's collisions are each one medium's): with
+// guests this volume's with the probability s.Own.a / s.Sigma, else a
+// guest's with its own share (each guest sampled again at x; the last of
+// positive extinction takes what rounding leaves), and s then holds the
+// medium's colour and emission (per unit of its extinction); alone this
+// volume's, no number drawn. Returns its lighting; `own`: whether it is
+// this volume's.
+TyndallLighting tyndallPathCollisionMedium(vec3 x, inout TyndallCameraSample s, out bool own)
 {
 #if TYNDALL_CAMERA_GUESTS
-  return s.Guests.a > 0.0 ? clamp(s.Own.a / s.Sigma, 0.0, 1.0) : 1.0;
+  // (No number drawn where no guest is: a shaded volume's stream as before.)
+  bool drawn = s.Guests.a <= 0.0;
+  float u = drawn ? 0.0 : tyndallRandom() * s.Sigma;
+  float below = s.Own.a;
+  drawn = drawn || u < below;
+  int medium = -1;
+  vec3 color = s.Own.rgb;
+  vec3 emission = s.OwnEmission;
+  TYNDALL_FOR_GUESTS(TYNDALL_GUEST_DRAW)
+  own = medium < 0;
+  s.Color = color;
+  s.Emission = emission;
+  return tyndallPathLighting(medium);
 #else
-  return 1.0;
+  own = true;
+  return tyndallPathLighting(-1);
 #endif
 }
 
@@ -810,36 +881,35 @@ TyndallScatterer tyndallPathScatterer(vec3 x, vec3 w, TyndallCameraSample s)
 // x (the lights not scaled: LightUnit f is VTK's term per unit light), the
 // sky's by next-event estimation alone (the lobe is never sampled: the
 // medium scatters on by its phase function; the CPU tracer's
-// AddSurfaceTerm()), times this volume's share of the collision s (the
-// CPU adds it at this volume's collisions only); 0 otherwise.
+// AddSurfaceTerm()), at this volume's own collisions (`own`); 0 otherwise.
 #if TYNDALL_SHADING_ADDITIVE
-vec3 tyndallPathAddedSurface(vec3 x, TyndallCameraSample s, TyndallScatterer lobe)
+vec3 tyndallPathAddedSurface(vec3 x, bool own, TyndallScatterer lobe)
 {
-  float share = tyndallPathOwnShare(s);
-  return share > 0.0 ? share * tyndallLobeLight(x, lobe, true) : vec3(0.0);
+  return own ? tyndallLobeLight(x, lobe, true) : vec3(0.0);
 }
 #else
-vec3 tyndallPathAddedSurface(vec3 x, TyndallCameraSample s, TyndallScatterer lobe)
+vec3 tyndallPathAddedSurface(vec3 x, bool own, TyndallScatterer lobe)
 {
   return vec3(0.0);
 }
 #endif
 
-// A medium's collision's light at x per unit of throughput: its colour
-// times the in-scattered light (next-event estimation) and, with the sky,
-// its estimate against the phase function's sampling, plus its emission
-// and a medium's surface term (`surface`: its lobe).
-vec3 tyndallMediumCollisionLight(
-  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer surface, bool last)
+// A medium's collision's light at x per unit of throughput, lit as `lit`:
+// its colour times the in-scattered light (next-event estimation) and,
+// with the sky, its estimate against the phase function's sampling, plus
+// its emission and, at this volume's own (`own`), a medium's surface term
+// (`surface`: its lobe).
+vec3 tyndallMediumCollisionLight(vec3 x, vec3 w, TyndallCameraSample s, TyndallLighting lit,
+  bool own, TyndallScatterer surface, bool last)
 {
-  vec3 light = tyndallPathInScattering(x, w) + tyndallPathSkyEvent(x, w, last);
-  return s.Color * light + tyndallSampleEmission(s) + tyndallPathAddedSurface(x, s, surface);
+  vec3 light = tyndallPathInScattering(x, w, lit) + tyndallPathSkyEvent(x, w, lit.G, last);
+  return s.Color * light + tyndallSampleEmission(s) + tyndallPathAddedSurface(x, own, surface);
 }
 
 // The throughput times a medium's collision's colour, then (unless the
 // path ends there: Russian roulette) the scattered direction w drawn from
-// the phase function (its density phasePdf), from x (o).
-bool tyndallMediumScatter(TyndallCameraSample s, vec3 x, inout vec3 beta, inout vec3 w,
+// the phase function of anisotropy g (its density phasePdf), from x (o).
+bool tyndallMediumScatter(TyndallCameraSample s, float g, vec3 x, inout vec3 beta, inout vec3 w,
   out vec3 o, out float phasePdf)
 {
   beta *= s.Color;
@@ -850,30 +920,18 @@ bool tyndallMediumScatter(TyndallCameraSample s, vec3 x, inout vec3 beta, inout 
     return false;
   }
   vec3 previous = w;
-  w = tyndallSampleHG(w, anisotropy);
-  phasePdf = tyndallPhaseHG(anisotropy, dot(w, previous));
+  w = tyndallSampleHG(w, g);
+  phasePdf = tyndallPhaseHG(g, dot(w, previous));
   return true;
 }
 
 #if TYNDALL_SHADING && !TYNDALL_SHADING_ADDITIVE
-// Whether the collision s is this volume's, whose shaded surfaces scatter
-// (a plain property's Shade): always alone (no number drawn); with guests
-// drawn with this volume's share of the extinction (the CPU tracer's
-// collision of one medium), else s becomes the guests' part of the mixture
-// (their colour and emission; a plain property has no emission of its own).
-bool tyndallPathOnSurface(inout TyndallCameraSample s)
+// Whether the collision is on a shaded surface: this volume's own
+// (`own`, tyndallPathCollisionMedium()), whose shaded surfaces scatter (a
+// plain property's Shade).
+bool tyndallPathOnSurface(bool own)
 {
-#if TYNDALL_CAMERA_GUESTS
-  if (s.Guests.a <= 0.0 || tyndallRandom() * s.Sigma < s.Own.a)
-  {
-    return true;
-  }
-  s.Color = s.Guests.rgb;
-  s.Emission *= s.Sigma / s.Guests.a;
-  return false;
-#else
-  return true;
-#endif
+  return own;
 }
 
 // A shaded collision's light at x per unit of throughput (the CPU tracer's
@@ -907,7 +965,7 @@ float tyndallPathSkyUnit(bool surface)
 }
 #else
 // Without a plain property's Shade every collision is a medium's.
-bool tyndallPathOnSurface(inout TyndallCameraSample s)
+bool tyndallPathOnSurface(bool own)
 {
   return false;
 }
@@ -932,21 +990,21 @@ float tyndallPathSkyUnit(bool surface)
 #endif
 
 // A collision's light at x per unit of throughput, on a shaded surface
-// (`surface`: its lobe) or in a medium.
-vec3 tyndallPathCollisionLight(
-  vec3 x, vec3 w, TyndallCameraSample s, TyndallScatterer lobe, bool surface, bool last)
+// (`surface`: its lobe) or in a medium lit as `lit` (`own`: this volume's).
+vec3 tyndallPathCollisionLight(vec3 x, vec3 w, TyndallCameraSample s, TyndallLighting lit,
+  bool own, TyndallScatterer lobe, bool surface, bool last)
 {
   return surface ? tyndallSurfaceCollisionLight(x, lobe, last)
-                 : tyndallMediumCollisionLight(x, w, s, lobe, last);
+                 : tyndallMediumCollisionLight(x, w, s, lit, own, lobe, last);
 }
 
 // Scatters the path at a collision (see tyndallSurfaceScatter() and
 // tyndallMediumScatter()); false when it ends there.
-bool tyndallPathScatter(TyndallScatterer lobe, TyndallCameraSample s, bool surface, vec3 x,
-  inout vec3 beta, inout vec3 w, out vec3 o, out float phasePdf)
+bool tyndallPathScatter(TyndallScatterer lobe, TyndallCameraSample s, TyndallLighting lit,
+  bool surface, vec3 x, inout vec3 beta, inout vec3 w, out vec3 o, out float phasePdf)
 {
   return surface ? tyndallSurfaceScatter(lobe, x, beta, w, o, phasePdf)
-                 : tyndallMediumScatter(s, x, beta, w, o, phasePdf);
+                 : tyndallMediumScatter(s, lit.G, x, beta, w, o, phasePdf);
 }
 
 // One path from the camera ray p0 + t w, t in [tNear, tFar]: adds its
@@ -983,17 +1041,19 @@ bool tyndallTracePath(vec3 p0, vec3 w, float tNear, float tFar, inout vec3 radia
       }
       break;
     }
-    if (scatteringModel == 0)
+    bool own;
+    TyndallLighting lit = tyndallPathCollisionMedium(x, s, own);
+    if (!lit.Scatters)
     {
       radiance += beta * s.Color; // emission-absorption: the colour, and the path ends
       break;
     }
     bool last = bounce + 1 >= pathBounces;
-    surface = tyndallPathOnSurface(s);
+    surface = tyndallPathOnSurface(own);
     TyndallScatterer scatterer = tyndallPathScatterer(x, w, s);
-    radiance += beta * tyndallPathCollisionLight(x, w, s, scatterer, surface, last);
+    radiance += beta * tyndallPathCollisionLight(x, w, s, lit, own, scatterer, surface, last);
     if (last || tyndallPathSpent() ||
-      !tyndallPathScatter(scatterer, s, surface, x, beta, w, o, phasePdf))
+      !tyndallPathScatter(scatterer, s, lit, surface, x, beta, w, o, phasePdf))
     {
       break;
     }

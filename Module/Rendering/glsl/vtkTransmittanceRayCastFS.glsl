@@ -554,6 +554,41 @@ float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER 
 // Samplers are indexed by constants only (GLSL 1.50): one statement per guest.
 #define TYNDALL_GUEST_CAMERA_SAMPLE(g) sigma += tyndallGuestCameraSample(guestVolume[g], TYNDALL_GUEST_BRICKS(g) guestTransfer[g], TYNDALL_GUEST_SCATTERING(g) g, x, color, emission);
 
+// The path tracer's draw of the medium a collision at x is of
+// (tyndallPathCollisionMedium()), at guest g: while none is drawn (`drawn`
+// false), a guest of positive extinction at x becomes the one so far (its
+// index in `medium`, its colour and emission per unit of its extinction),
+// and is drawn when u lies below the extinctions summed so far (`below`).
+void tyndallGuestDraw(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER sampler2D table,
+#if TYNDALL_GUEST_COLORS
+  sampler3D scattering,
+#endif
+  int g, vec3 x, float u, inout float below, inout bool drawn, inout int medium,
+  inout vec3 color, inout vec3 emission)
+{
+  if (drawn)
+  {
+    return;
+  }
+  vec3 c = vec3(0.0);
+  vec3 e = vec3(0.0);
+  float sigma = tyndallGuestCameraSample(volume, TYNDALL_GUEST_BRICKS_ARGUMENT table,
+#if TYNDALL_GUEST_COLORS
+    scattering,
+#endif
+    g, x, c, e);
+  if (sigma > 0.0)
+  {
+    medium = g;
+    color = c / sigma;
+    emission = e / sigma;
+    below += sigma;
+    drawn = u < below;
+  }
+}
+
+#define TYNDALL_GUEST_DRAW(g) tyndallGuestDraw(guestVolume[g], TYNDALL_GUEST_BRICKS(g) guestTransfer[g], TYNDALL_GUEST_SCATTERING(g) g, x, u, below, drawn, medium, color, emission);
+
 // What the camera rays see at x: the extinction of this medium (empty
 // outside its box) plus its camera guests', returned; their colours and
 // emissions (each medium's colour times its own EmissionScale) mixed in
@@ -561,9 +596,10 @@ float tyndallGuestCameraSample(sampler3D volume, TYNDALL_GUEST_BRICKS_PARAMETER 
 // unit extinction; CPU twin:
 // vtkSingleScatteringReference's camera rays); this medium's own colour
 // and extinction in `own`, the guests' in `guests` (their mixture's colour;
-// the path tracer's collision is one or the other's).
-float tyndallCameraMedium(
-  vec3 x, out vec3 color, out vec3 emission, out vec4 own, out vec4 guests)
+// the path tracer's collision is one or the other's), its emission per
+// unit of its extinction in `ownEmission`.
+float tyndallCameraMedium(vec3 x, out vec3 color, out vec3 emission, out vec4 own,
+  out vec4 guests, out vec3 ownEmission)
 {
   vec3 q = (worldToVolume * vec4(x, 1.0)).xyz;
   bool inside = all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(1.0)));
@@ -571,11 +607,13 @@ float tyndallCameraMedium(
   float tableCoord = 0.0;
   own.a = inside ? tyndallMedium(x, ownColor, tableCoord) : 0.0;
   own.rgb = ownColor;
-  vec3 ownEmission = vec3(0.0);
+  ownEmission = vec3(0.0);
+  vec3 ownTotal = vec3(0.0);
 #if TYNDALL_EMISSION
   if (own.a > 0.0)
   {
-    ownEmission = own.a * emissionScale * tyndallEmissionColor(tableCoord);
+    ownEmission = emissionScale * tyndallEmissionColor(tableCoord);
+    ownTotal = own.a * emissionScale * tyndallEmissionColor(tableCoord);
   }
 #endif
   // The guests' sums apart (the mixture's less this medium's part would
@@ -587,7 +625,7 @@ float tyndallCameraMedium(
   guests = vec4(sigma > 0.0 ? color / sigma : vec3(0.0), sigma);
   sigma += own.a;
   color += own.a * ownColor;
-  emission += ownEmission;
+  emission += ownTotal;
   if (sigma > 0.0)
   {
     color /= sigma;
@@ -748,6 +786,7 @@ struct TyndallCameraSample
   float Sigma;
   vec3 Color;
   vec3 Emission;    // camera guests: the media's mixed emission (each scaled), per unit extinction
+                    // (at a path's collision the drawn medium's: tyndallPathCollisionMedium())
   float TableCoord; // alone: the sample's position in the transfer table
   vec3 Position;    // where its light is looked up: the sample, or a step's first isosurface
   vec3 Normal;      // where a shaded sample's normal is taken: the sample, or an isosurface
@@ -755,6 +794,7 @@ struct TyndallCameraSample
 #if TYNDALL_CAMERA_GUESTS
   vec4 Own;    // this medium's colour and extinction in the mixture (tyndallCameraMedium())
   vec4 Guests; // the guests' (their mixture's colour)
+  vec3 OwnEmission; // this medium's emission (scaled) per unit of its extinction
 #endif
 #if TYNDALL_COMPONENT_SHADING
   vec4 Parts;    // independent components' parts in the colour (vtkTyndallComponents::Parts())
@@ -821,6 +861,7 @@ TyndallCameraSample tyndallIsoCameraSample(vec3 x0, vec3 w, float dt)
 #if TYNDALL_CAMERA_GUESTS
   s.Own = vec4(s.Color, s.Sigma); // the isosurfaces are this volume's alone
   s.Guests = vec4(0.0);
+  s.OwnEmission = vec3(0.0);
 #endif
   return s;
 }
@@ -839,7 +880,7 @@ TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
   tyndallFootprint = tyndallPixelFootprint(x);
 #if TYNDALL_CAMERA_GUESTS
   s.TableCoord = 0.0;
-  s.Sigma = tyndallCameraMedium(x, s.Color, s.Emission, s.Own, s.Guests);
+  s.Sigma = tyndallCameraMedium(x, s.Color, s.Emission, s.Own, s.Guests, s.OwnEmission);
 #else
   s.Emission = vec3(0.0);
   s.Sigma = tyndallMedium(x, s.Color, s.TableCoord);
@@ -855,8 +896,8 @@ TyndallCameraSample tyndallCameraSample(vec3 x, vec3 x0, vec3 w, float dt)
 
 // The sample's emission (scaled; per unit extinction) in single
 // scattering: from the transfer functions or the camera guests' mix (each
-// medium's scaled by its own EmissionScale: tyndallCameraMedium())
-// (TYNDALL_EMISSION); none otherwise.
+// medium's scaled by its own EmissionScale: tyndallCameraMedium(); at a
+// path's collision the drawn medium's) (TYNDALL_EMISSION); none otherwise.
 vec3 tyndallSampleEmission(TyndallCameraSample s)
 {
 #if TYNDALL_EMISSION && TYNDALL_CAMERA_GUESTS
