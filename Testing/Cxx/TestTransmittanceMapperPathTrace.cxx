@@ -428,6 +428,51 @@ void InFogAgainstCpu(const std::function<void(Scene&)>& shade, bool black,
   Check(selected > 100 && worst < 4.5, name + ": the GPU's mean is the CPU's within the noise");
 }
 
+// 2. (continued) a guest's phase function: the cloud lit from the side
+// (the sun beyond it, from -x) beside a fog out of the camera's view (a
+// block at x in [1.6, 3.2], not drawn: the picture is the cloud's layer
+// alone, every pixel compared) that scatters backwards (g -0.6 against the
+// cloud's 0.4; its other settings the cloud's). The sun's light that the
+// fog sends back into the cloud is the fog's phase function at about 180
+// degrees (0.80 for g -0.6, 0.024 for 0.4). 256 spp: worst z -1.2; the
+// fog's anisotropy taken as the cloud's on the GPU: z -7.6 (the fog in
+// view, behind the cloud, hid it: z -3.8 at best). About 2 s.
+void OutOfViewFogAgainstCpu()
+{
+  const int size = 24, samples = 256;
+  Scene scene(tyndall_test::MakeCloud(24), 0.5, size);
+  scene.Renderer->RemoveAllLights();
+  scene.Renderer->AddLight(tyndall_test::MakeSun(-1.0, 0.1, 0.0, 1.5));
+  vtkNew<vtkImageData> fog;
+  fog->SetDimensions(4, 4, 4);
+  fog->SetOrigin(1.6, -1.0, -1.0);
+  fog->SetSpacing(1.6 / 3.0, 2.0 / 3.0, 2.0 / 3.0);
+  fog->AllocateScalars(VTK_FLOAT, 1);
+  fog->GetPointData()->GetScalars()->Fill(8.0);
+  vtkNew<vtkTransmittanceVolumeMapper> fogMapper;
+  fogMapper->SetInputData(fog);
+  fogMapper->JitterOff();
+  vtkSmartPointer<vtkParticipatingMediumProperty> fogProperty =
+    tyndall_test::MakeCloudProperty(0.3);
+  fogProperty->SetScatteringAnisotropy(-0.6);
+  fogProperty->SetAmbientIntensity(scene.Property->GetAmbientIntensity());
+  vtkNew<vtkVolume> fogVolume;
+  fogVolume->SetMapper(fogMapper);
+  fogVolume->SetProperty(fogProperty);
+  scene.Renderer->AddVolume(fogVolume);
+  tyndall_test::BothTraced both;
+  const std::string name = "A fog out of view scattering backwards";
+  if (!both.Trace(scene, samples, size, name))
+  {
+    return;
+  }
+  const double worst =
+    both.Compare(scene.Renderer->GetBackground(), samples)
+      .WorstZ(
+        name + " (" + std::to_string(size) + "^2), " + std::to_string(samples) + " spp", false);
+  Check(worst < 4.5, name + ": the GPU's mean is the CPU's within the noise");
+}
+
 // 3. the mode's frames.
 void Mode()
 {
@@ -671,6 +716,7 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       fog->SetScatteringModelToEmissionAbsorption();
     },
     "An emission-absorption fog");
+  OutOfViewFogAgainstCpu();
   // A shaded CT: a plain property with Shade on over the dense medium's
   // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
   const auto shadedCT = [](Scene& scene)
