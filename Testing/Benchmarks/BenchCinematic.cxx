@@ -243,7 +243,6 @@ struct Scene : tyndall_test::PathScene
   std::string Name;
   // --fog: a 4^3 grid of the cloud's transfer functions at their peak value
   // (extinction about 1), scaled 1.3 about a point 0.3 behind the origin.
-  vtkNew<vtkImageData> FogData;
   vtkNew<vtkTransmittanceVolumeMapper> FogMapper;
   vtkSmartPointer<vtkParticipatingMediumProperty> FogProperty =
     tyndall_test::MakeCloudProperty(0.05);
@@ -251,12 +250,7 @@ struct Scene : tyndall_test::PathScene
 
   void AddFog()
   {
-    this->FogData->SetDimensions(4, 4, 4);
-    this->FogData->SetOrigin(-1.0, -1.0, -1.0);
-    this->FogData->SetSpacing(2.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0);
-    this->FogData->AllocateScalars(VTK_FLOAT, 1);
-    this->FogData->GetPointData()->GetScalars()->Fill(8.0);
-    this->FogMapper->SetInputData(this->FogData);
+    this->FogMapper->SetInputData(tyndall_test::MakeFog(-1.0, -1.0, -1.0, 2.0, 2.0, 2.0));
     this->FogMapper->JitterOff();
     this->FogProperty->SetScatteringAnisotropy(-0.6);
     this->FogProperty->SetLightScale(3.0);

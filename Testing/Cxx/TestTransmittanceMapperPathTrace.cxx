@@ -353,14 +353,8 @@ void InFogAgainstCpu(const std::function<void(Scene&)>& shade, bool black,
   Scene scene(tyndall_test::MakeDenseMedium(24), 0.9, size);
   shade(scene);
   // The cloud's transfer functions at their peak value 8 (extinction about 1).
-  vtkNew<vtkImageData> fog;
-  fog->SetDimensions(4, 4, 4);
-  fog->SetOrigin(-1.0, -1.0, -1.0);
-  fog->SetSpacing(2.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0);
-  fog->AllocateScalars(VTK_FLOAT, 1);
-  fog->GetPointData()->GetScalars()->Fill(8.0);
   vtkNew<vtkTransmittanceVolumeMapper> fogMapper;
-  fogMapper->SetInputData(fog);
+  fogMapper->SetInputData(tyndall_test::MakeFog(-1.0, -1.0, -1.0, 2.0, 2.0, 2.0));
   fogMapper->JitterOff();
   vtkSmartPointer<vtkParticipatingMediumProperty> fogProperty =
     tyndall_test::MakeCloudProperty(0.05);
@@ -443,14 +437,8 @@ void OutOfViewFogAgainstCpu()
   Scene scene(tyndall_test::MakeCloud(24), 0.5, size);
   scene.Renderer->RemoveAllLights();
   scene.Renderer->AddLight(tyndall_test::MakeSun(-1.0, 0.1, 0.0, 1.5));
-  vtkNew<vtkImageData> fog;
-  fog->SetDimensions(4, 4, 4);
-  fog->SetOrigin(1.6, -1.0, -1.0);
-  fog->SetSpacing(1.6 / 3.0, 2.0 / 3.0, 2.0 / 3.0);
-  fog->AllocateScalars(VTK_FLOAT, 1);
-  fog->GetPointData()->GetScalars()->Fill(8.0);
   vtkNew<vtkTransmittanceVolumeMapper> fogMapper;
-  fogMapper->SetInputData(fog);
+  fogMapper->SetInputData(tyndall_test::MakeFog(1.6, -1.0, -1.0, 1.6, 2.0, 2.0));
   fogMapper->JitterOff();
   vtkSmartPointer<vtkParticipatingMediumProperty> fogProperty =
     tyndall_test::MakeCloudProperty(0.3);

@@ -59,6 +59,20 @@ inline vtkSmartPointer<vtkImageData> MakeFire(int n)
   return image;
 }
 
+// A fog: 4^3 samples of the value 8 (the cloud's transfer functions at
+// their peak) filling the box from (x, y, z) of the sides (sx, sy, sz).
+inline vtkSmartPointer<vtkImageData> MakeFog(
+  double x, double y, double z, double sx, double sy, double sz)
+{
+  auto fog = vtkSmartPointer<vtkImageData>::New();
+  fog->SetDimensions(4, 4, 4);
+  fog->SetOrigin(x, y, z);
+  fog->SetSpacing(sx / 3.0, sy / 3.0, sz / 3.0);
+  fog->AllocateScalars(VTK_FLOAT, 1);
+  fog->GetPointData()->GetScalars()->Fill(8.0);
+  return fog;
+}
+
 // A dense medium: a slab of high constant density with a noisy top, so that
 // light rays cross optical depths of several tens.
 inline vtkSmartPointer<vtkImageData> MakeDenseMedium(int n)
