@@ -430,6 +430,17 @@ vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetShaderVariant() 
 }
 
 //------------------------------------------------------------------------------
+vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetColorVariant() const
+{
+  vtkTransmittanceShaderSource::Variant variant;
+  if (this->Adapter)
+  {
+    this->Adapter->DeclareColorSwitches(*this->OwnMedium, variant);
+  }
+  return variant;
+}
+
+//------------------------------------------------------------------------------
 vtkTransmittanceShaderSource::Variant vtkTransmittanceFrame::GetMapVariant() const
 {
   using M = vtkTransmittanceMapMath;
@@ -752,7 +763,11 @@ void vtkTransmittanceFrame::SetCameraGuestUniforms(vtkShaderProgram* program, bo
     const Guest& guest = this->Guests[g];
     camera[g] = guest.Camera ? 1.0f : 0.0f;
     const vtkTyndallMediumParameters& parameters = guest.Medium->GetParameters();
-    emission[g] = parameters.HasEmission ? static_cast<float>(parameters.EmissionScale) : 0.0f;
+    // Its table's emission (an emission array's lights the path tracer's
+    // segments instead: tyndallPathArrayEmission()).
+    emission[g] = parameters.HasEmission && !guest.Medium->GetEmissionFromArray()
+      ? static_cast<float>(parameters.EmissionScale)
+      : 0.0f;
     vtkTextureObject* grid = guest.Textures->GetScatteringTexture();
     colored[g] = grid && (guest.Camera || every) ? 1.0f : 0.0f;
     scattering[g] = (grid ? grid : guest.Textures->GetVolumeTexture())->GetTextureUnit();

@@ -186,6 +186,13 @@ public:
   vtkTransmittanceShaderSource::Variant GetShaderVariant() const;
 
   /**
+   * The camera rays' colour switches of this frame's medium alone (its
+   * adapter's DeclareColorSwitches(), on an empty variant): whether it
+   * emits from its table (Emission) or from an array (EmissionArray).
+   */
+  vtkTransmittanceShaderSource::Variant GetColorVariant() const;
+
+  /**
    * GetShaderVariant() with the map lookup of the frame's method compiled
    * in (coefficients, ETM or TFM reconstruction, adaptive bounds), for the
    * shaders that read the maps.

@@ -4,6 +4,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtkTransmittanceEnvironmentTextures.h"
 #include "vtkTransmittanceFrame.h"
 #include "vtkTransmittanceMapMath.h"
@@ -20,6 +21,7 @@
 #include "vtkTyndallSceneReader.h"
 #include "vtkTyndallShading.h"
 #include "vtkTyndallSurfaceLobe.h"
+#include "vtkTyndallTransferTable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +36,38 @@ constexpr double kBoundedBounces = 4.0;
 // The majorant is raised by this factor: the GPU's single-precision
 // extinction may round above the CPU's double bound.
 constexpr double kMajorantMargin = 1.0 + 1e-4;
+
+// Whether a medium's emission array lights the paths (the CPU's
+// vtkTyndallMedium::GetArrayEmission(), a positive EmissionScale).
+bool EmitsFromArray(const vtkTyndallGridMedium& medium)
+{
+  return medium.GetArrayEmission() && medium.GetParameters().EmissionScale > 0.0;
+}
+
+// The guests' emission arrays (a guest without one: its own volume, never
+// read), each value's table coordinate and each guest's EmissionScale (0
+// without an array). Declared by the guests' emission-array variant only.
+void SetGuestEmissionUniforms(const vtkTransmittanceFrame& frame, vtkShaderProgram* program)
+{
+  constexpr int guests = vtkTyndallSceneReader::MaximumNumberOfGuests;
+  int textures[guests] = {};
+  float toTable[guests][2] = {}, scale[guests] = {};
+  const int n = static_cast<int>(std::min<size_t>(frame.Guests.size(), guests));
+  for (int g = 0; g < n; ++g)
+  {
+    const vtkTransmittanceFrame::Guest& guest = frame.Guests[g];
+    vtkTextureObject* emission = guest.Textures->GetEmissionTexture();
+    const bool emits = emission && EmitsFromArray(*guest.Medium);
+    textures[g] = (emits ? emission : guest.Textures->GetVolumeTexture())->GetTextureUnit();
+    const vtkTyndallTransferTable& table = guest.Medium->GetTable();
+    toTable[g][0] = static_cast<float>(table.EmissionTextureScale());
+    toTable[g][1] = static_cast<float>(table.EmissionTextureShift());
+    scale[g] = emits ? static_cast<float>(guest.Medium->GetParameters().EmissionScale) : 0.0f;
+  }
+  program->SetUniform1iv("guestEmission", n, textures);
+  program->SetUniform2fv("guestEmissionToTable", n, toTable);
+  program->SetUniform1fv("guestArrayEmissionScale", n, scale);
+}
 
 // How each medium a path collides in is lit, by its own parameters (the
 // CPU tracer's `lit`; tyndallPathCollisionMedium() draws the medium):
@@ -86,26 +120,6 @@ std::string vtkTransmittancePathTracePass::Refusal(
   {
     return "the isosurface blend mode draws surfaces, not a medium";
   }
-  for (const vtkTransmittanceFrame::Guest& guest : frame.Guests)
-  {
-    // The scattered paths add a guest's table emission (by its own scale),
-    // not yet the emission array's light along their segments.
-    if (guest.Medium->GetEmissionFromArray())
-    {
-      return "another volume's emission array (EmissionArrayName) is not path traced yet";
-    }
-    // (Variant::Emission: the table emission, under which the samples mix
-    // the guests' emission colours; turned on for the paths of a volume
-    // that does not emit, GuestsEmit(), not beside its own emission of
-    // another kind.)
-    if (guest.Medium->GetParameters().HasEmission && !frame.GetShaderVariant().Emission &&
-      medium.GetParameters().HasEmission)
-    {
-      return "another volume's emission is path traced beside this volume's only when this "
-             "one's comes from its transfer functions (not an emission array or a 2-D transfer "
-             "function)";
-    }
-  }
   if (distributed)
   {
     return "several processes draw the picture (a path would scatter between their pieces)";
@@ -124,6 +138,13 @@ bool vtkTransmittancePathTracePass::GuestsEmit(const vtkTransmittanceFrame& fram
   return std::any_of(frame.Guests.begin(), frame.Guests.end(),
     [](const vtkTransmittanceFrame::Guest& g)
     { return g.Medium->GetParameters().HasEmission && !g.Medium->GetEmissionFromArray(); });
+}
+
+//------------------------------------------------------------------------------
+int vtkTransmittancePathTracePass::GuestArrayEmitters(const vtkTransmittanceFrame& frame)
+{
+  return static_cast<int>(std::count_if(frame.Guests.begin(), frame.Guests.end(),
+    [](const vtkTransmittanceFrame::Guest& g) { return EmitsFromArray(*g.Medium); }));
 }
 
 //------------------------------------------------------------------------------
@@ -225,10 +246,10 @@ double vtkTransmittancePathTracePass::PathBound(
   const double collision =
     1.0 + loops * (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
   const double sky = SamplesSky(frame) ? loops * (SkySearchCost(frame) + 1.0 + flight) : 0.0;
-  // An emission array: each segment's stratified points, each ratio tracked.
-  const double emission = frame.GetShaderVariant().EmissionArray
-    ? vtkTyndallMedium::PathEmissionSamples * (1.0 + flight)
-    : 0.0;
+  // Emission arrays (this volume's, the guests'): each segment's stratified
+  // points in each, each ratio tracked.
+  const int emitters = (frame.GetColorVariant().EmissionArray ? 1 : 0) + GuestArrayEmitters(frame);
+  const double emission = emitters * vtkTyndallMedium::PathEmissionSamples * (1.0 + flight);
   const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
   return bounces * (flight + collision + sky + emission);
 }
@@ -300,19 +321,22 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   // image, which the accumulation images (and their running mean) carry.
   const bool chromatic = Chromatic(frame);
   variant.Accumulate = variant.Accumulate || chromatic;
-  // Another volume's table emission beside this one's none: the samples'
-  // emission (each medium's by its own EmissionScale), this volume's 0.
-  if (!frame.Medium->GetParameters().HasEmission && GuestsEmit(frame))
+  // Another volume's table emission: the samples' emission (each medium's
+  // by its own EmissionScale; this volume's by tableEmissionScale, 0 where
+  // its own variant reads no table emission: none, an emission array, a 2-D
+  // transfer function).
+  if (GuestsEmit(frame))
   {
     variant.Emission = true;
   }
   // Guests: the scattered flights sample every one (tyndallEveryGuest), the
-  // camera ray its camera guests.
+  // camera ray its camera guests; their emission arrays light the segments.
   if (!frame.Guests.empty())
   {
     variant.CameraGuests = true;
     variant.GuestColors = std::any_of(frame.Guests.begin(), frame.Guests.end(),
       [](const vtkTransmittanceFrame::Guest& g) { return g.Textures->GetScatteringTexture(); });
+    variant.GuestEmissionArrays = GuestArrayEmitters(frame) > 0;
   }
   // The sky's textures (a failed upload, said once: the paths without the sky).
   variant.PathEnvironment =
@@ -363,9 +387,13 @@ bool vtkTransmittancePathTracePass::Render(const vtkTransmittanceFrame& frame,
   program->SetUniformi("pathTrackedShadows", settings.TrackedShadows ? 1 : 0);
   program->SetUniformi("pathBudget", vtkTransmittanceRayCastPass::IterationBudget);
   program->SetUniformi("pathCollisionCost", static_cast<int>(std::ceil(CollisionCost(frame))));
-  if (variant.EmissionArray)
+  if (variant.EmissionArray || variant.GuestEmissionArrays)
   {
     program->SetUniformi("pathEmissionSamples", vtkTyndallMedium::PathEmissionSamples);
+  }
+  if (variant.GuestEmissionArrays)
+  {
+    SetGuestEmissionUniforms(frame, program);
   }
   if (variant.Shading)
   {

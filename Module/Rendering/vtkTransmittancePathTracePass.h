@@ -10,8 +10,9 @@
  * coloured extinction), next-event estimation towards every light at every
  * collision (the light transmittance read from the frame's maps, or
  * tracked: Settings::TrackedShadows), Henyey-Greenstein scattering, a bounce
- * limit and Russian roulette, an emission array's light along every
- * segment, and the renderer's sky (vtkTyndallEnvironment: drawn from at
+ * limit and Russian roulette, emission arrays' light along every segment
+ * (this volume's, and along the scattered ones the other volumes'), and the
+ * renderer's sky (vtkTyndallEnvironment: drawn from at
  * every collision, its light tracked, and met by the paths that leave; the
  * power heuristic weighs the two): the estimator of vtkVolumetricPathTracer
  * (DELTA_TRACKING, or CLOSED_FORM through detail), its CPU twin. The
@@ -107,9 +108,7 @@ public:
   /**
    * Why the frame cannot be path traced (empty: it can): a projection or
    * isosurface blend mode (neither is a medium: the CPU tracer refuses them
-   * too), another volume's emission array, another volume's emission beside
-   * this one's from an emission array or a 2-D transfer function,
-   * depth peeling (`peeling`), several processes (`distributed`).
+   * too), depth peeling (`peeling`), several processes (`distributed`).
    */
   static std::string Refusal(const vtkTransmittanceFrame& frame, bool peeling, bool distributed);
 
@@ -119,6 +118,12 @@ public:
    * EmissionScale).
    */
   static bool GuestsEmit(const vtkTransmittanceFrame& frame);
+
+  /**
+   * How many other volumes of the frame emit from an array (their light
+   * along the scattered paths' segments, by their own EmissionScale).
+   */
+  static int GuestArrayEmitters(const vtkTransmittanceFrame& frame);
 
   /**
    * Traces a frame of `samples` paths per pixel (NextSamples()) and adds it

@@ -260,9 +260,15 @@ void vtkTransmittanceRayCastPass::SetUniforms(
     const float factors[4] = { float(f[0]), float(f[1]), float(f[2]), float(f[3]) };
     program->SetUniform4f("octaveFactors", factors);
   }
-  program->SetUniformf("emissionScale",
-    medium.GetParameters().HasEmission ? static_cast<float>(medium.GetParameters().EmissionScale)
-                                       : 0.0f);
+  const float emissionScale = medium.GetParameters().HasEmission
+    ? static_cast<float>(medium.GetParameters().EmissionScale)
+    : 0.0f;
+  program->SetUniformf("emissionScale", emissionScale);
+  // The table's emission where this medium's variant reads it (not beside
+  // an emission array, a 2-D function or isosurfaces: the path tracer turns
+  // the variant on for its guests' emission alone).
+  program->SetUniformf(
+    "tableEmissionScale", frame.GetColorVariant().Emission ? emissionScale : 0.0f);
   if (inputs.Occlusion)
   {
     program->SetUniformi("occlusionTexture", inputs.Occlusion->GetTextureUnit());

@@ -153,6 +153,8 @@ std::string vtkTransmittanceShaderSource::GetConstants(const Variant& variant)
   define("OPACITY_COVERS_RADIANCE", variant.OpacityCoversRadiance ? 1 : 0);
   define("CAMERA_GUESTS", variant.Guests > 0 && variant.CameraGuests ? 1 : 0);
   define("GUEST_COLORS", variant.Guests > 0 && variant.CameraGuests && variant.GuestColors ? 1 : 0);
+  define("GUEST_EMISSION_ARRAY",
+    variant.Guests > 0 && variant.CameraGuests && variant.GuestEmissionArrays ? 1 : 0);
   os << "#define TYNDALL_FOR_GUESTS(X)";
   for (int g = 0; g < variant.Guests; ++g)
   {

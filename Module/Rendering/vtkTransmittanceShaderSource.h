@@ -195,6 +195,11 @@ public:
     bool CameraGuests = false;
     /// Some camera guest is a coloured particle cloud (its albedo from its scattering grid).
     bool GuestColors = false;
+    /**
+     * Some guest emits from an array (PATH_TRACE: its light along the
+     * scattered paths' segments; such a guest is never a camera guest).
+     */
+    bool GuestEmissionArrays = false;
     /// Extinction per channel: light and view transmittances per channel.
     bool Chromatic = false;
     /// The projection blend mode (PROJECTION; vtkTyndallProjection::Modes).

@@ -425,6 +425,7 @@ public:
       textures.push_back(guest->GetBrickTexture()); // null but for bricks
       textures.push_back(guest->GetTransferTexture());
       textures.push_back(guest->GetScatteringTexture()); // null but for a coloured cloud
+      textures.push_back(guest->GetEmissionTexture());   // null but for an emission array
     }
     return vtkTransmittanceScopedTextures(textures);
   }

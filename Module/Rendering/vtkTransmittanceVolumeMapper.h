@@ -409,7 +409,8 @@ public:
    * draws, scattered paths through every one; a collision is one medium's,
    * drawn with its share of the extinction, and lit by that volume's own
    * scattering model, phase function, LightScale, ambient light and
-   * EmissionScale.
+   * EmissionScale. Another volume's emission array lights the scattered
+   * paths along their segments, beside this volume's emission of any kind.
    *
    * A plain vtkVolumeProperty with Shade on (a shaded CT) is traced as the
    * CPU tracer traces it: each of its collisions scatters as VTK's shaded surface
@@ -424,12 +425,9 @@ public:
    * its surface term).
    *
    * Not path traced yet, each said once in a warning, the map-based frame
-   * drawn instead: VTK's depth peeling for volumes, several processes,
-   * another volume's emission array, or its emission beside this volume's
-   * from an emission array or a 2-D transfer function; and
-   * never (they are not
-   * media; the CPU tracer refuses them too): the projection and isosurface
-   * blend modes.
+   * drawn instead: VTK's depth peeling for volumes, several processes; and
+   * never (they are not media; the CPU tracer refuses them too): the
+   * projection and isosurface blend modes.
    */
   vtkSetMacro(PathTracing, bool);
   vtkGetMacro(PathTracing, bool);

@@ -53,17 +53,22 @@
 //
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
 //   [--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail]
-//   [--scene 0|1|2] [--chromatic] [--fog] [--help]
+//   [--scene 0|1|2] [--chromatic] [--fog] [--hot-fog] [--help]
 // --scene N measures one scene: 0 the cloud, 1 the dense medium, 2 the shaded CT.
 // --fog puts each scene in a fog lit its own way (the path tracing test's):
 // another volume around and behind the medium, a guest whose collisions the
 // scattered paths draw and light by its own parameters (g -0.6, LightScale
 // 3, ambient 0.3); the window's picture is then both layers, and the CPU
 // tracer's picture the medium's layer alone (its PSNR not comparable).
+// --hot-fog is --fog glowing from an emission array (a "temperature" that
+// rises from 1000 to 2000 across it, through a colour function,
+// EmissionScale 1.5): its light along the medium's scattered paths'
+// segments, four stratified points each, each ratio tracked.
 // --chromatic gives the media a coloured extinction (red 0.25, green 0.6 of
 // blue's, the tests'): spectral tracking (not the shaded CT's plain property).
 // --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp, a light
 // cache of 32 texels a side: every render works, never a timing or a PSNR.
+#include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkCullerCollection.h"
@@ -115,6 +120,7 @@ struct Options
   int Scene = -1; // --scene: 0 the cloud, 1 the dense medium, 2 the shaded CT; -1 every one
   bool Chromatic = false;
   bool Fog = false;
+  bool HotFog = false; // the fog glows from an emission array
 };
 
 // The --sun sky: an equirectangular 128 x 64 image, the --sky gradient with a
@@ -222,6 +228,10 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       o.Fog = true;
     }
+    else if (a == "--hot-fog")
+    {
+      o.Fog = o.HotFog = true;
+    }
     else
     {
       ok = false;
@@ -230,7 +240,7 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
                   "[--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail] "
-                  "[--scene 0|1|2] [--chromatic] [--fog] [--help]\n");
+                  "[--scene 0|1|2] [--chromatic] [--fog] [--hot-fog] [--help]\n");
       return false;
     }
   }
@@ -248,9 +258,20 @@ struct Scene : tyndall_test::PathScene
     tyndall_test::MakeCloudProperty(0.05);
   vtkNew<vtkVolume> Fog;
 
-  void AddFog()
+  void AddFog(bool hot)
   {
-    this->FogMapper->SetInputData(tyndall_test::MakeFog(-1.0, -1.0, -1.0, 2.0, 2.0, 2.0));
+    vtkSmartPointer<vtkImageData> fog = tyndall_test::MakeFog(-1.0, -1.0, -1.0, 2.0, 2.0, 2.0);
+    if (hot)
+    {
+      tyndall_test::AddTemperature(fog);
+      vtkNew<vtkColorTransferFunction> color;
+      color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
+      color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
+      this->FogProperty->SetEmissionColor(color);
+      this->FogProperty->SetEmissionArrayName("temperature");
+      this->FogProperty->SetEmissionScale(1.5);
+    }
+    this->FogMapper->SetInputData(fog);
     this->FogMapper->JitterOff();
     this->FogProperty->SetScatteringAnisotropy(-0.6);
     this->FogProperty->SetLightScale(3.0);
@@ -295,7 +316,7 @@ struct Scene : tyndall_test::PathScene
     }
     if (o.Fog)
     {
-      this->AddFog();
+      this->AddFog(o.HotFog);
     }
     display->Attach(this->Window);
   }
@@ -327,7 +348,8 @@ bool Run(Scene& s, const Options& o)
 {
   std::printf("%s, %d x %d, up to %d bounces%s%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
     o.Sun ? ", under the sun sky" : (o.Sky ? ", under the gradient sky" : ""),
-    o.Fog ? ", in a fog lit its own way" : "");
+    o.HotFog ? ", in a fog lit its own way that glows from an array"
+             : (o.Fog ? ", in a fog lit its own way" : ""));
   // 1. the converged picture (its own random numbers).
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;

@@ -10,10 +10,20 @@
 //    and radiance > 0 in the CPU reference);
 // 4. a missing array is an error for both renderers; the path tracer
 //    renders the emission array (TestVolumetricPathTracerScenes holds it to
-//    the reference).
+//    the reference);
+// 5. another volume's emission array lights this one's paths: a cloud's only
+//    light a hot fog out of the camera's view (the mapper's path tracing,
+//    16 spp at 16^2, about 1 s; TestTransmittanceMapperPathTrace holds it
+//    to the CPU tracer), traced without a warning, and black without the
+//    fog's emission (run under the sanitizers, unlike that test).
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
+#include "vtkCullerCollection.h"
 #include "vtkDataArray.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -26,6 +36,7 @@
 
 #include "TyndallTestCheck.h"
 #include "TyndallTestImage.h"
+#include "TyndallTestPathScene.h"
 #include "TyndallTestScene.h"
 
 #include <cmath>
@@ -35,6 +46,63 @@
 namespace
 {
 using tyndall_test::Check;
+
+// Counts the warnings of the object it observes.
+class WarningCounter : public vtkCommand
+{
+public:
+  static WarningCounter* New() { return new WarningCounter; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
+
+// 5. The sum of the cloud's path-traced picture (8-bit levels, all channels)
+// lit by nothing but a hot fog out of view of EmissionScale `scale`; -1 when
+// the paths are not traced or a warning is given.
+long LitByHotFog(double scale)
+{
+  tyndall_test::PathScene scene(tyndall_test::MakeCloud(16), 0.5, 16);
+  scene.Property->SetAmbientIntensity(0.0);
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  // (A renderer without lights would make a headlight.)
+  vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0))->SetIntensity(0.0);
+  vtkSmartPointer<vtkParticipatingMediumProperty> hot = tyndall_test::MakeCloudProperty(0.3);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
+  color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
+  hot->SetEmissionColor(color);
+  hot->SetEmissionArrayName("temperature");
+  hot->SetEmissionScale(scale);
+  hot->SetAmbientIntensity(0.0);
+  vtkNew<vtkTransmittanceVolumeMapper> mapper;
+  mapper->SetInputData(tyndall_test::MakeHotFog(1.6));
+  mapper->JitterOff();
+  vtkNew<vtkVolume> fog;
+  fog->SetMapper(mapper);
+  fog->SetProperty(hot);
+  scene.Renderer->AddVolume(fog);
+  vtkFrustumCoverageCuller::SafeDownCast(scene.Renderer->GetCullers()->GetLastItem())
+    ->SetSortingStyleToBackToFront();
+  vtkNew<WarningCounter> warnings;
+  scene.Mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+  scene.Mapper->SetPathTraceSamplesPerFrame(16);
+  if (scene.Trace(16) < 16 || warnings->Count > 0)
+  {
+    return -1;
+  }
+  vtkSmartPointer<vtkImageData> picture = scene.Picture();
+  const auto* pixels = static_cast<const unsigned char*>(picture->GetScalarPointer());
+  const int components = picture->GetNumberOfScalarComponents();
+  long sum = 0;
+  for (vtkIdType p = 0; p < picture->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      sum += pixels[p * components + c];
+    }
+  }
+  return sum;
+}
 
 double Channel(vtkImageData* image, int c)
 {
@@ -145,5 +213,13 @@ int TestTransmittanceMapperFire(int, char*[])
   errors->Clear();
   window->Render();
   Check(errors->GetError(), "a missing emission array is an error (GPU)");
+
+  // 5. Another volume's emission array in this one's paths.
+  const long lit = LitByHotFog(1.5);
+  const long unlit = LitByHotFog(0.0);
+  std::cout << "A cloud lit by a hot fog out of view, path traced: " << lit
+            << " levels in all; without the fog's emission " << unlit << "\n";
+  Check(lit > 100 && unlit == 0,
+    "another volume's emission array lights this one's paths (traced without a warning)");
   return tyndall_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

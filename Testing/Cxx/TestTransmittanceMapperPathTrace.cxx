@@ -22,9 +22,18 @@
 //    lobe only; z 0.56; every collision the CT's, z -48; the lights 2 pi
 //    brighter for the fog too, z 169; the sky after the fog's collisions,
 //    z 14), a medium's Shade in a black fog (its surface term at its own
-//    collisions alone; z 0.41; at every collision, z 9.6) and the cloud in
+//    collisions alone; z 0.41; at every collision, z 9.6), the cloud in
 //    a glowing fog (the fog's emission, EmissionScale 2, this volume none;
-//    z below 2.5; the fog's emission by a scale of 1, z -16);
+//    z below 2.5; the fog's emission by a scale of 1, z -16), and other
+//    volumes out of view at 256 spp, every pixel compared: a fog that
+//    scatters backwards (z -1.2; its anisotropy as the cloud's, z -7.6), a
+//    cloud glowing from its table lit by a hot fog's emission array (z
+//    -1.9; the fog's array left out, z -21; the transmittance from where
+//    the segment enters its box, z 15; the cloud's table emission left out,
+//    z -159) and fire from an array between a glowing and a hot fog (z
+//    -0.90; the hot fog's array left out, z -6.2; its table read at its
+//    collisions, z 22; the fire's table beside its array, z 250; the
+//    glowing fog's emission left out, z -20);
 // 3. the mode: the frame after a change is the map-based one (identical to
 //    the picture with path tracing off, 0 samples), still frames add
 //    samples (1, 2, 4, then PathTraceSamplesPerFrame, the last trimmed),
@@ -422,34 +431,18 @@ void InFogAgainstCpu(const std::function<void(Scene&)>& shade, bool black,
   Check(selected > 100 && worst < 4.5, name + ": the GPU's mean is the CPU's within the noise");
 }
 
-// 2. (continued) a guest's phase function: the cloud lit from the side
-// (the sun beyond it, from -x) beside a fog out of the camera's view (a
-// block at x in [1.6, 3.2], not drawn: the picture is the cloud's layer
-// alone, every pixel compared) that scatters backwards (g -0.6 against the
-// cloud's 0.4; its other settings the cloud's). The sun's light that the
-// fog sends back into the cloud is the fog's phase function at about 180
-// degrees (0.80 for g -0.6, 0.024 for 0.4). 256 spp: worst z -1.2; the
-// fog's anisotropy taken as the cloud's on the GPU: z -7.6 (the fog in
-// view, behind the cloud, hid it: z -3.8 at best). About 2 s.
-void OutOfViewFogAgainstCpu()
+// 2. (continued) other volumes out of the camera's view beside this one
+// (their boxes at x in [1.6, 3.2] or [-3.2, -1.6], not drawn: the picture
+// is this volume's layer alone, every pixel compared), 256 spp, about 2 s
+// each. `setUp` sets the scene up (this volume's data, its property, the
+// lights) and adds the other volumes (AddOutOfView()).
+void OutOfViewAgainstCpu(
+  const std::string& name, vtkImageData* data, const std::function<void(Scene&)>& setUp)
 {
   const int size = 24, samples = 256;
-  Scene scene(tyndall_test::MakeCloud(24), 0.5, size);
-  scene.Renderer->RemoveAllLights();
-  scene.Renderer->AddLight(tyndall_test::MakeSun(-1.0, 0.1, 0.0, 1.5));
-  vtkNew<vtkTransmittanceVolumeMapper> fogMapper;
-  fogMapper->SetInputData(tyndall_test::MakeFog(1.6, -1.0, -1.0, 1.6, 2.0, 2.0));
-  fogMapper->JitterOff();
-  vtkSmartPointer<vtkParticipatingMediumProperty> fogProperty =
-    tyndall_test::MakeCloudProperty(0.3);
-  fogProperty->SetScatteringAnisotropy(-0.6);
-  fogProperty->SetAmbientIntensity(scene.Property->GetAmbientIntensity());
-  vtkNew<vtkVolume> fogVolume;
-  fogVolume->SetMapper(fogMapper);
-  fogVolume->SetProperty(fogProperty);
-  scene.Renderer->AddVolume(fogVolume);
+  Scene scene(data, 0.5, size);
+  setUp(scene);
   tyndall_test::BothTraced both;
-  const std::string name = "A fog out of view scattering backwards";
   if (!both.Trace(scene, samples, size, name))
   {
     return;
@@ -459,6 +452,103 @@ void OutOfViewFogAgainstCpu()
       .WorstZ(
         name + " (" + std::to_string(size) + "^2), " + std::to_string(samples) + " spp", false);
   Check(worst < 4.5, name + ": the GPU's mean is the CPU's within the noise");
+}
+
+// Adds a fog out of view at x (tyndall_test::MakeHotFog()) of property `property`.
+void AddOutOfView(Scene& scene, double x, vtkVolumeProperty* property)
+{
+  vtkNew<vtkTransmittanceVolumeMapper> mapper;
+  mapper->SetInputData(tyndall_test::MakeHotFog(x));
+  mapper->JitterOff();
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  scene.Renderer->AddVolume(volume);
+}
+
+// No light but the volumes' emission: the scene's light off, no ambient
+// light, a black background.
+void Unlit(Scene& scene)
+{
+  scene.Property->SetAmbientIntensity(0.0);
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0))->SetIntensity(0.0);
+}
+
+// A fog's property that glows: from its table (EmissionScale 2), or from its
+// "temperature" array through a colour function (EmissionScale 1.5); no
+// ambient light.
+vtkSmartPointer<vtkParticipatingMediumProperty> GlowingFog(bool array)
+{
+  vtkSmartPointer<vtkParticipatingMediumProperty> property = tyndall_test::MakeCloudProperty(0.3);
+  vtkNew<vtkColorTransferFunction> color;
+  if (array)
+  {
+    color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
+    color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
+    property->SetEmissionArrayName("temperature");
+  }
+  else
+  {
+    color->AddRGBPoint(0.0, 0.5, 0.25, 0.1);
+  }
+  property->SetEmissionColor(color);
+  property->SetEmissionScale(array ? 1.5 : 2.0);
+  property->SetAmbientIntensity(0.0);
+  return property;
+}
+
+// Other volumes out of view: a guest's phase function, a guest's emission
+// array, a guest's table emission beside this volume's emission array.
+void OutOfViewCases()
+{
+  // A guest's phase function: the cloud lit from the side (the sun beyond
+  // it, from -x) beside a fog that scatters backwards (g -0.6 against the
+  // cloud's 0.4; its other settings the cloud's). The sun's light that the
+  // fog sends back into the cloud is the fog's phase function at about 180
+  // degrees (0.80 for g -0.6, 0.024 for 0.4). Worst z -1.2; the fog's
+  // anisotropy taken as the cloud's on the GPU: z -7.6 (the fog in view,
+  // behind the cloud, hid it: z -3.8 at best).
+  OutOfViewAgainstCpu("A fog out of view scattering backwards", tyndall_test::MakeCloud(24),
+    [](Scene& scene)
+    {
+      scene.Renderer->RemoveAllLights();
+      scene.Renderer->AddLight(tyndall_test::MakeSun(-1.0, 0.1, 0.0, 1.5));
+      vtkSmartPointer<vtkParticipatingMediumProperty> fog = tyndall_test::MakeCloudProperty(0.3);
+      fog->SetScatteringAnisotropy(-0.6);
+      fog->SetAmbientIntensity(scene.Property->GetAmbientIntensity());
+      AddOutOfView(scene, 1.6, fog);
+    });
+  // A hot fog, the cloud's only light but its own table emission (bluish,
+  // EmissionScale 0.5): the fog's emission array along the cloud's
+  // scattered paths' segments.
+  OutOfViewAgainstCpu("A glowing cloud lit by a hot fog out of view", tyndall_test::MakeCloud(24),
+    [](Scene& scene)
+    {
+      Unlit(scene);
+      vtkNew<vtkColorTransferFunction> glow;
+      glow->AddRGBPoint(0.0, 0.1, 0.2, 0.4);
+      scene.Property->SetEmissionColor(glow);
+      scene.Property->SetEmissionScale(0.5);
+      AddOutOfView(scene, 1.6, GlowingFog(true));
+    });
+  // Fire from an emission array through a colour function (its table's
+  // emission row the array's: none from its table) between a glowing fog
+  // (its table's emission at the fire's scattered paths' collisions in it)
+  // and a hot fog (its array's along their segments, none from its table).
+  OutOfViewAgainstCpu("Fire between a glowing and a hot fog", tyndall_test::MakeFire(24),
+    [](Scene& scene)
+    {
+      Unlit(scene);
+      vtkNew<vtkColorTransferFunction> color;
+      color->AddRGBPoint(400.0, 0.3, 0.15, 0.05);
+      color->AddRGBPoint(2300.0, 1.0, 0.6, 0.25);
+      scene.Property->SetEmissionColor(color);
+      scene.Property->SetEmissionArrayName("temperature");
+      scene.Property->SetEmissionScale(1.5);
+      AddOutOfView(scene, 1.6, GlowingFog(false));
+      AddOutOfView(scene, -3.2, GlowingFog(true));
+    });
 }
 
 // 3. the mode's frames.
@@ -704,7 +794,7 @@ int TestTransmittanceMapperPathTrace(int, char*[])
       fog->SetScatteringModelToEmissionAbsorption();
     },
     "An emission-absorption fog");
-  OutOfViewFogAgainstCpu();
+  OutOfViewCases();
   // A shaded CT: a plain property with Shade on over the dense medium's
   // ball (its collisions scatter as VTK's shaded surfaces: vtkTyndallSurfaceLobe).
   const auto shadedCT = [](Scene& scene)

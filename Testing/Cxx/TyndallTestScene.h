@@ -73,6 +73,32 @@ inline vtkSmartPointer<vtkImageData> MakeFog(
   return fog;
 }
 
+// Adds to a grid a "temperature" point array that rises from 1000 to 2000
+// along its x index (an emission array: EmissionArrayName).
+inline void AddTemperature(vtkImageData* grid)
+{
+  int dims[3];
+  grid->GetDimensions(dims);
+  vtkNew<vtkFloatArray> temperature;
+  temperature->SetName("temperature");
+  temperature->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    const double x = dims[0] > 1 ? static_cast<double>(i % dims[0]) / (dims[0] - 1) : 0.0;
+    temperature->SetValue(i, static_cast<float>(1000.0 + 1000.0 * x));
+  }
+  grid->GetPointData()->AddArray(temperature);
+}
+
+// A hot fog out of the test camera's view: MakeFog() over x in [x, x + 1.6],
+// y and z in [-1, 1], with AddTemperature()'s array.
+inline vtkSmartPointer<vtkImageData> MakeHotFog(double x)
+{
+  vtkSmartPointer<vtkImageData> fog = MakeFog(x, -1.0, -1.0, 1.6, 2.0, 2.0);
+  AddTemperature(fog);
+  return fog;
+}
+
 // A dense medium: a slab of high constant density with a noisy top, so that
 // light rays cross optical depths of several tens.
 inline vtkSmartPointer<vtkImageData> MakeDenseMedium(int n)

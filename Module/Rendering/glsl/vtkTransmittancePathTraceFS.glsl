@@ -8,10 +8,11 @@
 // towards every light at every collision (the light transmittance from the
 // frame's maps, lightTransmittance(), or tracked: pathTrackedShadows,
 // tyndallPathTransmittance()), Henyey-Greenstein scattering, a bounce limit
-// and Russian roulette; an emission array's light along every segment
-// (TYNDALL_EMISSION_ARRAY); with TYNDALL_PATH_ENVIRONMENT the renderer's
-// sky, sampled at every collision and met by the paths that leave
-// (multiple importance sampling, the power heuristic); a coloured
+// and Russian roulette; emission arrays' light along every segment (this
+// volume's, TYNDALL_EMISSION_ARRAY; the guests', TYNDALL_GUEST_EMISSION_ARRAY);
+// with TYNDALL_PATH_ENVIRONMENT the renderer's sky, sampled at every
+// collision and met by the paths that leave (multiple importance sampling,
+// the power heuristic); a coloured
 // extinction by spectral tracking (TYNDALL_CHROMATIC); with guests (other
 // volumes) the camera ray's flight through the camera media, scattered
 // flights through every medium (TYNDALL_CAMERA_GUESTS: tyndallEveryGuest)
@@ -409,28 +410,73 @@ vec3 tyndallPathInScattering(vec3 x, vec3 w, TyndallLighting lit)
   return sum;
 }
 
-#if TYNDALL_EMISSION_ARRAY
+#if TYNDALL_EMISSION_ARRAY || TYNDALL_GUEST_EMISSION_ARRAY
 uniform int pathEmissionSamples; // stratified points per segment (vtkTyndallMedium::PathEmissionSamples)
 
-// An emission array's light along the path's segment o + t w, t in (t0,
-// t1), per unit of throughput: its length over n times the sum over n
-// stratified points of the emission there (per unit length, scaled) and
-// the transmittance to it from the segment's start (tyndallPathTransmittance();
-// the CPU tracer's AddArrayEmission()): unbiased, and independent of where
-// the flight collides.
-vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
+#if TYNDALL_GUEST_EMISSION_ARRAY
+// The guests' emission arrays (a guest without one: its own volume, never
+// read), each value's table coordinate, and each guest's EmissionScale (0
+// without an array: its emission, if any, is its table's, at collisions).
+uniform sampler3D guestEmission[TYNDALL_GUESTS];
+uniform vec2 guestEmissionToTable[TYNDALL_GUESTS];
+uniform float guestArrayEmissionScale[TYNDALL_GUESTS];
+
+// Guest g's array emission at x (per unit length, scaled): its array's value
+// through the emission row of its table; 0 outside its box or where the
+// flight does not sample it (as tyndallGuestCameraSample()).
+vec3 tyndallGuestArrayEmission(sampler3D emission, TYNDALL_GUEST_BRICKS_PARAMETER sampler2D table,
+  int g, vec3 x)
 {
-  // The part of the segment in this volume's box (with guests a scattered
-  // segment runs to the maps' box): the array's texture clamps to its edge.
-  vec2 own = tyndallIntersectBox(worldToVolume, o, w);
-  t0 = max(t0, own.x);
-  t1 = min(t1, own.y);
-  if (!(t0 < t1))
+  vec3 q = (guestWorldToBox[g] * vec4(x, 1.0)).xyz;
+  if ((guestCamera[g] == 0.0 && !tyndallEveryGuest) || any(lessThan(q, vec3(0.0))) ||
+    any(greaterThan(q, vec3(1.0))))
+  {
+    return vec3(0.0);
+  }
+  float value = texture(emission, tyndallGuestTexel(TYNDALL_GUEST_BRICKS_ARGUMENT g, q)).r;
+  vec2 toTable = guestEmissionToTable[g];
+  return guestArrayEmissionScale[g] *
+    texture(table, vec2(value * toTable.x + toTable.y, TYNDALL_TABLE_EMISSION_ROW)).rgb;
+}
+
+// Samplers are indexed by constants only (GLSL 1.50): one statement per guest.
+#define TYNDALL_GUEST_ARRAY_EMISSION(g) if (m == g) { e = tyndallGuestArrayEmission(guestEmission[g], TYNDALL_GUEST_BRICKS(g) guestTransfer[g], g, x); }
+#endif
+
+// Medium m's array emission at x (per unit length, scaled): this volume's
+// (m -1) or guest m's.
+vec3 tyndallPathEmissionAt(int m, vec3 x)
+{
+  vec3 e = vec3(0.0);
+#if TYNDALL_EMISSION_ARRAY
+  if (m < 0)
+  {
+    e = emissionScale * tyndallArrayEmission(x);
+  }
+#endif
+#if TYNDALL_GUEST_EMISSION_ARRAY
+  TYNDALL_FOR_GUESTS(TYNDALL_GUEST_ARRAY_EMISSION)
+#endif
+  return e;
+}
+
+// Medium m's array emission along the path's segment o + t w, t in (t0,
+// t1), per unit of throughput, where the segment crosses its box (`toBox`:
+// world to the box as [0,1]^3; the array's texture clamps to its edge): the
+// length of that part over n times the sum over n stratified points of the
+// emission there and the transmittance to it from the segment's start
+// (through every medium the flight crosses: tyndallPathTransmittance()).
+vec3 tyndallPathMediumEmission(int m, mat4 toBox, vec3 o, vec3 w, float t0, float t1)
+{
+  vec2 box = tyndallIntersectBox(toBox, o, w);
+  float a = max(t0, box.x);
+  float b = min(t1, box.y);
+  if (!(a < b))
   {
     return vec3(0.0);
   }
   vec3 start = o + t0 * w;
-  float length = (t1 - t0) / float(pathEmissionSamples);
+  float length = (b - a) / float(pathEmissionSamples);
   vec3 sum = vec3(0.0);
   for (int i = 0; i < pathEmissionSamples; ++i)
   {
@@ -438,14 +484,35 @@ vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
     {
       break;
     }
-    float t = (float(i) + tyndallRandom()) * length;
-    vec3 e = tyndallArrayEmission(start + t * w);
+    float t = a - t0 + (float(i) + tyndallRandom()) * length;
+    vec3 e = tyndallPathEmissionAt(m, start + t * w);
     if (any(greaterThan(e, vec3(0.0))))
     {
       sum += e * tyndallPathTransmittance(start, w, t, true);
     }
   }
-  return emissionScale * length * sum;
+  return length * sum;
+}
+
+// (A guest the flight does not sample, the camera ray's but for camera
+// guests, is skipped: its points would all be 0.)
+#define TYNDALL_GUEST_SEGMENT_EMISSION(g) if (guestArrayEmissionScale[g] > 0.0 && (tyndallEveryGuest || guestCamera[g] > 0.0)) { sum += tyndallPathMediumEmission(g, guestWorldToBox[g], o, w, t0, t1); }
+
+// The emission arrays' light along the path's segment o + t w, t in (t0,
+// t1), per unit of throughput: each medium's with one (this volume's, the
+// guests' the flight samples) by its own stratified points
+// (tyndallPathMediumEmission(); the CPU tracer's AddArrayEmission()):
+// unbiased, and independent of where the flight collides.
+vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)
+{
+  vec3 sum = vec3(0.0);
+#if TYNDALL_EMISSION_ARRAY
+  sum += tyndallPathMediumEmission(-1, worldToVolume, o, w, t0, t1);
+#endif
+#if TYNDALL_GUEST_EMISSION_ARRAY
+  TYNDALL_FOR_GUESTS(TYNDALL_GUEST_SEGMENT_EMISSION)
+#endif
+  return sum;
 }
 #else
 vec3 tyndallPathArrayEmission(vec3 o, vec3 w, float t0, float t1)

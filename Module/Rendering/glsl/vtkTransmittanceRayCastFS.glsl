@@ -92,7 +92,8 @@ uniform float stepLength;
 uniform int lightSampleCount;
 uniform float anisotropy;
 uniform vec3 ambient; // vtkTyndallSceneReader::GetMapAmbient()
-uniform float emissionScale;
+uniform float emissionScale;      // EmissionScale (0 without emission): the table's and an array's
+uniform float tableEmissionScale; // emissionScale where this medium's table emits, else 0
 
 // The lights' geometry (numberOfLights, tyndallLightAt()): vtkTransmittanceLightsFS.glsl.
 uniform vec3 lightIrradiance[TYNDALL_MAX_LIGHTS];   // LightScale * intensity * colour
@@ -509,9 +510,9 @@ uniform float guestColored[TYNDALL_GUESTS];
 #endif
 
 #if TYNDALL_EMISSION
-// Each guest's emission scale (its EmissionScale; 0 when it does not emit):
-// its table's emission colour times it is its emission, as this medium's
-// times emissionScale.
+// Each guest's table emission scale (its EmissionScale; 0 when it does not
+// emit, or emits from an array): its table's emission colour times it is
+// its emission, as this medium's times tableEmissionScale.
 uniform float guestEmissionScale[TYNDALL_GUESTS];
 #endif
 
@@ -612,8 +613,8 @@ float tyndallCameraMedium(vec3 x, out vec3 color, out vec3 emission, out vec4 ow
 #if TYNDALL_EMISSION
   if (own.a > 0.0)
   {
-    ownEmission = emissionScale * tyndallEmissionColor(tableCoord);
-    ownTotal = own.a * emissionScale * tyndallEmissionColor(tableCoord);
+    ownEmission = tableEmissionScale * tyndallEmissionColor(tableCoord);
+    ownTotal = own.a * tableEmissionScale * tyndallEmissionColor(tableCoord);
   }
 #endif
   // The guests' sums apart (the mixture's less this medium's part would
@@ -692,7 +693,7 @@ vec4 tyndallSampledRay(vec3 p0, vec3 w, float tNear, float tFar)
     {
       source *= inScattering(x, w, color);
 #if TYNDALL_EMISSION
-      source += emissionScale * tyndallEmissionColor(tableCoord);
+      source += tableEmissionScale * tyndallEmissionColor(tableCoord);
 #endif
     }
     radiance += source;
@@ -903,7 +904,7 @@ vec3 tyndallSampleEmission(TyndallCameraSample s)
 #if TYNDALL_EMISSION && TYNDALL_CAMERA_GUESTS
   return s.Emission;
 #elif TYNDALL_EMISSION
-  return emissionScale * tyndallEmissionColor(s.TableCoord);
+  return tableEmissionScale * tyndallEmissionColor(s.TableCoord);
 #else
   return vec3(0.0);
 #endif
