@@ -419,7 +419,11 @@ private:
   // Adds beta times an estimate of the emission from arrays along the ray's
   // parts [Low, High] in the media that have one: per unit length, seen
   // through the media the ray crosses (stratified samples of the segment,
-  // the transmittance to each ratio tracked, or exact in closed form).
+  // the transmittance to each ratio tracked, or exact in closed form). The
+  // samples ascend: the transmittance to each is the one before's times
+  // that of the part between them (independent estimates, so their
+  // product's mean is the transmittance), and each medium's part of the
+  // segment is tracked once, not once per sample.
   void AddArrayEmission(const Ray& ray, const double beta[3], Random& rng, Timing& timing,
     const PathState& path, double L[3]) const
   {
@@ -433,7 +437,9 @@ private:
       }
       const int n = vtkTyndallMedium::PathEmissionSamples;
       const double length = (ray.High[k] - ray.Low[k]) / n;
-      for (int i = 0; i < n; ++i)
+      double T[3] = { 1.0, 1.0, 1.0 }; // from the ray's start to `from`
+      double from = ray.T0;
+      for (int i = 0; i < n && (T[0] > 0.0 || T[1] > 0.0 || T[2] > 0.0); ++i)
       {
         const double t = ray.Low[k] + (i + rng.Uniform()) * length;
         double p[3], e[3];
@@ -443,8 +449,7 @@ private:
         {
           continue;
         }
-        // The transmittance from the ray's start to t through the media it crosses.
-        double T[3] = { 1.0, 1.0, 1.0 };
+        // Times the transmittance from `from` to t through the media the ray crosses.
         for (size_t m = 0; m < s.Media.size(); ++m)
         {
           double Tm[3];
@@ -453,12 +458,13 @@ private:
             continue;
           }
           this->MediumTransmittance(
-            static_cast<int>(m), ray.Local.O[m], ray.Local.D[m], ray.T0, t, rng, timing, path, Tm);
+            static_cast<int>(m), ray.Local.O[m], ray.Local.D[m], from, t, rng, timing, path, Tm);
           for (int c = 0; c < 3; ++c)
           {
             T[c] *= Tm[c];
           }
         }
+        from = t;
         for (int c = 0; c < 3; ++c)
         {
           L[c] += beta[c] * length * T[c] * medium.GetParameters().EmissionScale * e[c];

@@ -247,9 +247,10 @@ double vtkTransmittancePathTracePass::PathBound(
     1.0 + loops * (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
   const double sky = SamplesSky(frame) ? loops * (SkySearchCost(frame) + 1.0 + flight) : 0.0;
   // Emission arrays (this volume's, the guests'): each segment's stratified
-  // points in each, each ratio tracked.
+  // points in each, the segment ratio tracked once from point to point (a
+  // walk's start and end per point).
   const int emitters = (frame.GetColorVariant().EmissionArray ? 1 : 0) + GuestArrayEmitters(frame);
-  const double emission = emitters * vtkTyndallMedium::PathEmissionSamples * (1.0 + flight);
+  const double emission = emitters * (4.0 * vtkTyndallMedium::PathEmissionSamples + flight);
   const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
   return bounces * (flight + collision + sky + emission);
 }

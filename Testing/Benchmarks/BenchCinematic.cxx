@@ -53,7 +53,7 @@
 //
 // Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S]
 //   [--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail]
-//   [--scene 0|1|2] [--chromatic] [--fog] [--hot-fog] [--help]
+//   [--scene 0|1|2] [--chromatic] [--fog] [--hot-fog] [--fire] [--help]
 // --scene N measures one scene: 0 the cloud, 1 the dense medium, 2 the shaded CT.
 // --fog puts each scene in a fog lit its own way (the path tracing test's):
 // another volume around and behind the medium, a guest whose collisions the
@@ -64,11 +64,13 @@
 // rises from 1000 to 2000 across it, through a colour function,
 // EmissionScale 1.5): its light along the medium's scattered paths'
 // segments, four stratified points each, each ratio tracked.
+// --fire makes the media glow from such an array (the same colours, over
+// each grid's x; not the shaded CT's plain property): their own emission
+// along every segment of their paths.
 // --chromatic gives the media a coloured extinction (red 0.25, green 0.6 of
 // blue's, the tests'): spectral tracking (not the shaded CT's plain property).
 // --quick (what ctest runs): 24 x 24, reference 64 spp, CPU 16 spp, a light
 // cache of 32 texels a side: every render works, never a timing or a PSNR.
-#include "vtkColorTransferFunction.h"
 #include "vtkCosineNoise.h"
 #include "vtkCosineNoiseSource.h"
 #include "vtkCullerCollection.h"
@@ -121,6 +123,7 @@ struct Options
   bool Chromatic = false;
   bool Fog = false;
   bool HotFog = false; // the fog glows from an emission array
+  bool Fire = false;   // the media glow from an emission array
 };
 
 // The --sun sky: an equirectangular 128 x 64 image, the --sky gradient with a
@@ -232,6 +235,10 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       o.Fog = o.HotFog = true;
     }
+    else if (a == "--fire")
+    {
+      o.Fire = true;
+    }
     else
     {
       ok = false;
@@ -240,7 +247,7 @@ bool Parse(int argc, char* argv[], Options& o)
     {
       std::printf("Usage: BenchCinematic [--quick] [--size W] [--reference S] [--cpu-spp S] "
                   "[--bounces B] [--frame-spp K] [--sky] [--sun] [--sky-lights N] [--detail] "
-                  "[--scene 0|1|2] [--chromatic] [--fog] [--hot-fog] [--help]\n");
+                  "[--scene 0|1|2] [--chromatic] [--fog] [--hot-fog] [--fire] [--help]\n");
       return false;
     }
   }
@@ -264,12 +271,7 @@ struct Scene : tyndall_test::PathScene
     if (hot)
     {
       tyndall_test::AddTemperature(fog);
-      vtkNew<vtkColorTransferFunction> color;
-      color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
-      color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
-      this->FogProperty->SetEmissionColor(color);
-      this->FogProperty->SetEmissionArrayName("temperature");
-      this->FogProperty->SetEmissionScale(1.5);
+      tyndall_test::GlowFromTemperature(this->FogProperty, 1.5);
     }
     this->FogMapper->SetInputData(fog);
     this->FogMapper->JitterOff();
@@ -295,6 +297,11 @@ struct Scene : tyndall_test::PathScene
     if (o.Chromatic)
     {
       this->Property->SetExtinctionColor(0.25, 0.6, 1.0);
+    }
+    if (o.Fire)
+    {
+      tyndall_test::AddTemperature(data);
+      tyndall_test::GlowFromTemperature(this->Property, 1.5);
     }
     if (o.Quick)
     {
@@ -346,10 +353,11 @@ struct Scene : tyndall_test::PathScene
 
 bool Run(Scene& s, const Options& o)
 {
-  std::printf("%s, %d x %d, up to %d bounces%s%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
+  std::printf("%s, %d x %d, up to %d bounces%s%s%s:\n", s.Name.c_str(), o.Size, o.Size, o.Bounces,
     o.Sun ? ", under the sun sky" : (o.Sky ? ", under the gradient sky" : ""),
     o.HotFog ? ", in a fog lit its own way that glows from an array"
-             : (o.Fog ? ", in a fog lit its own way" : ""));
+             : (o.Fog ? ", in a fog lit its own way" : ""),
+    o.Fire ? ", glowing from an array" : "");
   // 1. the converged picture (its own random numbers).
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;

@@ -16,7 +16,6 @@
 //    16 spp at 16^2, about 1 s; TestTransmittanceMapperPathTrace holds it
 //    to the CPU tracer), traced without a warning, and black without the
 //    fog's emission (run under the sanitizers, unlike that test).
-#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkCullerCollection.h"
 #include "vtkDataArray.h"
@@ -67,12 +66,7 @@ long LitByHotFog(double scale)
   // (A renderer without lights would make a headlight.)
   vtkLight::SafeDownCast(scene.Renderer->GetLights()->GetItemAsObject(0))->SetIntensity(0.0);
   vtkSmartPointer<vtkParticipatingMediumProperty> hot = tyndall_test::MakeCloudProperty(0.3);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
-  color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
-  hot->SetEmissionColor(color);
-  hot->SetEmissionArrayName("temperature");
-  hot->SetEmissionScale(scale);
+  tyndall_test::GlowFromTemperature(hot, scale);
   hot->SetAmbientIntensity(0.0);
   vtkNew<vtkTransmittanceVolumeMapper> mapper;
   mapper->SetInputData(tyndall_test::MakeHotFog(1.6));

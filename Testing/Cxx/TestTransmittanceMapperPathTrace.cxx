@@ -481,19 +481,17 @@ void Unlit(Scene& scene)
 vtkSmartPointer<vtkParticipatingMediumProperty> GlowingFog(bool array)
 {
   vtkSmartPointer<vtkParticipatingMediumProperty> property = tyndall_test::MakeCloudProperty(0.3);
-  vtkNew<vtkColorTransferFunction> color;
   if (array)
   {
-    color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
-    color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
-    property->SetEmissionArrayName("temperature");
+    tyndall_test::GlowFromTemperature(property, 1.5);
   }
   else
   {
+    vtkNew<vtkColorTransferFunction> color;
     color->AddRGBPoint(0.0, 0.5, 0.25, 0.1);
+    property->SetEmissionColor(color);
+    property->SetEmissionScale(2.0);
   }
-  property->SetEmissionColor(color);
-  property->SetEmissionScale(array ? 1.5 : 2.0);
   property->SetAmbientIntensity(0.0);
   return property;
 }

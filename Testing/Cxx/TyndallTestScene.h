@@ -90,6 +90,18 @@ inline void AddTemperature(vtkImageData* grid)
   grid->GetPointData()->AddArray(temperature);
 }
 
+// Makes a property glow from AddTemperature()'s array through a colour
+// function (orange at 1000, pale yellow at 2000), EmissionScale `scale`.
+inline void GlowFromTemperature(vtkParticipatingMediumProperty* property, double scale)
+{
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(1000.0, 0.9, 0.4, 0.1);
+  color->AddRGBPoint(2000.0, 1.0, 0.7, 0.3);
+  property->SetEmissionColor(color);
+  property->SetEmissionArrayName("temperature");
+  property->SetEmissionScale(scale);
+}
+
 // A hot fog out of the test camera's view: MakeFog() over x in [x, x + 1.6],
 // y and z in [-1, 1], with AddTemperature()'s array.
 inline vtkSmartPointer<vtkImageData> MakeHotFog(double x)

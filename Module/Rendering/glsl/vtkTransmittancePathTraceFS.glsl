@@ -466,6 +466,10 @@ vec3 tyndallPathEmissionAt(int m, vec3 x)
 // length of that part over n times the sum over n stratified points of the
 // emission there and the transmittance to it from the segment's start
 // (through every medium the flight crosses: tyndallPathTransmittance()).
+// The points ascend: the transmittance to each is the one before's times
+// that of the part between them (independent estimates, so their product's
+// mean is the transmittance), and the segment is tracked once, not once
+// per point (the CPU tracer's AddArrayEmission()).
 vec3 tyndallPathMediumEmission(int m, mat4 toBox, vec3 o, vec3 w, float t0, float t1)
 {
   vec2 box = tyndallIntersectBox(toBox, o, w);
@@ -475,20 +479,23 @@ vec3 tyndallPathMediumEmission(int m, mat4 toBox, vec3 o, vec3 w, float t0, floa
   {
     return vec3(0.0);
   }
-  vec3 start = o + t0 * w;
   float length = (b - a) / float(pathEmissionSamples);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < pathEmissionSamples; ++i)
+  TyndallTransmittance T = TyndallTransmittance(1.0); // from the segment's start to `from`
+  float from = t0;
+  for (int i = 0; i < pathEmissionSamples && tyndallLargest(T) > 0.0; ++i)
   {
     if (!tyndallPathStep())
     {
       break;
     }
-    float t = a - t0 + (float(i) + tyndallRandom()) * length;
-    vec3 e = tyndallPathEmissionAt(m, start + t * w);
+    float t = a + (float(i) + tyndallRandom()) * length;
+    vec3 e = tyndallPathEmissionAt(m, o + t * w);
     if (any(greaterThan(e, vec3(0.0))))
     {
-      sum += e * tyndallPathTransmittance(start, w, t, true);
+      T *= tyndallPathTransmittance(o + from * w, w, t - from, true);
+      from = t;
+      sum += e * T;
     }
   }
   return length * sum;
