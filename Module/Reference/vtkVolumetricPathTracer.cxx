@@ -422,8 +422,8 @@ private:
   // the transmittance to each ratio tracked, or exact in closed form). The
   // samples ascend: the transmittance to each is the one before's times
   // that of the part between them (independent estimates, so their
-  // product's mean is the transmittance), and each medium's part of the
-  // segment is tracked once, not once per sample.
+  // product's mean is the transmittance): each medium with an array tracks
+  // the ray once, from its start to its last sample, not once per sample.
   void AddArrayEmission(const Ray& ray, const double beta[3], Random& rng, Timing& timing,
     const PathState& path, double L[3]) const
   {

@@ -247,10 +247,13 @@ double vtkTransmittancePathTracePass::PathBound(
     1.0 + loops * (settings.TrackedShadows ? lights * (1.0 + flight) : CollisionCost(frame));
   const double sky = SamplesSky(frame) ? loops * (SkySearchCost(frame) + 1.0 + flight) : 0.0;
   // Emission arrays (this volume's, the guests'): each segment's stratified
-  // points in each, the segment ratio tracked once from point to point (a
-  // walk's start and end per point).
+  // points in each, tracked from point to point (a walk's start and end per
+  // point, the walks one flight together); in closed form each point's
+  // transmittance counts as a whole flight's cells, however short.
   const int emitters = (frame.GetColorVariant().EmissionArray ? 1 : 0) + GuestArrayEmitters(frame);
-  const double emission = emitters * (4.0 * vtkTyndallMedium::PathEmissionSamples + flight);
+  const double points = vtkTyndallMedium::PathEmissionSamples;
+  const double emission =
+    emitters * (UsesClosedForm(frame, settings) ? points * (1.0 + flight) : 4.0 * points + flight);
   const double bounces = std::min(kBoundedBounces, double(std::max(settings.MaximumBounces, 1)));
   return bounces * (flight + collision + sky + emission);
 }

@@ -63,7 +63,7 @@
 // --hot-fog is --fog glowing from an emission array (a "temperature" that
 // rises from 1000 to 2000 across it, through a colour function,
 // EmissionScale 1.5): its light along the medium's scattered paths'
-// segments, four stratified points each, each ratio tracked.
+// segments, four stratified points each, tracked from point to point.
 // --fire makes the media glow from such an array (the same colours, over
 // each grid's x; not the shaded CT's plain property): their own emission
 // along every segment of their paths.
@@ -357,7 +357,9 @@ bool Run(Scene& s, const Options& o)
     o.Sun ? ", under the sun sky" : (o.Sky ? ", under the gradient sky" : ""),
     o.HotFog ? ", in a fog lit its own way that glows from an array"
              : (o.Fog ? ", in a fog lit its own way" : ""),
-    o.Fire ? ", glowing from an array" : "");
+    o.Fire && vtkParticipatingMediumProperty::SafeDownCast(s.Volume->GetProperty())
+      ? ", glowing from an array"
+      : "");
   // 1. the converged picture (its own random numbers).
   s.Mapper->SetPathTraceSeed(1);
   double seconds = 0.0;

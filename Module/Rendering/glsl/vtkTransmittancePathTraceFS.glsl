@@ -468,8 +468,9 @@ vec3 tyndallPathEmissionAt(int m, vec3 x)
 // (through every medium the flight crosses: tyndallPathTransmittance()).
 // The points ascend: the transmittance to each is the one before's times
 // that of the part between them (independent estimates, so their product's
-// mean is the transmittance), and the segment is tracked once, not once
-// per point (the CPU tracer's AddArrayEmission()).
+// mean is the transmittance), and the segment is tracked once per medium
+// (from its start to the last point), not once per point (the CPU tracer's
+// AddArrayEmission()).
 vec3 tyndallPathMediumEmission(int m, mat4 toBox, vec3 o, vec3 w, float t0, float t1)
 {
   vec2 box = tyndallIntersectBox(toBox, o, w);
